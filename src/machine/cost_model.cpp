@@ -1,0 +1,32 @@
+#include "machine/cost_model.h"
+
+#include "machine/parameter_file.h"
+
+namespace ncube {
+
+double CostModel::flops(const WorkCounts& c) const {
+  return flops_per_shooter_candidate * double(c.shooter_candidates) +
+         flops_per_receiver * double(c.receivers) + flops_per_ray * double(c.rays) +
+         flops_per_ray_patch_test * double(c.ray_patch_tests) +
+         flops_per_form_factor * double(c.form_factors) +
+         flops_per_element_update * double(c.element_updates);
+}
+
+CostModel load_cost_model(const std::string& path) {
+  const auto v = read_parameter_file(path, {{"flops_per_shooter_candidate", 0, false},
+                                            {"flops_per_receiver", 0, false},
+                                            {"flops_per_ray", 0, false},
+                                            {"flops_per_ray_patch_test", 0, false},
+                                            {"flops_per_form_factor", 0, false},
+                                            {"flops_per_element_update", 0, false}});
+  CostModel m;
+  m.flops_per_shooter_candidate = v.at("flops_per_shooter_candidate");
+  m.flops_per_receiver = v.at("flops_per_receiver");
+  m.flops_per_ray = v.at("flops_per_ray");
+  m.flops_per_ray_patch_test = v.at("flops_per_ray_patch_test");
+  m.flops_per_form_factor = v.at("flops_per_form_factor");
+  m.flops_per_element_update = v.at("flops_per_element_update");
+  return m;
+}
+
+}  // namespace ncube

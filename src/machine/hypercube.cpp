@@ -1,0 +1,56 @@
+#include "machine/hypercube.h"
+
+#include <bitset>
+#include <simgrid/s4u/Link.hpp>
+#include <simgrid/s4u/NetZone.hpp>
+#include <string>
+
+namespace ncube {
+
+void configure_network_model(simgrid::s4u::Engine& engine) {
+  // CM02 has no latency or bandwidth correction factors (the default LV08 model multiplies
+  // latency by 13); without cross traffic there is no reverse acknowledgement flow; the
+  // fair-bottleneck solver shares a link equally between the messages crossing it.
+  engine.set_config("network/model:CM02");
+  engine.set_config("network/crosstraffic:0");
+  engine.set_config("network/solver:fairbottleneck");
+}
+
+std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
+  namespace s4u = simgrid::s4u;
+  std::vector<s4u::Host*> hosts(std::size_t(config.node_count()), nullptr);
+  const double speed = config.node_speed;
+  auto make_node = [&hosts, speed](s4u::NetZone* zone, const std::vector<unsigned long>& coord,
+                                   unsigned long id) {
+    // A torus of extent 2 in every dimension is a hypercube; the zone routes dimension by
+    // dimension from dimension 0 upward, which is e-cube routing with node bit k = dimension k.
+    unsigned long address = 0;
+    for (std::size_t k = 0; k < coord.size(); ++k) address |= coord[k] << k;
+    (void)id;
+    s4u::Host* host = zone->create_host("node-" + std::to_string(address), speed);
+    hosts[address] = host;
+    return std::make_pair(host->get_netpoint(), nullptr);
+  };
+  // A node sending to itself (never done by the node programs) needs a route too.
+  auto make_loopback = [](s4u::NetZone* zone, const std::vector<unsigned long>&, unsigned long id) {
+    return zone->create_link("loopback-" + std::to_string(id), 1e15)->set_latency(0)->seal();
+  };
+  const std::vector<unsigned long> dimensions(std::size_t(config.dimension), 2);
+  s4u::ClusterCallbacks callbacks(make_node, make_loopback, {});
+  if (config.dimension == 0) {
+    // A single node: no links at all.
+    s4u::NetZone* zone = s4u::create_full_zone("ncube");
+    hosts[0] = zone->create_host("node-0", speed);
+    zone->seal();
+    return hosts;
+  }
+  s4u::NetZone* zone = s4u::create_torus_zone("ncube", nullptr, dimensions, callbacks,
+                                              config.link_bandwidth, config.hop_latency,
+                                              s4u::Link::SharingPolicy::SPLITDUPLEX);
+  zone->seal();
+  return hosts;
+}
+
+int hypercube_hops(int from, int to) { return int(std::bitset<32>(unsigned(from ^ to)).count()); }
+
+}  // namespace ncube

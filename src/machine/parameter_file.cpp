@@ -1,0 +1,60 @@
+#include "machine/parameter_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "util/input_error.h"
+
+namespace ncube {
+
+std::map<std::string, double> read_parameter_file(const std::string& path,
+                                                  const std::vector<ParameterSpec>& specs) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot read file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(buffer.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path + ": malformed JSON at byte " + std::to_string(e.byte));
+  }
+  if (!doc.is_object() || !doc.contains("parameters") || !doc["parameters"].is_object())
+    throw InputError(path + ": expected an object with a \"parameters\" object");
+  for (auto it = doc.begin(); it != doc.end(); ++it)
+    if (it.key() != "description" && it.key() != "parameters")
+      throw InputError(path + ": unknown key \"" + it.key() + "\"");
+  const nlohmann::json& parameters = doc["parameters"];
+  std::map<std::string, double> values;
+  for (const ParameterSpec& spec : specs) {
+    const std::string where = path + ": parameter \"" + spec.name + "\"";
+    if (!parameters.contains(spec.name)) throw InputError(where + ": missing");
+    const nlohmann::json& entry = parameters[spec.name];
+    if (!entry.is_object() || !entry.contains("value") || !entry["value"].is_number())
+      throw InputError(where + ": expected {\"value\": <number>, ...}");
+    for (auto it = entry.begin(); it != entry.end(); ++it)
+      if (it.key() != "value" && it.key() != "unit" && it.key() != "doc" && it.key() != "source")
+        throw InputError(where + ": unknown key \"" + it.key() + "\"");
+    const double value = entry["value"].get<double>();
+    if (!std::isfinite(value)) throw InputError(where + ": value is not finite");
+    if (value < spec.min_value)
+      throw InputError(where + ": value " + entry["value"].dump() + " is below " +
+                       nlohmann::json(spec.min_value).dump());
+    if (value > spec.max_value)
+      throw InputError(where + ": value " + entry["value"].dump() + " is above " +
+                       nlohmann::json(spec.max_value).dump());
+    if (spec.integer && value != std::floor(value))
+      throw InputError(where + ": value " + entry["value"].dump() + " must be a whole number");
+    values[spec.name] = value;
+  }
+  for (auto it = parameters.begin(); it != parameters.end(); ++it) {
+    bool known = false;
+    for (const ParameterSpec& spec : specs) known = known || spec.name == it.key();
+    if (!known) throw InputError(path + ": unknown parameter \"" + it.key() + "\"");
+  }
+  return values;
+}
+
+}  // namespace ncube

@@ -1,0 +1,26 @@
+// The documented-parameter JSON files of platforms/ (machine and cost model). Each file is
+//   {"description": "...", "parameters": {"<name>": {"value": <number>, "unit": "...",
+//                                                    "doc": "...", "source": "..."}, ...}}
+// so that every number carries its meaning and origin next to it.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ncube {
+
+struct ParameterSpec {
+  std::string name;
+  double min_value;   // inclusive lower bound
+  bool integer;       // must be a whole number
+  double max_value = 1e300;  // inclusive upper bound
+};
+
+// Reads `path` and returns the value of every parameter in `specs`. Throws InputError naming
+// the file and the parameter when one is missing, unknown, not a finite number, out of range
+// or (for integers) fractional.
+std::map<std::string, double> read_parameter_file(const std::string& path,
+                                                  const std::vector<ParameterSpec>& specs);
+
+}  // namespace ncube

@@ -1,0 +1,217 @@
+#include "radiosity/occluders.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace ncube {
+namespace {
+
+// Ends of a shadow ray lie on the receiver and on the shooter; a relative margin keeps the
+// surfaces they start and end on (and coplanar neighbours) from blocking them.
+constexpr double kRayEpsilon = 1e-9;
+constexpr int kLeafSize = 4;
+
+bool segment_meets_box(const Vec3& lo, const Vec3& hi, const Vec3& from, const Vec3& delta) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (delta[axis] == 0.0) {
+      if (from[axis] < lo[axis] || from[axis] > hi[axis]) return false;
+      continue;
+    }
+    const double inv = 1.0 / delta[axis];
+    double a = (lo[axis] - from[axis]) * inv, b = (hi[axis] - from[axis]) * inv;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool segment_crosses(const Occluders::Candidate& c, const Vec3& from, const Vec3& delta) {
+  const double denominator = glm::dot(c.normal, delta);
+  if (denominator == 0.0) return false;  // parallel to the plane
+  const double t = (c.plane_offset - glm::dot(c.normal, from)) / denominator;
+  if (!(t > kRayEpsilon && t < 1.0 - kRayEpsilon)) return false;
+  const Vec3 x = from + t * delta;
+  for (int k = 0; k < c.vertex_count; ++k) {
+    const Vec3& a = c.vertices[k];
+    const Vec3& b = c.vertices[(k + 1) % c.vertex_count];
+    if (glm::dot(c.normal, glm::cross(b - a, x - a)) < 0.0) return false;
+  }
+  return true;
+}
+
+Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
+    : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
+  Vec3 scene_lo(1e300), scene_hi(-1e300);
+  for (const Patch& p : scene.patches)
+    for (int i = 0; i < p.polygon.count; ++i) {
+      scene_lo = glm::min(scene_lo, p.polygon[i]);
+      scene_hi = glm::max(scene_hi, p.polygon[i]);
+    }
+  // Pad boxes so that rounding in the slab test never prunes a patch the exact test hits.
+  const double pad = 1e-7 * (1.0 + glm::length(scene_hi - scene_lo));
+  patches_.reserve(patch_indices.size());
+  for (int scene_index : patch_indices) {
+    const Patch& p = scene.patches[scene_index];
+    Candidate c{};
+    c.vertex_count = p.polygon.count;
+    c.lo = Vec3(1e300);
+    c.hi = Vec3(-1e300);
+    for (int i = 0; i < p.polygon.count; ++i) {
+      c.vertices[i] = p.polygon[i];
+      c.lo = glm::min(c.lo, p.polygon[i]);
+      c.hi = glm::max(c.hi, p.polygon[i]);
+    }
+    c.lo -= Vec3(pad);
+    c.hi += Vec3(pad);
+    c.normal = p.normal;
+    c.plane_offset = glm::dot(p.normal, p.polygon[0]);
+    c.scene_index = scene_index;
+    position_of_scene_patch_[scene_index] = int(patches_.size());
+    patches_.push_back(c);
+  }
+  order_.resize(patches_.size());
+  for (int i = 0; i < int(order_.size()); ++i) order_[i] = i;
+  if (!patches_.empty()) {
+    nodes_.reserve(2 * patches_.size());
+    build(0, int(patches_.size()));
+  }
+}
+
+int Occluders::build(int first, int count) {
+  const int index = int(nodes_.size());
+  nodes_.push_back(Node{});
+  Vec3 lo(1e300), hi(-1e300), centre_lo(1e300), centre_hi(-1e300);
+  int min_position = 1 << 30;
+  for (int i = first; i < first + count; ++i) {
+    const Candidate& c = patches_[order_[i]];
+    lo = glm::min(lo, c.lo);
+    hi = glm::max(hi, c.hi);
+    centre_lo = glm::min(centre_lo, 0.5 * (c.lo + c.hi));
+    centre_hi = glm::max(centre_hi, 0.5 * (c.lo + c.hi));
+    min_position = std::min(min_position, order_[i]);
+  }
+  nodes_[index].lo = lo;
+  nodes_[index].hi = hi;
+  nodes_[index].min_position = min_position;
+  if (count <= kLeafSize) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return index;
+  }
+  // Median split along the longest axis of the centres; ties broken by position so the
+  // hierarchy is the same on every run.
+  const Vec3 extent = centre_hi - centre_lo;
+  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  auto key = [&](int position) { return patches_[position].lo[axis] + patches_[position].hi[axis]; };
+  std::sort(order_.begin() + first, order_.begin() + first + count, [&](int a, int b) {
+    return key(a) < key(b) || (key(a) == key(b) && a < b);
+  });
+  const int half = count / 2;
+  const int left = build(first, half);
+  const int right = build(first + half, count - half);
+  nodes_[index].first = left;
+  nodes_[index].right = right;
+  nodes_[index].count = 0;
+  return index;
+}
+
+bool Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const {
+  int stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!segment_meets_box(node.lo, node.hi, from, delta)) continue;
+    if (node.count == 0) {
+      stack[top++] = node.right;
+      stack[top++] = node.first;
+      continue;
+    }
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const Candidate& c = patches_[order_[i]];
+      if (c.scene_index != receiver && c.scene_index != shooter && segment_crosses(c, from, delta))
+        return true;
+    }
+  }
+  return false;
+}
+
+int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const {
+  int best = 1 << 30;
+  int stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.min_position >= best || !segment_meets_box(node.lo, node.hi, from, delta)) continue;
+    if (node.count == 0) {
+      stack[top++] = node.right;
+      stack[top++] = node.first;
+      continue;
+    }
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const int position = order_[i];
+      const Candidate& c = patches_[position];
+      if (position < best && c.scene_index != receiver && c.scene_index != shooter &&
+          segment_crosses(c, from, delta))
+        best = position;
+    }
+  }
+  return best == (1 << 30) ? -1 : best;
+}
+
+PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
+                                    WorkCounts& counts) const {
+  const int receiver_position = position_in_set(receiver_patch);
+  const int shooter_position = position_in_set(shooter.patch);
+  const int excluded = (receiver_position >= 0) + (shooter_position >= 0);
+  PartMask visible = 0;
+  for (int part = 0; part < shooter.part_count; ++part) {
+    const Vec3 delta = shooter.targets[part] - point;
+    std::uint64_t tests = std::uint64_t(size() - excluded);
+    if (policy_ == RayTestPolicy::kTestAllPatches || patches_.empty()) {
+      if (patches_.empty() || !any_blocker(point, delta, receiver_patch, shooter.patch))
+        visible |= PartMask(1) << part;
+    } else {
+      const int blocker = first_blocker(point, delta, receiver_patch, shooter.patch);
+      if (blocker < 0) {
+        visible |= PartMask(1) << part;
+      } else {
+        // The loop tested every candidate up to and including the blocker, skipping the
+        // excluded ones before it.
+        tests = std::uint64_t(blocker + 1 - (receiver_position >= 0 && receiver_position < blocker) -
+                              (shooter_position >= 0 && shooter_position < blocker));
+      }
+    }
+    counts.ray_patch_tests += tests;
+  }
+  counts.rays += std::uint64_t(shooter.part_count);
+  return visible;
+}
+
+PartMask Occluders::unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
+                                                const Shooter& shooter, WorkCounts& counts) const {
+  PartMask visible = 0;
+  for (int part = 0; part < shooter.part_count; ++part) {
+    const Vec3 delta = shooter.targets[part] - point;
+    bool blocked = false;
+    for (const Candidate& c : patches_) {
+      if (c.scene_index == receiver_patch || c.scene_index == shooter.patch) continue;
+      ++counts.ray_patch_tests;
+      if (segment_crosses(c, point, delta)) {
+        blocked = true;
+        if (policy_ == RayTestPolicy::kStopAtFirstBlocker) break;
+      }
+    }
+    ++counts.rays;
+    if (!blocked) visible |= PartMask(1) << part;
+  }
+  return visible;
+}
+
+}  // namespace ncube

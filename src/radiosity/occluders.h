@@ -1,0 +1,77 @@
+// The patches a node intersects visibility rays with: all patches of the scene on a node
+// without visibility processors (section 2.2), a 1/V share on a visibility processor
+// (section 3). The paper's program tests each ray against every patch of the set; the host
+// finds the same answers faster with a bounding-volume hierarchy, and counts the tests the
+// brute-force loop would have made.
+#pragma once
+
+#include <vector>
+
+#include "radiosity/shooter.h"
+#include "radiosity/work_counts.h"
+
+namespace ncube {
+
+// How far the brute-force loop runs for one ray (a model choice the paper leaves open).
+enum class RayTestPolicy {
+  kTestAllPatches,        // "each ray is intersected with all other patches" (default)
+  kStopAtFirstBlocker,    // the loop ends at the first patch, in set order, that blocks
+};
+
+class Occluders {
+ public:
+  // `patch_indices` are scene patch indices in the order the brute-force loop visits them.
+  Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy);
+
+  // Bit p of the result is set when the segment from `point` to the shooter's part p crosses
+  // none of this set's patches other than `receiver_patch` and the shooter itself. Adds the
+  // rays and the ray-patch tests of the brute-force loop to `counts`.
+  PartMask unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
+                           WorkCounts& counts) const;
+
+  // The literal brute-force loop (reference for tests): same answers, same counts.
+  PartMask unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
+                                       const Shooter& shooter, WorkCounts& counts) const;
+
+  int size() const { return int(patches_.size()); }
+
+  struct Candidate {  // one patch, with what the exact segment test needs
+    Vec3 vertices[4];
+    int vertex_count;
+    Vec3 normal;
+    double plane_offset;  // normal . x for points x of the plane
+    int scene_index;
+    Vec3 lo, hi;          // padded bounding box, for the hierarchy only
+  };
+
+ private:
+  struct Node {
+    Vec3 lo, hi;
+    int first;         // leaf: first slot in order_; inner: index of the left child
+    int count;         // leaf: number of candidates (> 0); inner: 0
+    int right;         // inner: index of the right child
+    int min_position;  // smallest candidate position in the subtree (for first-blocker order)
+  };
+
+  int build(int first, int count);
+  // Position of the first blocking candidate along the segment's test order, or -1.
+  int first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const;
+  bool any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const;
+  int position_in_set(int scene_patch) const {
+    return scene_patch >= 0 && scene_patch < int(position_of_scene_patch_.size())
+               ? position_of_scene_patch_[scene_patch]
+               : -1;
+  }
+
+  RayTestPolicy policy_;
+  std::vector<Candidate> patches_;  // in brute-force order (position = index)
+  std::vector<int> order_;          // candidate positions, permuted by the hierarchy
+  std::vector<Node> nodes_;
+  std::vector<int> position_of_scene_patch_;  // -1 when not in this set
+};
+
+// The exact ray-patch test shared by the brute-force loop and the hierarchy: does the
+// segment from + t * delta, t in (eps, 1 - eps), cross the candidate's polygon?
+bool segment_crosses(const Occluders::Candidate& c, const Vec3& from, const Vec3& delta);
+
+}  // namespace ncube

@@ -1,0 +1,80 @@
+// Progressive-refinement radiosity over patches (shooters) and elements (receivers), paper
+// sections 1.1, 2.2 and 4, for the patches one radiosity processor owns. The node programs
+// drive it step by step; `run_progressive` drives it alone on the host.
+#pragma once
+
+#include <vector>
+
+#include "radiosity/occluders.h"
+#include "radiosity/shooter.h"
+#include "radiosity/work_counts.h"
+
+namespace ncube {
+
+struct ShooterChoice {
+  int patch = -1;      // -1: no candidate
+  double power = 0.0;  // unshot power (r+g+b) * area
+  Rgb unshot{0.0};     // unshot radiosity
+
+  // The better of two candidates: more power, ties to the lower patch index, so that every
+  // partition of the patches picks the same shooter as the sequential program.
+  bool better_than(const ShooterChoice& other) const {
+    if (patch < 0) return false;
+    if (other.patch < 0) return true;
+    return power > other.power || (power == other.power && patch < other.patch);
+  }
+};
+
+class RadiosityEngine {
+ public:
+  RadiosityEngine(const Scene& scene, std::vector<int> owned_patches);
+
+  // Step 1 of section 2.2: the owned patch with the most unshot power.
+  ShooterChoice best_shooter(WorkCounts& counts) const;
+  // The owned elements that can receive light from the shooter: not on it and facing it.
+  std::vector<int> receivers(const Shooter& shooter, WorkCounts& counts) const;
+  // Adds the shooter's light to each receiver through the parts its mask marks visible:
+  // form factor = sum of the point-to-part contour integrals (section 2.2).
+  void gather(const Shooter& shooter, const std::vector<int>& receivers,
+              const std::vector<PartMask>& masks, WorkCounts& counts);
+  // The shooter's owner forgets the radiosity it has just shot.
+  void clear_unshot(int patch) { unshot_[patch] = Rgb(0.0); }
+
+  const Scene& scene() const { return scene_; }
+  const std::vector<int>& owned_patches() const { return owned_; }
+  const std::vector<int>& owned_elements() const { return owned_elements_; }
+  const Rgb& element_radiosity(int element) const { return radiosity_[element]; }
+  const Rgb& unshot(int patch) const { return unshot_[patch]; }
+  Rgb patch_radiosity(int patch) const;  // area-weighted mean of its elements
+
+ private:
+  const Scene& scene_;
+  std::vector<int> owned_;
+  std::vector<int> owned_elements_;
+  std::vector<Rgb> radiosity_;  // per scene element (meaningful for owned ones)
+  std::vector<Rgb> unshot_;     // per scene patch (meaningful for owned ones)
+};
+
+struct ProgressiveOptions {
+  int samples = 16;                    // M, parts of the shooter
+  RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
+  double convergence_fraction = 0.01;  // stop when max unshot power < this x emitted power
+  int max_iterations = -1;             // -1: until converged
+};
+
+struct ProgressiveRun {
+  int iterations = 0;
+  bool converged = false;
+  std::vector<int> shooters;         // patch shot in each iteration
+  std::vector<WorkCounts> per_iteration;
+  WorkCounts total;
+};
+
+// Whether the best remaining shooter is weak enough to stop.
+bool has_converged(const ShooterChoice& best, double emitted_power, double fraction);
+
+// The whole solution on the host, one processor, brute-force-equivalent visibility.
+ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occluders,
+                               const ProgressiveOptions& options);
+
+}  // namespace ncube

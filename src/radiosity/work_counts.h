@@ -1,0 +1,33 @@
+// The operations the paper's program performs, counted exactly as its brute-force method
+// would do them. The cost model (platforms/cost_model.json) turns them into flops.
+#pragma once
+
+#include <cstdint>
+
+namespace ncube {
+
+struct WorkCounts {
+  std::uint64_t shooter_candidates = 0;  // patches compared in the search for the shooter
+  std::uint64_t receivers = 0;           // elements tested for facing the shooter
+  std::uint64_t rays = 0;                // shadow rays set up (one per receiver and part)
+  std::uint64_t ray_patch_tests = 0;     // ray-patch intersection tests (section 2.2)
+  std::uint64_t form_factors = 0;        // point-to-part contour integrals (visible parts)
+  std::uint64_t element_updates = 0;     // receiving elements whose radiosity was updated
+
+  WorkCounts& operator+=(const WorkCounts& o) {
+    shooter_candidates += o.shooter_candidates;
+    receivers += o.receivers;
+    rays += o.rays;
+    ray_patch_tests += o.ray_patch_tests;
+    form_factors += o.form_factors;
+    element_updates += o.element_updates;
+    return *this;
+  }
+  bool operator==(const WorkCounts& o) const {
+    return shooter_candidates == o.shooter_candidates && receivers == o.receivers &&
+           rays == o.rays && ray_patch_tests == o.ray_patch_tests &&
+           form_factors == o.form_factors && element_updates == o.element_updates;
+  }
+};
+
+}  // namespace ncube

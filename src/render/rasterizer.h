@@ -1,0 +1,28 @@
+// Renders a radiosity solution as a picture a person can judge: perspective camera,
+// z-buffer, Gouraud shading of vertex radiosities, 3x3 supersampling, tone mapping.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "render/image.h"
+#include "scene/scene.h"
+
+namespace ncube {
+
+// Where a world point lands in a width x height picture seen by `camera`, in continuous
+// pixel coordinates (x right, y down; pixel (i, j) covers [i, i+1) x [j, j+1)), or nothing
+// if the point is not in front of the eye. Throws InputError for a degenerate camera.
+std::optional<glm::dvec2> project(const Camera& camera, int width, int height, const Vec3& point);
+
+// The scene seen by `camera`, each element shaded with element_radiosity (one per
+// scene.elements entry). Both sides of every polygon are drawn; the background is black.
+// Tone mapping: exposure so that the 95th percentile of the luminance of the visible
+// non-emitting surface (all visible surface if no such) maps to 0.9, then clamp to [0, 1]
+// and sRGB encode. The output is a deterministic function of the inputs.
+Image render_solution(const Scene& scene, const Camera& camera,
+                      const std::vector<Rgb>& element_radiosity, int width, int height);
+
+}  // namespace ncube

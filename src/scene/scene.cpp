@@ -1,0 +1,54 @@
+#include "scene/scene.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace ncube {
+
+void Scene::build_elements() {
+  elements.clear();
+  std::size_t total = 0;
+  for (const Patch& p : patches) total += std::size_t(p.element_count());
+  elements.reserve(total);
+  for (int index = 0; index < int(patches.size()); ++index) {
+    Patch& patch = patches[index];
+    patch.normal = patch.polygon.normal();
+    patch.area = patch.polygon.area();
+    patch.first_element = int(elements.size());
+    for (int j = 0; j < patch.nv; ++j)
+      for (int i = 0; i < patch.nu; ++i) {
+        Element e;
+        e.polygon = grid_cell(patch.polygon, patch.nu, patch.nv, i, j);
+        e.patch = index;
+        e.centre = e.polygon.centroid();
+        e.area = e.polygon.area();
+        elements.push_back(e);
+      }
+  }
+}
+
+double Scene::emitted_power() const {
+  double power = 0.0;
+  for (const Patch& p : patches) power += (p.emission.r + p.emission.g + p.emission.b) * p.area;
+  return power;
+}
+
+Camera default_camera(const Scene& scene) {
+  // Scenes are interiors, so the default view stands just inside the +z face of the bounding
+  // box, at mid height, and looks across the room towards the -z face (y is up).
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Patch& p : scene.patches)
+    for (int i = 0; i < p.polygon.count; ++i) {
+      lo = glm::min(lo, p.polygon[i]);
+      hi = glm::max(hi, p.polygon[i]);
+    }
+  const Vec3 centre = 0.5 * (lo + hi);
+  Camera camera;
+  camera.eye = Vec3(centre.x, centre.y, hi.z - 0.02 * (hi.z - lo.z));
+  camera.look_at = Vec3(centre.x, centre.y, lo.z);
+  camera.up = Vec3(0.0, 1.0, 0.0);
+  camera.fov_deg = 55.0;
+  return camera;
+}
+
+}  // namespace ncube

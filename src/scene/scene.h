@@ -1,0 +1,57 @@
+// The scene as the radiosity engine sees it: patches (which shoot) cut into elements
+// (which receive), the two-level hierarchy of the paper's section 4.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/polygon.h"
+
+namespace ncube {
+
+using Rgb = glm::dvec3;
+
+struct Camera {
+  Vec3 eye{0.0};
+  Vec3 look_at{0.0, 0.0, -1.0};
+  Vec3 up{0.0, 1.0, 0.0};
+  double fov_deg = 55.0;  // vertical field of view
+};
+
+struct Patch {
+  Polygon polygon;
+  Rgb reflectance{0.0};
+  Rgb emission{0.0};
+  int nu = 1, nv = 1;  // the patch is cut into nu x nv elements (see grid_cell)
+  // Derived when the scene is built.
+  Vec3 normal{0.0};
+  double area = 0.0;
+  int first_element = 0;  // elements of this patch are [first_element, first_element + nu*nv)
+  int element_count() const { return nu * nv; }
+};
+
+struct Element {
+  Polygon polygon;
+  int patch = 0;
+  Vec3 centre{0.0};  // the element's visibility point (paper section 4)
+  double area = 0.0;
+};
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  std::vector<Patch> patches;
+  std::vector<Element> elements;
+
+  // Fills each patch's derived fields and the element list from patches' polygons and
+  // subdivisions; call after the patches are set.
+  void build_elements();
+  // Total emitted power, sum over patches of (r+g+b) * area.
+  double emitted_power() const;
+};
+
+// A default camera that sees the whole scene: from the front of the bounding box, looking
+// at its centre. Used when the scene file has no "camera".
+Camera default_camera(const Scene& scene);
+
+}  // namespace ncube

@@ -1,0 +1,410 @@
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+using json = nlohmann::json;
+
+// Geometric tolerances, relative to the polygon's diameter d so that they do not depend on
+// the scene's units: a length <= kTiny * d or an area <= kTiny * d^2 counts as zero; a
+// vertex within kPlaneTolerance * d of a plane counts as on it.
+constexpr double kTiny = 1e-12;
+constexpr double kPlaneTolerance = 1e-6;
+// |sin| of the angle between camera.up and the view direction below which they are parallel.
+constexpr double kParallelTolerance = 1e-9;
+
+// Where an error is: the message prefix, "<file>: " or "<file>: patch <i>: ".
+struct Where {
+  std::string prefix;
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(prefix + message); }
+  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
+    fail("field \"" + field + "\": " + message);
+  }
+};
+
+// Numbers in messages are shown as they were written (nlohmann prints the shortest form
+// that reads back the same), computed ones with a few digits.
+std::string shown(const json& value) { return value.dump(); }
+std::string shown(double value) {
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+std::string type_of(const json& value) {
+  return value.is_number_integer() ? "integer" : value.is_number() ? "number" : value.type_name();
+}
+
+// Unknown keys are almost always typos of optional keys, which would otherwise be ignored
+// silently; the message lists the keys that are allowed. Checked before the required keys,
+// so that a misspelt required key is reported as the typo rather than as missing.
+void reject_unknown_keys(const json& object, std::initializer_list<const char*> allowed,
+                         const Where& where, const std::string& object_name = "") {
+  for (const auto& item : object.items()) {
+    bool known = false;
+    std::string list;
+    for (const char* key : allowed) {
+      known = known || item.key() == key;
+      list += (list.empty() ? "" : ", ") + std::string(key);
+    }
+    if (known) continue;
+    const std::string message = "unknown key \"" + item.key() + "\" (allowed: " + list + ")";
+    if (object_name.empty()) where.fail(message);
+    where.fail(object_name, message);
+  }
+}
+
+const json* optional_field(const json& object, const char* key) {
+  const auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+const json& required_field(const json& object, const char* key, const Where& where,
+                           const std::string& field) {
+  const json* value = optional_field(object, key);
+  if (!value) where.fail(field, "is missing (required)");
+  return *value;
+}
+
+void require_object(const json& value, const Where& where, const std::string& field) {
+  if (!value.is_object()) where.fail(field, "must be an object, got " + type_of(value));
+}
+
+// A finite JSON number. `label` names it inside its field ("channel 1", "vertex 2
+// coordinate 0"), or is empty when the field itself is the number.
+double finite_number(const json& value, const Where& where, const std::string& field,
+                     const std::string& label) {
+  const std::string item = label.empty() ? "" : label + " ";
+  if (!value.is_number()) where.fail(field, item + "must be a number, got " + type_of(value));
+  const double number = value.get<double>();
+  // The parser already rejects overflowing literals such as 1e999; this keeps NaN and
+  // infinity out even if that ever changes.
+  if (!std::isfinite(number)) where.fail(field, item + "must be a finite number");
+  return number;
+}
+
+// An array of 3 finite numbers, whose entries are called `entry` ("channel", "coordinate").
+// `label` names the array inside its field ("vertex 2") or is empty.
+Vec3 vec3(const json& value, const Where& where, const std::string& field, const std::string& entry,
+          const std::string& label = "") {
+  const std::string item = label.empty() ? "" : label + " ";
+  if (!value.is_array() || value.size() != 3)
+    where.fail(field, item + "must be an array of 3 numbers, got " +
+                          (value.is_array() ? "an array of " + std::to_string(value.size())
+                                            : type_of(value)));
+  Vec3 result;
+  for (int i = 0; i < 3; ++i)
+    result[i] = finite_number(value[i], where, field, item + entry + " " + std::to_string(i));
+  return result;
+}
+
+// ---------------------------------------------------------------------------- parsing
+
+// Records where the parser stops. nlohmann's exceptions for overflowing numbers ("1e999")
+// carry no position, so on any syntax error the text is parsed again with this handler,
+// which receives the position of every kind of error.
+struct ErrorLocator : json::json_sax_t {
+  std::size_t byte = 0;  // 1-based offset of the offending character
+  std::string message;
+
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t position, const std::string&,
+                   const json::exception& error) override {
+    byte = position;
+    message = error.what();
+    return false;
+  }
+};
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 1,
+// column 6: " preamble: the loader prints its own position.
+std::string bare_message(std::string message) {
+  const auto bracket = message.find("] ");
+  if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos)
+    message.erase(0, bracket + 2);
+  if (message.rfind("parse error", 0) == 0) {
+    const auto colon = message.find(": ");
+    if (colon != std::string::npos) message.erase(0, colon + 2);
+  }
+  return message;
+}
+
+[[noreturn]] void fail_malformed(const std::string& text, const std::string& path) {
+  ErrorLocator locator;
+  json::sax_parse(text, &locator);
+  // Line and column (1-based, column in bytes) of the character at `byte`.
+  const std::size_t index = locator.byte > 0 ? std::min(locator.byte - 1, text.size()) : 0;
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < index; ++i)
+    if (text[i] == '\n') ++line, line_start = i + 1;
+  throw InputError(path + ":" + std::to_string(line) + ":" +
+                   std::to_string(index - line_start + 1) +
+                   ": malformed JSON: " + bare_message(locator.message));
+}
+
+// A parser callback that rejects duplicate keys: JSON allows them and nlohmann keeps the
+// last, which would silently drop the first value. It follows the top-level key and the
+// index in "patches" (depth counts enclosing containers) to name the patch in messages.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& path) : path_(path) {}
+
+  bool operator()(int depth, json::parse_event_t event, json& parsed) {
+    using Event = json::parse_event_t;
+    if (event == Event::key && depth == 1) {
+      top_key_ = parsed.get<std::string>();
+      top_value_is_array_ = false;
+    }
+    if (event == Event::array_start && depth == 1) top_value_is_array_ = true;
+    if (event == Event::object_start) open_objects_.emplace_back();
+    if (event == Event::object_end) open_objects_.pop_back();
+    const bool in_patches = top_key_ == "patches" && top_value_is_array_;
+    // A patch ends with the end of its object (or of whatever wrong value it is).
+    if (in_patches && depth == 2 &&
+        (event == Event::object_end || event == Event::array_end || event == Event::value))
+      ++patch_;
+    if (event == Event::key && !open_objects_.back().insert(parsed.get<std::string>()).second) {
+      const std::string where = depth == 1   ? ""
+                                : in_patches ? "patch " + std::to_string(patch_) + ": "
+                                             : "field \"" + top_key_ + "\": ";
+      throw InputError(path_ + ": " + where + "duplicate key \"" + parsed.get<std::string>() +
+                       "\" (each key may appear once per object)");
+    }
+    return true;
+  }
+
+ private:
+  std::string path_;
+  std::string top_key_;
+  bool top_value_is_array_ = false;
+  int patch_ = 0;                                    // index of the patch being parsed
+  std::vector<std::set<std::string>> open_objects_;  // keys seen in each enclosing object
+};
+
+json parse_json(const std::string& text, const std::string& path) {
+  try {
+    return json::parse(text, DuplicateKeyCheck(path));
+  } catch (const json::exception&) {
+    fail_malformed(text, path);
+  }
+}
+
+// --------------------------------------------------------------------------- validation
+
+Camera parse_camera(const json& value, const Where& where) {
+  require_object(value, where, "camera");
+  reject_unknown_keys(value, {"eye", "look_at", "up", "fov_deg"}, where, "camera");
+  const auto point = [&](const char* key) {
+    const std::string field = std::string("camera.") + key;
+    return vec3(required_field(value, key, where, field), where, field, "coordinate");
+  };
+  Camera camera;
+  camera.eye = point("eye");
+  camera.look_at = point("look_at");
+  camera.up = point("up");
+  const json& fov = required_field(value, "fov_deg", where, "camera.fov_deg");
+  camera.fov_deg = finite_number(fov, where, "camera.fov_deg", "");
+  if (!(camera.fov_deg > 0.0 && camera.fov_deg < 180.0))
+    where.fail("camera.fov_deg", "is " + shown(fov) + ", must be in (0, 180)");
+  const Vec3 view = camera.look_at - camera.eye;
+  if (glm::length(view) == 0.0)
+    where.fail("camera.look_at", "equals camera.eye, so there is no view direction");
+  if (glm::length(camera.up) == 0.0) where.fail("camera.up", "must not be the zero vector");
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) <=
+      kParallelTolerance)
+    where.fail("camera.up", "is parallel to the view direction (look_at - eye)");
+  return camera;
+}
+
+Rgb parse_colour(const json& value, const Where& where, const std::string& field, bool below_one) {
+  const Rgb colour = vec3(value, where, field, "channel");
+  for (int i = 0; i < 3; ++i) {
+    const bool ok = colour[i] >= 0.0 && (!below_one || colour[i] < 1.0);
+    if (!ok)
+      where.fail(field, "channel " + std::to_string(i) + " is " + shown(value[i]) +
+                            (below_one ? ", must be in [0, 1)" : ", must be >= 0"));
+  }
+  return colour;
+}
+
+// One subdivision count; JSON integers only (2.0 is rejected: counts are written as counts).
+long subdivision(const json& value, const Where& where, const char* name) {
+  const std::string item = std::string(name) + " ";
+  if (!value.is_number_integer())
+    where.fail("elements", item + "must be an integer, got " + shown(value));
+  const bool too_large = value.is_number_unsigned()
+                             ? value.get<std::uint64_t>() > std::uint64_t(kMaxElementsPerPatch)
+                             : value.get<std::int64_t>() > kMaxElementsPerPatch;
+  if (too_large)
+    where.fail("elements", item + "is " + shown(value) + ", absurdly large (limit " +
+                               std::to_string(kMaxElementsPerPatch) + " elements per patch)");
+  if (value.get<std::int64_t>() < 1)
+    where.fail("elements", item + "is " + shown(value) + ", must be >= 1");
+  return long(value.get<std::int64_t>());
+}
+
+// The rules of docs/scene-format.md, "Geometry": no coincident neighbours, non-zero area,
+// planar and strictly convex, with the normal of (v0, v1, v2) as the front.
+void check_geometry(const std::vector<Vec3>& v, const Where& where) {
+  const int n = int(v.size());
+  double diameter = 0.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) diameter = std::max(diameter, glm::length(v[i] - v[j]));
+  const double tiny_area = kTiny * diameter * diameter;
+
+  for (int i = 0; i < n; ++i) {
+    const int next = (i + 1) % n;
+    if (glm::length(v[next] - v[i]) <= kTiny * diameter)
+      where.fail("vertices", "degenerate polygon: vertices " + std::to_string(i) + " and " +
+                                 std::to_string(next) + " coincide");
+  }
+  // Triangle (v0, v1, v2) defines the normal, so it must have an area even for a quad.
+  const Vec3 cross012 = glm::cross(v[1] - v[0], v[2] - v[0]);
+  if (0.5 * glm::length(cross012) <= tiny_area)
+    where.fail("vertices", "degenerate polygon: vertices 0, 1, 2 are (nearly) collinear, area " +
+                               shown(0.5 * glm::length(cross012)) + " for diameter " +
+                               shown(diameter));
+  if (n == 3) return;
+
+  const Vec3 normal = glm::normalize(cross012);
+  const double off_plane = std::abs(glm::dot(v[3] - v[0], normal));
+  if (off_plane > kPlaneTolerance * diameter)
+    where.fail("vertices", "non-planar quadrilateral: vertex 3 is " + shown(off_plane) +
+                               " from the plane of vertices 0, 1, 2 (tolerance " +
+                               shown(kPlaneTolerance * diameter) + ")");
+  // Every corner must turn the same way as corner 1 (which defines the normal); a reflex
+  // corner or a bow-tie makes some corner turn against it.
+  for (int i = 0; i < n; ++i) {
+    const Vec3 turn = glm::cross(v[i] - v[(i + n - 1) % n], v[(i + 1) % n] - v[i]);
+    if (glm::dot(turn, normal) <= tiny_area)
+      where.fail("vertices",
+                 "non-convex or self-intersecting quadrilateral: the corner at vertex " +
+                     std::to_string(i) +
+                     " is reflex or straight (vertices must be counter-clockwise "
+                     "around a convex shape)");
+  }
+}
+
+Patch parse_patch(const json& value, const Where& where, long& scene_elements) {
+  if (!value.is_object()) where.fail("must be an object, got " + type_of(value));
+  reject_unknown_keys(value, {"vertices", "reflectance", "emission", "elements"}, where);
+
+  const json& vertices = required_field(value, "vertices", where, "vertices");
+  if (!vertices.is_array() || (vertices.size() != 3 && vertices.size() != 4))
+    where.fail("vertices",
+               "must be an array of 3 or 4 vertices, got " +
+                   (vertices.is_array() ? "an array of " + std::to_string(vertices.size())
+                                        : type_of(vertices)));
+  std::vector<Vec3> v;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    v.push_back(vec3(vertices[i], where, "vertices", "coordinate", "vertex " + std::to_string(i)));
+  check_geometry(v, where);
+
+  Patch patch;
+  patch.polygon =
+      v.size() == 3 ? Polygon::triangle(v[0], v[1], v[2]) : Polygon::quad(v[0], v[1], v[2], v[3]);
+  patch.reflectance = parse_colour(required_field(value, "reflectance", where, "reflectance"),
+                                   where, "reflectance", true);
+  if (const json* emission = optional_field(value, "emission"))
+    patch.emission = parse_colour(*emission, where, "emission", false);
+
+  if (const json* elements = optional_field(value, "elements")) {
+    if (!elements->is_array() || elements->size() != 2)
+      where.fail("elements", "must be an array [nu, nv] of 2 integers, got " + shown(*elements));
+    const long nu = subdivision((*elements)[0], where, "nu");
+    const long nv = subdivision((*elements)[1], where, "nv");
+    if (nu * nv > kMaxElementsPerPatch)
+      where.fail("elements", std::to_string(nu) + " x " + std::to_string(nv) + " = " +
+                                 std::to_string(nu * nv) + " elements, absurdly large (limit " +
+                                 std::to_string(kMaxElementsPerPatch) + " per patch)");
+    patch.nu = int(nu);
+    patch.nv = int(nv);
+  }
+  scene_elements += patch.element_count();
+  if (scene_elements > kMaxElementsPerScene)
+    where.fail("elements", "brings the scene to " + std::to_string(scene_elements) +
+                               " elements, absurdly large (limit " +
+                               std::to_string(kMaxElementsPerScene) + " per scene)");
+  return patch;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path) {
+  const json root = parse_json(text, path);
+  const Where top{path + ": "};
+  if (!root.is_object()) top.fail("the scene must be a JSON object, got " + type_of(root));
+  reject_unknown_keys(root, {"name", "camera", "patches"}, top);
+
+  Scene scene;
+  const json& name = required_field(root, "name", top, "name");
+  if (!name.is_string()) top.fail("name", "must be a string, got " + type_of(name));
+  scene.name = name.get<std::string>();
+  if (scene.name.empty()) top.fail("name", "must not be empty");
+
+  const json* camera = optional_field(root, "camera");
+  if (camera) scene.camera = parse_camera(*camera, top);
+
+  const json& patches = required_field(root, "patches", top, "patches");
+  if (!patches.is_array()) top.fail("patches", "must be an array, got " + type_of(patches));
+  if (patches.empty()) top.fail("patches", "is empty; a scene needs at least one patch");
+  long scene_elements = 0;
+  bool emits = false;
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    scene.patches.push_back(parse_patch(
+        patches[i], Where{path + ": patch " + std::to_string(i) + ": "}, scene_elements));
+    const Rgb& e = scene.patches.back().emission;
+    emits = emits || e.r > 0.0 || e.g > 0.0 || e.b > 0.0;
+  }
+  if (!emits) top.fail("patches", "no patch has a non-zero \"emission\"; a scene needs a light");
+
+  scene.build_elements();
+  if (!camera) scene.camera = default_camera(scene);
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  // C stdio rather than ifstream: it reports why a file cannot be opened or read (errno),
+  // including reading a directory.
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) throw InputError(path + ": cannot open scene file: " + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t got;
+  while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, got);
+  const bool failed = std::ferror(file);
+  const int error = errno;
+  std::fclose(file);
+  if (failed) throw InputError(path + ": cannot read scene file: " + std::strerror(error));
+  return parse_scene(text, path);
+}
+
+}  // namespace ncube

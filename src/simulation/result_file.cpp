@@ -1,0 +1,75 @@
+#include "simulation/result_file.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+nlohmann::json counts_to_json(const WorkCounts& c) {
+  return {{"shooter_candidates", c.shooter_candidates}, {"receivers", c.receivers},
+          {"rays", c.rays},                             {"ray_patch_tests", c.ray_patch_tests},
+          {"form_factors", c.form_factors},             {"element_updates", c.element_updates}};
+}
+
+const char* ray_policy_name(RayTestPolicy policy) {
+  return policy == RayTestPolicy::kTestAllPatches ? "all" : "first-blocker";
+}
+
+}  // namespace
+
+nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
+                              const SimulationResult& result) {
+  nlohmann::json j;
+  j["scene"] = {{"name", scene.name},
+                {"patches", scene.patches.size()},
+                {"elements", scene.elements.size()}};
+  j["config"] = {{"R", config.radiosity_processors},
+                 {"V", config.visibility_processors},
+                 {"nodes", config.node_count()},
+                 {"samples", config.options.samples},
+                 {"ray_test", ray_policy_name(config.options.ray_policy)},
+                 {"convergence_fraction", config.options.convergence_fraction},
+                 {"max_iterations", config.options.max_iterations}};
+  j["status"] = result.status;
+  j["iterations"] = result.iterations;
+  j["converged"] = result.converged;
+  j["simulated_seconds"] = result.simulated_seconds;
+  j["seconds_per_iteration"] = result.seconds_per_iteration;
+  j["shooters"] = result.shooters;
+  nlohmann::json radiosity = nlohmann::json::array();
+  for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});
+  j["patch_radiosity"] = radiosity;
+  j["counts"] = counts_to_json(result.counts);
+  nlohmann::json nodes = nlohmann::json::array();
+  for (const NodeStats& n : result.nodes)
+    nodes.push_back({{"node", n.node},
+                     {"role", n.role},
+                     {"compute_seconds", n.compute_seconds},
+                     {"counts", counts_to_json(n.counts)}});
+  j["nodes"] = nodes;
+  j["host_seconds"] = result.host_seconds;
+  return j;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path + ": cannot write file");
+    out << text;
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw InputError(path + ": cannot write file");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw InputError(path + ": cannot write file");
+  }
+}
+
+}  // namespace ncube

@@ -1,0 +1,48 @@
+// One simulated run: builds the nCube2 platform, places the node programs on it, runs
+// SimGrid to the end and collects what the result file reports. One per process (SimGrid
+// allows one Engine per process).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+#include "nodes/node_runtime.h"
+#include "radiosity/radiosity_engine.h"
+#include "scene/scene.h"
+
+namespace ncube {
+
+struct SimulationConfig {
+  int radiosity_processors = 1;  // R
+  int visibility_processors = 0;  // V, per radiosity processor
+  ProgressiveOptions options;
+  std::string platform_file;
+  std::string cost_model_file;
+
+  int node_count() const { return radiosity_processors * (visibility_processors + 1); }
+};
+
+struct SimulationResult {
+  std::string status = "ok";
+  int iterations = 0;
+  bool converged = false;
+  double simulated_seconds = 0.0;
+  std::vector<double> seconds_per_iteration;
+  std::vector<int> shooters;
+  std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
+  std::vector<Rgb> element_radiosity;  // for rendering
+  WorkCounts counts;                   // all nodes together
+  std::vector<NodeStats> nodes;
+  double host_seconds = 0.0;
+};
+
+// Throws InputError for a configuration the simulator cannot run.
+void check_configuration(const Scene& scene, const SimulationConfig& config,
+                         const PlatformConfig& platform);
+
+SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
+                                const PlatformConfig& platform, const CostModel& costs);
+
+}  // namespace ncube

@@ -1,0 +1,61 @@
+// ./simulate [options] SCENE.json — one simulated run of the paper's radiosity program on
+// the modeled nCube2; prints a summary, optionally writes the result file and a picture.
+#include <cstdio>
+#include <iostream>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+#include "render/image.h"
+#include "render/rasterizer.h"
+#include "scene/scene_loader.h"
+#include "simulation/result_file.h"
+#include "tools/simulate_options.h"
+#include "util/input_error.h"
+
+namespace {
+
+void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& config,
+                   const ncube::SimulationResult& r) {
+  const double per_iteration = r.iterations > 0 ? r.simulated_seconds / r.iterations : 0.0;
+  std::printf("scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
+              scene.patches.size(), scene.elements.size());
+  std::printf("configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
+              config.radiosity_processors, config.visibility_processors, config.node_count(),
+              config.options.samples);
+  std::printf("status                %s\n", r.status.c_str());
+  std::printf("iterations            %d (%s)\n", r.iterations,
+              r.converged ? "converged" : "not converged");
+  std::printf("simulated seconds     %.3f in all, %.3f per iteration\n", r.simulated_seconds,
+              per_iteration);
+  std::printf("ray-patch tests       %llu\n", (unsigned long long)r.counts.ray_patch_tests);
+  std::printf("host seconds          %.3f\n", r.host_seconds);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ncube::SimulateOptions options;
+  const int parse_status = ncube::parse_simulate_options(argc, argv, options);
+  if (parse_status >= 0) return parse_status;
+  try {
+    const ncube::Scene scene = ncube::load_scene(options.scene_file);
+    const ncube::PlatformConfig platform = ncube::load_platform_config(options.config.platform_file);
+    const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
+    ncube::check_configuration(scene, options.config, platform);
+
+    const ncube::SimulationResult result =
+        ncube::run_simulation(scene, options.config, platform, costs);
+    if (!options.quiet) print_summary(scene, options.config, result);
+    if (!options.json_file.empty())
+      ncube::write_file_atomically(options.json_file,
+                                   ncube::result_to_json(scene, options.config, result).dump(1) + "\n");
+    if (!options.image_file.empty())
+      ncube::write_png(ncube::render_solution(scene, scene.camera, result.element_radiosity,
+                                              options.image_width, options.image_height),
+                       options.image_file);
+    return ncube::kExitOk;
+  } catch (const ncube::InputError& e) {
+    std::cerr << "simulate: " << e.what() << "\n";
+    return ncube::kExitBadInput;
+  }
+}

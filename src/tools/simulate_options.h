@@ -1,0 +1,31 @@
+// Command-line options of ./simulate (docs/cli.md).
+#pragma once
+
+#include <string>
+
+#include "simulation/simulation.h"
+
+namespace ncube {
+
+struct SimulateOptions {
+  std::string scene_file;
+  SimulationConfig config;
+  std::string json_file;   // empty: no result file
+  std::string image_file;  // empty: no picture
+  int image_width = 800;
+  int image_height = 600;
+  bool quiet = false;
+};
+
+// Parses argv. Returns the exit code to stop with (0 after --help, kExitBadInput after a
+// bad option, with the message printed) or -1 to go on.
+int parse_simulate_options(int argc, char** argv, SimulateOptions& options);
+
+// "scene0.json" -> "<repository>/scenes/scene0.json" when the bare name is not a file here.
+std::string resolve_scene_path(const std::string& name);
+
+// The repository root (for platforms/ and scenes/): $NCUBE_ROOT, else the source tree the
+// binary was built from.
+std::string repository_root();
+
+}  // namespace ncube

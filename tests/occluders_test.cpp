@@ -1,0 +1,111 @@
+#include "radiosity/occluders.h"
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace ncube {
+namespace {
+
+// A random scene of small quads and triangles scattered in a unit cube, some coplanar and
+// axis-aligned (as in real rooms), some at random orientations.
+Scene random_scene(unsigned seed, int patches) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), size(0.02, 0.25);
+  Scene scene;
+  scene.name = "random";
+  for (int i = 0; i < patches; ++i) {
+    const Vec3 o(unit(rng), unit(rng), unit(rng));
+    Vec3 u, v;
+    if (i % 3 == 0) {  // axis aligned
+      const int axis = i % 9 / 3;
+      u = Vec3(0.0);
+      v = Vec3(0.0);
+      u[(axis + 1) % 3] = size(rng);
+      v[(axis + 2) % 3] = size(rng);
+    } else {
+      u = Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 0.4;
+      v = Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 0.4;
+    }
+    Patch p;
+    p.polygon = i % 4 == 1 ? Polygon::triangle(o, o + u, o + v) : Polygon::quad(o, o + u, o + u + v, o + v);
+    p.reflectance = Rgb(0.5);
+    p.nu = 2;
+    p.nv = 2;
+    scene.patches.push_back(p);
+  }
+  scene.build_elements();
+  return scene;
+}
+
+void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
+  const Scene scene = random_scene(seed, 300);
+  std::vector<int> all(scene.patches.size());
+  for (int i = 0; i < int(all.size()); ++i) all[i] = i;
+  // One full set and one share of every third patch (as on a visibility processor).
+  std::vector<int> share;
+  for (int i = 1; i < int(all.size()); i += 3) share.push_back(i);
+  for (const auto& set : {all, share}) {
+    const Occluders occluders(scene, set, policy);
+    int blocked_rays = 0, visible_rays = 0;
+    for (int shooter_patch = 0; shooter_patch < 12; ++shooter_patch) {
+      const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 16);
+      for (int e = 0; e < int(scene.elements.size()); e += 7) {
+        const Element& element = scene.elements[e];
+        if (element.patch == shooter_patch) continue;
+        WorkCounts fast, slow;
+        const PartMask a = occluders.unblocked_parts(element.centre, element.patch, shooter, fast);
+        const PartMask b =
+            occluders.unblocked_parts_brute_force(element.centre, element.patch, shooter, slow);
+        ASSERT_EQ(a, b) << "element " << e << " shooter " << shooter_patch;
+        ASSERT_EQ(fast, slow) << "element " << e << " shooter " << shooter_patch;
+        const int visible = __builtin_popcountll(a);
+        visible_rays += visible;
+        blocked_rays += 16 - visible;
+      }
+    }
+    // The random scene must exercise both outcomes, or the comparison proves little.
+    EXPECT_GT(blocked_rays, 1000);
+    EXPECT_GT(visible_rays, 1000);
+  }
+}
+
+TEST(Occluders, HierarchyGivesBruteForceAnswersAndCountsWhenTestingAllPatches) {
+  for (unsigned seed : {1u, 2u, 3u}) expect_same_as_brute_force(RayTestPolicy::kTestAllPatches, seed);
+}
+
+TEST(Occluders, HierarchyGivesBruteForceAnswersAndCountsWhenStoppingAtFirstBlocker) {
+  for (unsigned seed : {4u, 5u, 6u})
+    expect_same_as_brute_force(RayTestPolicy::kStopAtFirstBlocker, seed);
+}
+
+TEST(Occluders, EachRayIsTestedAgainstAllOtherPatches) {
+  const Scene scene = random_scene(7, 50);
+  std::vector<int> all(50);
+  for (int i = 0; i < 50; ++i) all[i] = i;
+  const Occluders occluders(scene, all, RayTestPolicy::kTestAllPatches);
+  const Shooter shooter = make_shooter(scene, 3, Rgb(1.0), 64);
+  WorkCounts counts;
+  occluders.unblocked_parts(scene.elements[0].centre, 0, shooter, counts);
+  EXPECT_EQ(counts.rays, 64u);
+  EXPECT_EQ(counts.ray_patch_tests, 64u * 48u);  // all patches but receiver and shooter
+}
+
+TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
+  Scene scene;
+  Patch wall;
+  wall.polygon = Polygon::quad({0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1});
+  wall.reflectance = Rgb(0.5);
+  scene.patches = {wall};
+  scene.build_elements();
+  const Occluders occluders(scene, {0}, RayTestPolicy::kTestAllPatches);
+  Shooter shooter;
+  shooter.patch = -1;
+  shooter.part_count = 2;
+  shooter.targets[0] = Vec3(1, 0, 0);    // through the wall
+  shooter.targets[1] = Vec3(-1, 0, 3);   // passes above it
+  WorkCounts counts;
+  EXPECT_EQ(occluders.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, counts), PartMask(2));
+}
+
+}  // namespace
+}  // namespace ncube
