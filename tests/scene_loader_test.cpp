@@ -29,8 +29,8 @@ json valid_scene() {
     ]})");
 }
 
-// The message of the InputError that parsing `text` (or `scene`) throws ("" and a test failure if
-// none).
+// The message of the InputError that parsing `text` (or `scene`) throws; "" and a test
+// failure if none.
 std::string error_of_text(const std::string& text) {
   try {
     parse_scene(text, "test.json");

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Command-line contract of simulate: help, exit codes, no output on bad input, bare scene
+# names, determinism of the result file. Called by ctest as: cli_test.sh SIMULATE REPO_ROOT
+set -u
+simulate="$1"
+root="$2"
+export NCUBE_ROOT="$root"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_exit CODE DESCRIPTION -- ARGS...: runs simulate with --json into the work dir and
+# checks the exit code, and for a failure that no result file was written.
+expect_exit() {
+  local code="$1" what="$2"; shift 3
+  rm -f "$work/out.json"
+  "$simulate" "$@" --json "$work/out.json" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  [ "$got" -eq "$code" ] || fail "$what: exit $got, expected $code ($(head -c 300 "$work/stderr"))"
+  if [ "$code" -ne 0 ] && [ -e "$work/out.json" ]; then fail "$what: wrote a result file"; fi
+  if [ "$code" -ne 0 ] && [ "$(wc -l <"$work/stderr")" -lt 1 ]; then fail "$what: no message"; fi
+}
+
+"$simulate" --help >"$work/help" 2>&1 || fail "--help exits non-zero"
+for option in --R --V --samples --iterations --convergence --json --image --platform --cost-model; do
+  grep -q -- "$option" "$work/help" || fail "--help does not list $option"
+done
+
+expect_exit 2 "unknown option" -- scene0.json --bogus
+expect_exit 2 "non-integer R" -- scene0.json --R 2.5
+expect_exit 2 "R zero" -- scene0.json --R 0
+expect_exit 2 "negative V" -- scene0.json --V -1
+expect_exit 2 "samples not a square" -- scene0.json --samples 20
+expect_exit 2 "parallel not yet" -- scene0.json --R 8 --V 7
+expect_exit 2 "missing scene" -- "$work/nothing.json"
+echo '{"name": "x", "patches": [' >"$work/broken.json"
+expect_exit 2 "malformed scene" -- "$work/broken.json"
+grep -q "broken.json" "$work/stderr" || fail "malformed scene: message does not name the file"
+expect_exit 2 "missing platform" -- scene0.json --platform "$work/none.json"
+
+# A bare scene name is found in scenes/ from any directory.
+(cd "$work" && "$simulate" scene0.json --iterations 2 --quiet) || fail "bare scene name not resolved"
+
+# Same command, same result file (host-time fields aside); a picture is a PNG.
+"$simulate" scene0.json --iterations 5 --json "$work/a.json" --image "$work/a.png" --quiet || fail "run a"
+"$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b"
+strip() { grep -v '"host_seconds"' "$1"; }
+cmp -s <(strip "$work/a.json") <(strip "$work/b.json") || fail "result files differ"
+[ "$(head -c 4 "$work/a.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "image is not a PNG"
+
+[ "$failures" -eq 0 ] && echo "cli_test: all passed"
+exit "$failures"
