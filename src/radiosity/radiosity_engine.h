@@ -58,7 +58,7 @@ class RadiosityEngine {
 struct ProgressiveOptions {
   int samples = 16;                    // M, parts of the shooter
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
-  double convergence_fraction = 0.01;  // stop when max unshot power < this x emitted power
+  double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged
 };
 

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The committed scene files are exactly what scenes/generate.py writes.
+# Usage: bash tests/scenes_reproducible_test.sh <path-to-simulate-binary> <repo-root>
+# (the simulate binary is not needed here; the argument keeps the script-test convention).
+set -euo pipefail
+
+root="${2:-$(cd "$(dirname "$0")/.." && pwd)}"
+python="${PYTHON:-python3}"
+files=(scene0.json scene1.json scene2.json scene3.json cornell-box.json)
+
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+if ! "$python" "$root/scenes/generate.py" --out "$tmp"; then
+  echo "FAIL: scenes/generate.py failed" >&2
+  exit 1
+fi
+
+status=0
+for f in "${files[@]}"; do
+  if [[ ! -f "$root/scenes/$f" ]]; then
+    echo "FAIL: scenes/$f is missing (run: python3 scenes/generate.py)" >&2
+    status=1
+  elif ! cmp "$tmp/$f" "$root/scenes/$f"; then
+    echo "FAIL: scenes/$f differs from the generator's output (run: python3 scenes/generate.py)" >&2
+    status=1
+  fi
+done
+# A second run must give the same bytes (no hidden randomness or ordering).
+mkdir "$tmp/again"
+"$python" "$root/scenes/generate.py" --out "$tmp/again"
+for f in "${files[@]}"; do
+  if ! cmp "$tmp/$f" "$tmp/again/$f"; then
+    echo "FAIL: two runs of the generator differ in $f" >&2
+    status=1
+  fi
+done
+if [[ $status -eq 0 ]]; then
+  echo "PASS: ${#files[@]} scene files reproduced byte for byte"
+fi
+exit $status

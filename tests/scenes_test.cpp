@@ -1,0 +1,127 @@
+// The committed scene files (scenes/, made by scenes/generate.py; see docs/scenes.md) load,
+// have exactly the patch and element counts of the paper's table (Stuerzlinger & Wild 1994,
+// section 5) and are lit; the Cornell box loads too.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <ostream>
+#include <string>
+
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+
+namespace ncube {
+namespace {
+
+std::string scene_path(const std::string& file) {
+  return std::string(NCUBE_SOURCE_DIR) + "/scenes/" + file;
+}
+
+struct PaperScene {
+  const char* file;
+  std::size_t patches;
+  std::size_t elements;
+};
+
+std::ostream& operator<<(std::ostream& out, const PaperScene& s) { return out << s.file; }
+
+class PaperScenes : public ::testing::TestWithParam<PaperScene> {};
+
+bool is_emitter(const Patch& p) { return p.emission.r + p.emission.g + p.emission.b > 0.0; }
+
+TEST_P(PaperScenes, HasThePapersExactCounts) {
+  const PaperScene& want = GetParam();
+  const Scene scene = load_scene(scene_path(want.file));
+  EXPECT_EQ(scene.patches.size(), want.patches);
+  EXPECT_EQ(scene.elements.size(), want.elements);
+  std::size_t sum = 0;
+  for (const Patch& p : scene.patches) {
+    EXPECT_GE(p.nu, 1);
+    EXPECT_GE(p.nv, 1);
+    EXPECT_LE(p.nu, 64);
+    EXPECT_LE(p.nv, 64);
+    sum += std::size_t(p.element_count());
+  }
+  EXPECT_EQ(sum, want.elements);
+}
+
+TEST_P(PaperScenes, IsLitByCeilingLightsFacingDown) {
+  const Scene scene = load_scene(scene_path(GetParam().file));
+  int emitters = 0;
+  for (const Patch& p : scene.patches) {
+    if (!is_emitter(p)) continue;
+    ++emitters;
+    EXPECT_LT(p.normal.y, -0.99) << "a light should face down";
+  }
+  EXPECT_GE(emitters, 1);
+  EXPECT_GT(scene.emitted_power(), 0.0);
+}
+
+// Every patch has a positive area, and the patches on the scene's bounding box (floor,
+// ceiling, walls) face into the room, where the camera stands.
+TEST_P(PaperScenes, RoomFacesInwardsAndCameraIsInside) {
+  const Scene scene = load_scene(scene_path(GetParam().file));
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Patch& p : scene.patches)
+    for (int i = 0; i < p.polygon.count; ++i) {
+      lo = glm::min(lo, p.polygon[i]);
+      hi = glm::max(hi, p.polygon[i]);
+    }
+  const Vec3 centre = 0.5 * (lo + hi);
+  int room_patches = 0;
+  for (std::size_t index = 0; index < scene.patches.size(); ++index) {
+    const Patch& p = scene.patches[index];
+    EXPECT_GT(p.area, 0.0) << "patch " << index;
+    for (int axis = 0; axis < 3; ++axis)
+      for (double plane : {lo[axis], hi[axis]}) {
+        bool on_plane = true;
+        for (int i = 0; i < p.polygon.count; ++i) on_plane = on_plane && p.polygon[i][axis] == plane;
+        if (!on_plane) continue;
+        ++room_patches;
+        EXPECT_GT(glm::dot(p.normal, centre - p.polygon.centroid()), 0.0)
+            << "room patch " << index << " faces out of the room";
+      }
+  }
+  EXPECT_GE(room_patches, 6);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_GT(scene.camera.eye[axis], lo[axis]);
+    EXPECT_LT(scene.camera.eye[axis], hi[axis]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PaperScenes,
+                         ::testing::Values(PaperScene{"scene0.json", 52, 1162},
+                                           PaperScene{"scene1.json", 288, 4648},
+                                           PaperScene{"scene2.json", 832, 18952},
+                                           PaperScene{"scene3.json", 3328, 74368}),
+                         [](const ::testing::TestParamInfo<PaperScene>& info) {
+                           std::string name = info.param.file;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(CornellBox, Loads) {
+  const Scene scene = load_scene(scene_path("cornell-box.json"));
+  EXPECT_EQ(scene.name, "cornell-box");
+  // Floor, ceiling, back and right walls, the left wall as two triangles, the light, and
+  // five faces of each block.
+  EXPECT_EQ(scene.patches.size(), 17u);
+  int emitters = 0;
+  for (const Patch& p : scene.patches)
+    if (is_emitter(p)) {
+      ++emitters;
+      EXPECT_LT(p.normal.y, -0.99);
+      EXPECT_NEAR(p.area, 130.0 * 105.0, 1e-6);
+    }
+  EXPECT_EQ(emitters, 1);
+  EXPECT_EQ(scene.camera.eye, Vec3(278.0, 273.0, -800.0));
+  EXPECT_EQ(scene.camera.look_at, Vec3(278.0, 273.0, 0.0));
+  EXPECT_NEAR(scene.camera.fov_deg, 39.3, 0.05);
+  std::size_t sum = 0;
+  for (const Patch& p : scene.patches) sum += std::size_t(p.element_count());
+  EXPECT_EQ(scene.elements.size(), sum);
+}
+
+}  // namespace
+}  // namespace ncube
