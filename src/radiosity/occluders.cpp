@@ -11,18 +11,26 @@ namespace {
 constexpr double kRayEpsilon = 1e-9;
 constexpr int kLeafSize = 4;
 
-bool segment_meets_box(const Vec3& lo, const Vec3& hi, const Vec3& from, const Vec3& delta) {
+// A segment with its reciprocal direction, computed once per ray for all box tests.
+struct Segment {
+  Vec3 from, delta, inverse;
+  Segment(const Vec3& f, const Vec3& d) : from(f), delta(d) {
+    for (int axis = 0; axis < 3; ++axis) inverse[axis] = d[axis] != 0.0 ? 1.0 / d[axis] : 0.0;
+  }
+};
+
+bool segment_meets_box(const Vec3& lo, const Vec3& hi, const Segment& s) {
   double t0 = 0.0, t1 = 1.0;
   for (int axis = 0; axis < 3; ++axis) {
-    if (delta[axis] == 0.0) {
-      if (from[axis] < lo[axis] || from[axis] > hi[axis]) return false;
+    if (s.delta[axis] == 0.0) {
+      if (s.from[axis] < lo[axis] || s.from[axis] > hi[axis]) return false;
       continue;
     }
-    const double inv = 1.0 / delta[axis];
-    double a = (lo[axis] - from[axis]) * inv, b = (hi[axis] - from[axis]) * inv;
+    double a = (lo[axis] - s.from[axis]) * s.inverse[axis];
+    double b = (hi[axis] - s.from[axis]) * s.inverse[axis];
     if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
+    t0 = a > t0 ? a : t0;
+    t1 = b < t1 ? b : t1;
     if (t0 > t1) return false;
   }
   return true;
@@ -85,14 +93,12 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
 int Occluders::build(int first, int count) {
   const int index = int(nodes_.size());
   nodes_.push_back(Node{});
-  Vec3 lo(1e300), hi(-1e300), centre_lo(1e300), centre_hi(-1e300);
+  Vec3 lo(1e300), hi(-1e300);
   int min_position = 1 << 30;
   for (int i = first; i < first + count; ++i) {
     const Candidate& c = patches_[order_[i]];
     lo = glm::min(lo, c.lo);
     hi = glm::max(hi, c.hi);
-    centre_lo = glm::min(centre_lo, 0.5 * (c.lo + c.hi));
-    centre_hi = glm::max(centre_hi, 0.5 * (c.lo + c.hi));
     min_position = std::min(min_position, order_[i]);
   }
   nodes_[index].lo = lo;
@@ -103,15 +109,45 @@ int Occluders::build(int first, int count) {
     nodes_[index].count = count;
     return index;
   }
-  // Median split along the longest axis of the centres; ties broken by position so the
+  // Surface-area heuristic: on each axis, sort by box centre and take the cut that
+  // minimises area(left) x n(left) + area(right) x n(right); ties broken by position so the
   // hierarchy is the same on every run.
-  const Vec3 extent = centre_hi - centre_lo;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-  auto key = [&](int position) { return patches_[position].lo[axis] + patches_[position].hi[axis]; };
-  std::sort(order_.begin() + first, order_.begin() + first + count, [&](int a, int b) {
-    return key(a) < key(b) || (key(a) == key(b) && a < b);
-  });
-  const int half = count / 2;
+  auto area = [](const Vec3& a, const Vec3& b) {
+    const Vec3 d = b - a;
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+  };
+  auto sort_on = [&](int axis) {
+    auto key = [&](int position) { return patches_[position].lo[axis] + patches_[position].hi[axis]; };
+    std::sort(order_.begin() + first, order_.begin() + first + count, [&](int a, int b) {
+      return key(a) < key(b) || (key(a) == key(b) && a < b);
+    });
+  };
+  std::vector<double> right_area(std::size_t(count), 0.0);
+  double best_cost = 1e300;
+  int best_axis = 0, half = count / 2;
+  for (int axis = 0; axis < 3; ++axis) {
+    sort_on(axis);
+    Vec3 r_lo(1e300), r_hi(-1e300);
+    for (int k = count - 1; k > 0; --k) {
+      const Candidate& c = patches_[order_[first + k]];
+      r_lo = glm::min(r_lo, c.lo);
+      r_hi = glm::max(r_hi, c.hi);
+      right_area[k] = area(r_lo, r_hi);
+    }
+    Vec3 l_lo(1e300), l_hi(-1e300);
+    for (int k = 1; k < count; ++k) {
+      const Candidate& c = patches_[order_[first + k - 1]];
+      l_lo = glm::min(l_lo, c.lo);
+      l_hi = glm::max(l_hi, c.hi);
+      const double cost = area(l_lo, l_hi) * k + right_area[k] * (count - k);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best_axis = axis;
+        half = k;
+      }
+    }
+  }
+  sort_on(best_axis);
   const int left = build(first, half);
   const int right = build(first + half, count - half);
   nodes_[index].first = left;
@@ -120,13 +156,17 @@ int Occluders::build(int first, int count) {
   return index;
 }
 
-bool Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const {
+int Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
+                           int hint) const {
+  // The last blocker usually blocks the next ray too (rays of one receiver are coherent).
+  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) return hint;
+  const Segment segment(from, delta);
   int stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!segment_meets_box(node.lo, node.hi, from, delta)) continue;
+    if (!segment_meets_box(node.lo, node.hi, segment)) continue;
     if (node.count == 0) {
       stack[top++] = node.right;
       stack[top++] = node.first;
@@ -135,20 +175,23 @@ bool Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, i
     for (int i = node.first; i < node.first + node.count; ++i) {
       const Candidate& c = patches_[order_[i]];
       if (c.scene_index != receiver && c.scene_index != shooter && segment_crosses(c, from, delta))
-        return true;
+        return order_[i];
     }
   }
-  return false;
+  return -1;
 }
 
-int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const {
+int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
+                             int hint) const {
   int best = 1 << 30;
+  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) best = hint;
+  const Segment segment(from, delta);
   int stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (node.min_position >= best || !segment_meets_box(node.lo, node.hi, from, delta)) continue;
+    if (node.min_position >= best || !segment_meets_box(node.lo, node.hi, segment)) continue;
     if (node.count == 0) {
       stack[top++] = node.right;
       stack[top++] = node.first;
@@ -171,14 +214,18 @@ PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const
   const int shooter_position = position_in_set(shooter.patch);
   const int excluded = (receiver_position >= 0) + (shooter_position >= 0);
   PartMask visible = 0;
+  int last_blocker = -1;  // never an excluded patch: those are never found blocking
   for (int part = 0; part < shooter.part_count; ++part) {
     const Vec3 delta = shooter.targets[part] - point;
     std::uint64_t tests = std::uint64_t(size() - excluded);
-    if (policy_ == RayTestPolicy::kTestAllPatches || patches_.empty()) {
-      if (patches_.empty() || !any_blocker(point, delta, receiver_patch, shooter.patch))
-        visible |= PartMask(1) << part;
+    if (patches_.empty()) {
+      visible |= PartMask(1) << part;
+    } else if (policy_ == RayTestPolicy::kTestAllPatches) {
+      last_blocker = any_blocker(point, delta, receiver_patch, shooter.patch, last_blocker);
+      if (last_blocker < 0) visible |= PartMask(1) << part;
     } else {
-      const int blocker = first_blocker(point, delta, receiver_patch, shooter.patch);
+      const int blocker = first_blocker(point, delta, receiver_patch, shooter.patch, last_blocker);
+      if (blocker >= 0) last_blocker = blocker;
       if (blocker < 0) {
         visible |= PartMask(1) << part;
       } else {

@@ -54,9 +54,13 @@ class Occluders {
   };
 
   int build(int first, int count);
-  // Position of the first blocking candidate along the segment's test order, or -1.
-  int first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const;
-  bool any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter) const;
+  // Position of the first blocking candidate in brute-force order, or -1. `hint` is a
+  // candidate position to try first (the previous ray's blocker) or -1.
+  int first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
+                    int hint) const;
+  // Position of some blocking candidate, or -1.
+  int any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
+                  int hint) const;
   int position_in_set(int scene_patch) const {
     return scene_patch >= 0 && scene_patch < int(position_of_scene_patch_.size())
                ? position_of_scene_patch_[scene_patch]
