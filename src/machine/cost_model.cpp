@@ -18,7 +18,14 @@ CostModel load_cost_model(const std::string& path) {
                                             {"flops_per_ray", 0, false},
                                             {"flops_per_ray_patch_test", 0, false},
                                             {"flops_per_form_factor", 0, false},
-                                            {"flops_per_element_update", 0, false}});
+                                            {"flops_per_element_update", 0, false},
+                                            {"message_header_bytes", 0, true},
+                                            {"shooter_record_bytes", 1, true},
+                                            {"point_bytes", 1, true},
+                                            {"patch_geometry_bytes", 1, true},
+                                            {"patch_radiosity_bytes", 1, true},
+                                            {"element_bytes", 1, true},
+                                            {"node_reserve_bytes", 0, true}});
   CostModel m;
   m.flops_per_shooter_candidate = v.at("flops_per_shooter_candidate");
   m.flops_per_receiver = v.at("flops_per_receiver");
@@ -26,6 +33,13 @@ CostModel load_cost_model(const std::string& path) {
   m.flops_per_ray_patch_test = v.at("flops_per_ray_patch_test");
   m.flops_per_form_factor = v.at("flops_per_form_factor");
   m.flops_per_element_update = v.at("flops_per_element_update");
+  m.message_header_bytes = v.at("message_header_bytes");
+  m.shooter_record_bytes = v.at("shooter_record_bytes");
+  m.point_bytes = v.at("point_bytes");
+  m.patch_geometry_bytes = v.at("patch_geometry_bytes");
+  m.patch_radiosity_bytes = v.at("patch_radiosity_bytes");
+  m.element_bytes = v.at("element_bytes");
+  m.node_reserve_bytes = v.at("node_reserve_bytes");
   return m;
 }
 

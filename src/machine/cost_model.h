@@ -16,6 +16,16 @@ struct CostModel {
   double flops_per_form_factor = 0;        // one point-to-part contour integral
   double flops_per_element_update = 0;     // adding the shot light to one element
 
+  // Modeled sizes of the program's data, as laid out by a 1990s 32-bit C implementation
+  // (4-byte floats, ints and pointers); docs/model.md gives each layout.
+  double message_header_bytes = 0;     // type, sender, block number of every message
+  double shooter_record_bytes = 0;     // patch index, geometry, unshot radiosity and power
+  double point_bytes = 0;              // one visibility point sent to a visibility processor
+  double patch_geometry_bytes = 0;     // a patch as stored for intersection tests
+  double patch_radiosity_bytes = 0;    // an owned patch's radiosity data (besides geometry)
+  double element_bytes = 0;            // one element with its radiosity
+  double node_reserve_bytes = 0;       // program, operating system and stack on every node
+
   double flops(const WorkCounts& counts) const;
 };
 

@@ -1,26 +1,83 @@
 #include "nodes/node_runtime.h"
 
 #include <simgrid/s4u/Actor.hpp>
+#include <simgrid/s4u/Comm.hpp>
 #include <simgrid/s4u/Engine.hpp>
+#include <simgrid/s4u/Mailbox.hpp>
 
 namespace ncube {
+namespace {
 
-NodeRuntime::NodeRuntime(int node, std::string role, const PlatformConfig& platform,
-                         const CostModel& costs)
-    : platform_(platform), costs_(costs) {
+simgrid::s4u::Mailbox* mailbox_of(int node) {
+  return simgrid::s4u::Mailbox::by_name("node-" + std::to_string(node));
+}
+
+}  // namespace
+
+NodeRuntime::NodeRuntime(int node, std::string role, int rank, const PlatformConfig& platform,
+                         const CostModel& costs, std::vector<TraceEvent>* trace)
+    : platform_(platform), costs_(costs), trace_(trace) {
   stats_.node = node;
   stats_.role = std::move(role);
+  stats_.rank = rank;
+}
+
+void NodeRuntime::start() { mailbox_of(stats_.node)->set_receiver(simgrid::s4u::Actor::self()); }
+
+void NodeRuntime::finish() { mailbox_of(stats_.node)->set_receiver(nullptr); }
+
+double NodeRuntime::now() const { return simgrid::s4u::Engine::get_clock(); }
+
+void NodeRuntime::busy(double seconds, const char* what, double& account) {
+  if (seconds <= 0.0) return;
+  const double start = now();
+  simgrid::s4u::this_actor::execute(seconds * platform_.node_speed);
+  account += now() - start;
+  if (trace_) trace_->push_back({stats_.node, what, start, now()});
 }
 
 void NodeRuntime::compute(const WorkCounts& counts) {
   stats_.counts += counts;
-  const double flops = costs_.flops(counts);
-  if (flops <= 0.0) return;
-  const double start = now();
-  simgrid::s4u::this_actor::execute(flops);
-  stats_.compute_seconds += now() - start;
+  busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
 }
 
-double NodeRuntime::now() const { return simgrid::s4u::Engine::get_clock(); }
+void NodeRuntime::send(int to, std::unique_ptr<Message> message, double payload_bytes) {
+  busy(platform_.send_overhead, "overhead", stats_.overhead_seconds);
+  const double bytes = payload_bytes + costs_.message_header_bytes;
+  message->from = stats_.node;
+  ++stats_.messages_sent;
+  stats_.bytes_sent += bytes;
+  mailbox_of(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
+}
+
+std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind> kinds) {
+  auto wanted = [&kinds](const Message& m) {
+    for (MessageKind k : kinds)
+      if (m.kind == k) return true;
+    return false;
+  };
+  std::unique_ptr<Message> message;
+  for (auto it = deferred_.begin(); it != deferred_.end(); ++it)
+    if (wanted(**it)) {
+      message = std::move(*it);
+      deferred_.erase(it);
+      break;
+    }
+  const double start = now();
+  while (!message) {
+    std::unique_ptr<Message> arrived = mailbox_of(stats_.node)->get_unique<Message>();
+    if (wanted(*arrived))
+      message = std::move(arrived);
+    else
+      deferred_.push_back(std::move(arrived));
+  }
+  if (now() > start) {
+    stats_.waiting_seconds += now() - start;
+    if (trace_) trace_->push_back({stats_.node, "wait", start, now()});
+  }
+  ++stats_.messages_received;
+  busy(platform_.receive_overhead, "overhead", stats_.overhead_seconds);
+  return message;
+}
 
 }  // namespace ncube

@@ -1,38 +1,76 @@
-// The simulation plumbing beneath the node programs: every counted operation becomes CPU
-// time on this node through the cost model, charged with this_actor::execute in batches.
-// Messages and memory accounting join here (issue 3); the node programs only say what
-// work they did.
+// The simulation plumbing beneath the node programs. A node program says what work it did
+// and what it sends; this layer turns counted work into CPU time through the cost model
+// (this_actor::execute, one call per batch), charges the nCube2's per-message software
+// overhead on both sides as CPU time, sends the modeled bytes over the SimGrid network,
+// and keeps the per-node statistics and the timeline for the trace.
 #pragma once
 
+#include <deque>
+#include <initializer_list>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "nodes/messages.h"
 #include "radiosity/work_counts.h"
 
 namespace ncube {
 
 struct NodeStats {
   int node = 0;
-  std::string role;
+  std::string role;  // "radiosity" or "visibility"
+  int rank = 0;      // radiosity processor rank (of its group, for a visibility processor)
   double compute_seconds = 0.0;
+  double overhead_seconds = 0.0;  // message software overhead, both directions
+  double waiting_seconds = 0.0;   // blocked waiting for a message
+  long messages_sent = 0;
+  double bytes_sent = 0.0;
+  long messages_received = 0;
+  double peak_memory_bytes = 0.0;
   WorkCounts counts;
+};
+
+struct TraceEvent {
+  int node;
+  const char* what;  // "compute", "overhead", "wait"
+  double start, end;
 };
 
 class NodeRuntime {
  public:
-  NodeRuntime(int node, std::string role, const PlatformConfig& platform, const CostModel& costs);
+  NodeRuntime(int node, std::string role, int rank, const PlatformConfig& platform,
+              const CostModel& costs, std::vector<TraceEvent>* trace);
+
+  // Makes this actor the permanent receiver of the node's mailbox, so that messages are
+  // delivered as soon as they are sent (the nCube2's DMA into receive buffers).
+  void start();
+  void finish();
 
   // Runs the counted work on this node's CPU: one execute() for the whole batch.
   void compute(const WorkCounts& counts);
-  double now() const;
+  // Sends `message` to node `to`: the sender's overhead, then `payload_bytes` plus the
+  // header over the e-cube route (asynchronously: the sender goes on).
+  void send(int to, std::unique_ptr<Message> message, double payload_bytes);
+  // Waits for the next message of one of the given kinds (messages of other kinds that
+  // arrive meanwhile are kept, in order, for a later receive), then pays the receiver's
+  // overhead.
+  std::unique_ptr<Message> receive(std::initializer_list<MessageKind> kinds);
 
+  void set_memory(double bytes) { stats_.peak_memory_bytes = bytes; }
+  double now() const;
   const NodeStats& stats() const { return stats_; }
+  const CostModel& costs() const { return costs_; }
 
  private:
+  void busy(double seconds, const char* what, double& account);
+
   const PlatformConfig& platform_;
   const CostModel& costs_;
+  std::vector<TraceEvent>* trace_;
   NodeStats stats_;
+  std::deque<std::unique_ptr<Message>> deferred_;
 };
 
 }  // namespace ncube

@@ -1,46 +1,126 @@
 #include "nodes/radiosity_processor.h"
 
+#include <algorithm>
+
 namespace ncube {
 
-RadiosityProcessor::RadiosityProcessor(NodeRuntime& runtime, RadiosityEngine& engine,
-                                       const Occluders& occluders,
-                                       const ProgressiveOptions& options)
-    : runtime_(runtime),
+RadiosityProcessor::RadiosityProcessor(const ProgramSetup& setup, int rank, NodeRuntime& runtime,
+                                       RadiosityEngine& engine, const Occluders* occluders)
+    : setup_(setup),
+      rank_(rank),
+      runtime_(runtime),
       engine_(engine),
       occluders_(occluders),
-      options_(options),
-      emitted_power_(engine.scene().emitted_power()) {}
+      selection_(runtime, setup_.placement, rank) {}
 
 void RadiosityProcessor::run() {
+  runtime_.start();
   for (;;) {
-    const double start = runtime_.now();
-    // The patch with the most unshot radiosity becomes the shooter.
+    // Every processor offers the patch with the most unshot radiosity; the master chooses
+    // the globally best as shooter and sends it to all (section 2.2).
     WorkCounts search;
-    const ShooterChoice best = engine_.best_shooter(search);
+    const ShooterChoice local_best = engine_.best_shooter(search);
     runtime_.compute(search);
-    if (has_converged(best, emitted_power_, options_.convergence_fraction)) {
-      converged_ = true;
-      return;
-    }
-    if (options_.max_iterations >= 0 && int(iterations_.size()) >= options_.max_iterations) return;
-    shoot(make_shooter(engine_.scene(), best.patch, best.unshot, options_.samples));
-    engine_.clear_unshot(best.patch);
-    iterations_.push_back({best.patch, start, runtime_.now()});
+    const ShooterChoice global_best = selection_.reduce_to_master(local_best);
+    const ShooterChoice decision = selection_.broadcast_from_master(
+        selection_.is_master() ? decide(global_best) : ShooterChoice{});
+    tell_visibility_processors(decision);
+    if (decision.patch < 0) break;
+    shoot(make_shooter(setup_.scene, decision.patch, decision.unshot, setup_.options.samples));
+    // Only the owner holds the shooter's unshot radiosity; it has now been shot.
+    if (std::binary_search(engine_.owned_patches().begin(), engine_.owned_patches().end(),
+                           decision.patch))
+      engine_.clear_unshot(decision.patch);
+  }
+  runtime_.finish();
+}
+
+ShooterChoice RadiosityProcessor::decide(const ShooterChoice& global_best) {
+  if (!shooters_.empty()) iteration_ends_.push_back(runtime_.now());
+  const ProgressiveOptions& o = setup_.options;
+  converged_ = has_converged(global_best, setup_.emitted_power, o.convergence_fraction);
+  if (converged_ || (o.max_iterations >= 0 && int(shooters_.size()) >= o.max_iterations))
+    return ShooterChoice{};  // stop
+  shooters_.push_back(global_best.patch);
+  return global_best;
+}
+
+void RadiosityProcessor::tell_visibility_processors(const ShooterChoice& decision) {
+  // The shooter's geometry reaches the visibility processors by message (section 3).
+  for (int j = 0; j < setup_.placement.visibility_processors; ++j) {
+    auto message = std::make_unique<Message>();
+    message->kind = decision.patch < 0 ? MessageKind::kStop : MessageKind::kShooter;
+    message->candidate = decision;
+    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message),
+                  runtime_.costs().shooter_record_bytes);
   }
 }
 
 void RadiosityProcessor::shoot(const Shooter& shooter) {
-  // For each receiving element: trace a ray to every part of the shooter, intersecting it
-  // with all other patches; then the form factor of the visible parts (section 2.2).
+  if (setup_.placement.visibility_processors > 0) {
+    shoot_with_visibility_processors(shooter);
+    return;
+  }
+  // Section 2.2: for each receiving element, trace a ray to every part of the shooter and
+  // intersect it with all other patches; add the light of the visible parts.
   WorkCounts work;
   const std::vector<int> receivers = engine_.receivers(shooter, work);
   std::vector<PartMask> visible(receivers.size());
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    const Element& element = engine_.scene().elements[receivers[k]];
-    visible[k] = occluders_.unblocked_parts(element.centre, element.patch, shooter, work);
+    const Element& element = setup_.scene.elements[receivers[k]];
+    visible[k] = occluders_->unblocked_parts(element.centre, element.patch, shooter, work);
   }
   engine_.gather(shooter, receivers, visible, work);
   runtime_.compute(work);
+}
+
+void RadiosityProcessor::shoot_with_visibility_processors(const Shooter& shooter) {
+  // Section 3: the visibility points go in blocks to every visibility processor of this
+  // group; each answers with one bit vector per point (bit set: that part of the shooter is
+  // not blocked by its share of the patches); the AND of the V answers is the visibility.
+  WorkCounts facing;
+  const std::vector<int> receivers = engine_.receivers(shooter, facing);
+  runtime_.compute(facing);
+  const int V = setup_.placement.visibility_processors;
+  const int B = setup_.block_size;
+  const int blocks = int((receivers.size() + B - 1) / B);
+  std::vector<PartMask> visible(receivers.size(), shooter.all_parts());
+  std::vector<int> answers(std::size_t(blocks), 0);
+  if (blocks > 0) send_block(receivers, 0);
+  for (int block = 0; block < blocks; ++block) {
+    if (setup_.pipelined && block + 1 < blocks) send_block(receivers, block + 1);
+    while (answers[block] < V) {
+      const std::unique_ptr<Message> answer = runtime_.receive({MessageKind::kAnswers});
+      for (std::size_t k = 0; k < answer->masks.size(); ++k)
+        visible[std::size_t(answer->block) * B + k] &= answer->masks[k];
+      ++answers[answer->block];
+    }
+    const auto first = std::size_t(block) * B;
+    const auto last = std::min(receivers.size(), first + B);
+    const std::vector<int> part(receivers.begin() + first, receivers.begin() + last);
+    const std::vector<PartMask> masks(visible.begin() + first, visible.begin() + last);
+    WorkCounts work;
+    engine_.gather(shooter, part, masks, work);
+    runtime_.compute(work);
+    if (!setup_.pipelined && block + 1 < blocks) send_block(receivers, block + 1);
+  }
+}
+
+void RadiosityProcessor::send_block(const std::vector<int>& receivers, int block) {
+  const auto first = std::size_t(block) * setup_.block_size;
+  const auto last = std::min(receivers.size(), first + setup_.block_size);
+  for (int j = 0; j < setup_.placement.visibility_processors; ++j) {
+    auto message = std::make_unique<Message>();
+    message->kind = MessageKind::kPoints;
+    message->block = block;
+    for (std::size_t k = first; k < last; ++k) {
+      const Element& element = setup_.scene.elements[receivers[k]];
+      message->points.push_back(element.centre);
+      message->point_patches.push_back(element.patch);
+    }
+    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message),
+                  double(last - first) * runtime_.costs().point_bytes);
+  }
 }
 
 }  // namespace ncube

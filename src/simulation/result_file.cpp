@@ -32,8 +32,16 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
                  {"convergence_fraction", config.options.convergence_fraction},
-                 {"max_iterations", config.options.max_iterations}};
+                 {"max_iterations", config.options.max_iterations},
+                 {"block_size", config.block_size},
+                 {"pipelined", config.pipelined},
+                 {"memory_cap", config.memory_cap}};
   j["status"] = result.status;
+  if (result.status == "out_of_memory")
+    j["out_of_memory"] = {{"node", result.out_of_memory.node},
+                          {"role", result.out_of_memory.role},
+                          {"needed_bytes", result.out_of_memory.needed_bytes},
+                          {"available_bytes", result.out_of_memory.available_bytes}};
   j["iterations"] = result.iterations;
   j["converged"] = result.converged;
   j["simulated_seconds"] = result.simulated_seconds;
@@ -47,7 +55,14 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   for (const NodeStats& n : result.nodes)
     nodes.push_back({{"node", n.node},
                      {"role", n.role},
+                     {"rank", n.rank},
                      {"compute_seconds", n.compute_seconds},
+                     {"overhead_seconds", n.overhead_seconds},
+                     {"waiting_seconds", n.waiting_seconds},
+                     {"messages_sent", n.messages_sent},
+                     {"bytes_sent", n.bytes_sent},
+                     {"messages_received", n.messages_received},
+                     {"peak_memory_bytes", n.peak_memory_bytes},
                      {"counts", counts_to_json(n.counts)}});
   j["nodes"] = nodes;
   j["host_seconds"] = result.host_seconds;

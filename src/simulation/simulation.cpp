@@ -1,6 +1,7 @@
 #include "simulation/simulation.h"
 
 #include <chrono>
+#include <deque>
 #include <memory>
 #include <numeric>
 #include <simgrid/s4u/Actor.hpp>
@@ -8,7 +9,9 @@
 #include <xbt/log.h>
 
 #include "machine/hypercube.h"
+#include "nodes/memory_plan.h"
 #include "nodes/radiosity_processor.h"
+#include "nodes/visibility_processor.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -20,22 +23,58 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
   if (r < 1) throw InputError("--R " + std::to_string(r) + ": at least one radiosity processor is needed");
   if (v < 0) throw InputError("--V " + std::to_string(v) + ": must be 0 or more");
   if (long(r) * (v + 1) > platform.node_count())
-    throw InputError(rv + " needs " + std::to_string(long(r) * (v + 1)) + " nodes; the platform has " +
-                     std::to_string(platform.node_count()));
+    throw InputError(rv + " needs R x (V + 1) = " + std::to_string(long(r) * (v + 1)) +
+                     " nodes; the platform has " + std::to_string(platform.node_count()));
   if (r > int(scene.patches.size()))
     throw InputError(rv + ": more radiosity processors than the scene's " +
                      std::to_string(scene.patches.size()) + " patches");
-  if (r != 1 || v != 0)
-    throw InputError(rv + ": parallel configurations are not supported yet (only R=1, V=0)");
   if (!is_valid_part_count(config.options.samples))
     throw InputError("--samples " + std::to_string(config.options.samples) +
                      ": must be a perfect square from 1 to 64 (e.g. 16 or 64)");
+  if (config.block_size < 1)
+    throw InputError("--block-size " + std::to_string(config.block_size) + ": must be at least 1");
 }
+
+namespace {
+
+// Everything the node programs of one run are made of; lives until the run is over.
+struct Programs {
+  std::deque<NodeRuntime> runtimes;
+  std::deque<RadiosityEngine> engines;
+  std::deque<Occluders> occluders;
+  std::deque<RadiosityProcessor> radiosity;
+  std::deque<VisibilityProcessor> visibility;
+};
+
+void collect_solution(const Scene& scene, const Programs& programs, SimulationResult& result) {
+  // Every element and patch is owned by exactly one radiosity processor.
+  result.element_radiosity.assign(scene.elements.size(), Rgb(0.0));
+  result.patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
+  for (const RadiosityEngine& engine : programs.engines) {
+    for (int e : engine.owned_elements()) result.element_radiosity[e] = engine.element_radiosity(e);
+    for (int p : engine.owned_patches()) result.patch_radiosity[p] = engine.patch_radiosity(p);
+  }
+}
+
+}  // namespace
 
 SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
                                 const PlatformConfig& platform, const CostModel& costs) {
   const auto host_start = std::chrono::steady_clock::now();
   check_configuration(scene, config, platform);
+  SimulationResult result;
+  const int R = config.radiosity_processors, V = config.visibility_processors;
+  const ProgramSetup setup{scene,           Placement{R, V},     config.options,
+                           scene.emitted_power(), config.block_size, config.pipelined};
+  const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
+
+  // Memory: every node's modeled bytes against its capacity, before anything runs.
+  const std::vector<NodeMemory> memory = plan_memory(setup, owned, costs);
+  for (const NodeMemory& m : memory)
+    if (config.memory_cap && m.bytes > platform.node_memory && result.status == "ok") {
+      result.status = "out_of_memory";
+      result.out_of_memory = {m.node, m.role, m.bytes, platform.node_memory};
+    }
 
   int argc = 1;
   char program[] = "simulate";
@@ -45,30 +84,54 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   configure_network_model(engine);
   const std::vector<simgrid::s4u::Host*> hosts = build_hypercube(platform);
 
-  // R = 1, V = 0: the sequential program on node 0 (section 2.2 with one processor).
+  Programs programs;
   std::vector<int> all_patches(scene.patches.size());
   std::iota(all_patches.begin(), all_patches.end(), 0);
-  RadiosityEngine radiosity(scene, all_patches);
-  const Occluders occluders(scene, all_patches, config.options.ray_policy);
-  NodeRuntime runtime(0, "radiosity", platform, costs);
-  RadiosityProcessor processor(runtime, radiosity, occluders, config.options);
-  simgrid::s4u::Actor::create("radiosity-0", hosts[0], [&processor] { processor.run(); });
-  engine.run();
-
-  SimulationResult result;
-  result.simulated_seconds = simgrid::s4u::Engine::get_clock();
-  result.converged = processor.converged();
-  for (const IterationRecord& it : processor.iterations()) {
-    result.seconds_per_iteration.push_back(it.end - it.start);
-    result.shooters.push_back(it.shooter);
+  std::vector<TraceEvent>* trace = config.record_trace ? &result.trace : nullptr;
+  for (const NodeMemory& m : memory) {
+    programs.runtimes.emplace_back(m.node, m.role, m.rank, platform, costs, trace);
+    programs.runtimes.back().set_memory(m.bytes);
   }
-  result.iterations = int(processor.iterations().size());
-  for (int p = 0; p < int(scene.patches.size()); ++p)
-    result.patch_radiosity.push_back(radiosity.patch_radiosity(p));
-  for (int e = 0; e < int(scene.elements.size()); ++e)
-    result.element_radiosity.push_back(radiosity.element_radiosity(e));
-  result.nodes.push_back(runtime.stats());
-  for (const NodeStats& node : result.nodes) result.counts += node.counts;
+  if (result.status == "ok") {
+    // The occluder sets are read-only and the same for every group: built once, shared.
+    if (V == 0) programs.occluders.emplace_back(scene, all_patches, config.options.ray_policy);
+    for (int j = 0; j < V; ++j)
+      programs.occluders.emplace_back(scene, visibility_share(scene, V, j), config.options.ray_policy);
+    const Occluders* all = V == 0 ? &programs.occluders.front() : nullptr;
+    int next_runtime = 0;
+    for (int rank = 0; rank < R; ++rank) {
+      NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
+      RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[rank]);
+      RadiosityProcessor& rp =
+          programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
+      simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
+                                  hosts[setup.placement.radiosity_node(rank)], [&rp] { rp.run(); });
+      for (int j = 0; j < V; ++j) {
+        const Occluders& share = programs.occluders[std::size_t(j)];
+        VisibilityProcessor& vp =
+            programs.visibility.emplace_back(setup, programs.runtimes[next_runtime++], share);
+        simgrid::s4u::Actor::create(
+            "visibility-" + std::to_string(rank) + "." + std::to_string(j),
+            hosts[setup.placement.visibility_node(rank, j)], [&vp] { vp.run(); });
+      }
+    }
+    engine.run();
+    const RadiosityProcessor& master = programs.radiosity.front();
+    result.simulated_seconds = simgrid::s4u::Engine::get_clock();
+    result.converged = master.converged();
+    result.shooters = master.shooters();
+    result.iterations = int(master.shooters().size());
+    double previous = 0.0;
+    for (double end : master.iteration_ends()) {
+      result.seconds_per_iteration.push_back(end - previous);
+      previous = end;
+    }
+    collect_solution(scene, programs, result);
+  }
+  for (const NodeRuntime& runtime : programs.runtimes) {
+    result.nodes.push_back(runtime.stats());
+    result.counts += runtime.stats().counts;
+  }
   result.host_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - host_start).count();
   return result;

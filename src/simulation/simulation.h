@@ -15,17 +15,29 @@
 namespace ncube {
 
 struct SimulationConfig {
-  int radiosity_processors = 1;  // R
+  int radiosity_processors = 1;   // R
   int visibility_processors = 0;  // V, per radiosity processor
   ProgressiveOptions options;
+  int block_size = 100;           // visibility points per message
+  bool pipelined = false;         // send the next block before using this block's answers
+  bool memory_cap = true;         // false: report the memory needed, never stop for it
+  bool record_trace = false;
   std::string platform_file;
   std::string cost_model_file;
 
   int node_count() const { return radiosity_processors * (visibility_processors + 1); }
 };
 
+struct OutOfMemory {
+  int node = -1;
+  std::string role;
+  double needed_bytes = 0.0;
+  double available_bytes = 0.0;
+};
+
 struct SimulationResult {
-  std::string status = "ok";
+  std::string status = "ok";  // or "out_of_memory"
+  OutOfMemory out_of_memory;  // when status is "out_of_memory"
   int iterations = 0;
   bool converged = false;
   double simulated_seconds = 0.0;
@@ -34,7 +46,8 @@ struct SimulationResult {
   std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
   std::vector<Rgb> element_radiosity;  // for rendering
   WorkCounts counts;                   // all nodes together
-  std::vector<NodeStats> nodes;
+  std::vector<NodeStats> nodes;        // in node order
+  std::vector<TraceEvent> trace;       // when config.record_trace
   double host_seconds = 0.0;
 };
 

@@ -9,6 +9,7 @@
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
 #include "simulation/result_file.h"
+#include "simulation/trace_file.h"
 #include "tools/simulate_options.h"
 #include "util/input_error.h"
 
@@ -23,6 +24,10 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
               config.radiosity_processors, config.visibility_processors, config.node_count(),
               config.options.samples);
   std::printf("status                %s\n", r.status.c_str());
+  if (r.status == "out_of_memory")
+    std::printf("                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
+                r.out_of_memory.node, r.out_of_memory.role.c_str(), r.out_of_memory.needed_bytes,
+                r.out_of_memory.available_bytes);
   std::printf("iterations            %d (%s)\n", r.iterations,
               r.converged ? "converged" : "not converged");
   std::printf("simulated seconds     %.3f in all, %.3f per iteration\n", r.simulated_seconds,
@@ -49,6 +54,14 @@ int main(int argc, char** argv) {
     if (!options.json_file.empty())
       ncube::write_file_atomically(options.json_file,
                                    ncube::result_to_json(scene, options.config, result).dump(1) + "\n");
+    if (!options.trace_file.empty())
+      ncube::write_file_atomically(options.trace_file, ncube::trace_to_json(result));
+    if (result.status == "out_of_memory") {
+      std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
+                   result.out_of_memory.node, result.out_of_memory.role.c_str(),
+                   result.out_of_memory.needed_bytes, result.out_of_memory.available_bytes);
+      return ncube::kExitOutOfMemory;
+    }
     if (!options.image_file.empty())
       ncube::write_png(ncube::render_solution(scene, scene.camera, result.element_radiosity,
                                               options.image_width, options.image_height),

@@ -56,12 +56,23 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "section 2.2) or first-blocker")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "first-blocker"}));
+  app.add_option("--block-size", config.block_size,
+                 "visibility points per message to a visibility processor (section 3)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  app.add_flag("--pipelined", config.pipelined,
+               "send the next block of points before using the answers of this one");
+  bool unlimited_memory = false;
+  app.add_flag("--unlimited-memory", unlimited_memory,
+               "report each node's memory but never stop for lack of it");
   app.add_option("--platform", config.platform_file, "machine description")
       ->capture_default_str();
   app.add_option("--cost-model", config.cost_model_file, "flops per counted operation")
       ->capture_default_str();
   app.add_option("--json", options.json_file, "write the result file here");
   app.add_option("--image", options.image_file, "render the solution to this PNG file");
+  app.add_option("--trace", options.trace_file,
+                 "write every node's timeline as a Chrome trace-event file (Perfetto)");
   app.add_option("--image-width", options.image_width, "picture width in pixels")
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));
@@ -79,6 +90,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     std::cerr << "simulate: " << e.what() << "\n(see simulate --help)\n";
     return kExitBadInput;
   }
+  config.memory_cap = !unlimited_memory;
+  config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
   options.scene_file = resolve_scene_path(options.scene_file);

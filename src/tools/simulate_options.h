@@ -12,6 +12,7 @@ struct SimulateOptions {
   SimulationConfig config;
   std::string json_file;   // empty: no result file
   std::string image_file;  // empty: no picture
+  std::string trace_file;  // empty: no timeline
   int image_width = 800;
   int image_height = 600;
   bool quiet = false;

@@ -1,0 +1,54 @@
+#include "nodes/collectives.h"
+
+namespace ncube {
+
+int ShooterSelection::levels() const {
+  int levels = 0;
+  while ((1 << levels) < placement_.radiosity_processors) ++levels;
+  return levels;
+}
+
+ShooterChoice ShooterSelection::reduce_to_master(const ShooterChoice& local_best) {
+  ShooterChoice best = local_best;
+  const int R = placement_.radiosity_processors;
+  for (int d = 0; d < levels(); ++d) {
+    const int bit = 1 << d;
+    if (rank_ & bit) {  // pass the subtree's best to the parent, then done
+      auto message = std::make_unique<Message>();
+      message->kind = MessageKind::kCandidate;
+      message->candidate = best;
+      runtime_.send(placement_.radiosity_node(rank_ - bit), std::move(message),
+                    runtime_.costs().shooter_record_bytes);
+      return best;
+    }
+    if (rank_ + bit < R) {  // a child's subtree best arrives
+      const std::unique_ptr<Message> message = runtime_.receive({MessageKind::kCandidate});
+      WorkCounts compare;
+      compare.shooter_candidates = 1;
+      runtime_.compute(compare);
+      if (message->candidate.better_than(best)) best = message->candidate;
+    }
+  }
+  return best;
+}
+
+ShooterChoice ShooterSelection::broadcast_from_master(const ShooterChoice& decision) {
+  ShooterChoice result = decision;
+  int top = levels();  // the master sends on every level
+  if (rank_ != 0) {
+    result = runtime_.receive({MessageKind::kShooter, MessageKind::kStop})->candidate;
+    top = __builtin_ctz(unsigned(rank_));  // levels below this rank's lowest set bit
+  }
+  for (int d = top - 1; d >= 0; --d) {
+    const int child = rank_ + (1 << d);
+    if (child >= placement_.radiosity_processors) continue;
+    auto message = std::make_unique<Message>();
+    message->kind = result.patch < 0 ? MessageKind::kStop : MessageKind::kShooter;
+    message->candidate = result;
+    runtime_.send(placement_.radiosity_node(child), std::move(message),
+                  runtime_.costs().shooter_record_bytes);
+  }
+  return result;
+}
+
+}  // namespace ncube

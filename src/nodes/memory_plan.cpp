@@ -1,0 +1,41 @@
+#include "nodes/memory_plan.h"
+
+namespace ncube {
+
+std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
+                                    const std::vector<std::vector<int>>& owned_patches,
+                                    const CostModel& costs) {
+  const Placement& p = setup.placement;
+  const int V = p.visibility_processors;
+  const double patches = double(setup.scene.patches.size());
+  const double mask_bytes = (setup.options.samples + 7) / 8;
+  const double block = setup.block_size;
+  const double in_flight = setup.pipelined ? 2.0 : 1.0;
+  // Two shooter records: the one being shot and the one being chosen.
+  const double records = 2.0 * costs.shooter_record_bytes;
+  std::vector<NodeMemory> nodes;
+  for (int rank = 0; rank < p.radiosity_processors; ++rank) {
+    double owned_elements = 0.0;
+    for (int patch : owned_patches[rank])
+      owned_elements += setup.scene.patches[patch].element_count();
+    const double owned = double(owned_patches[rank].size());
+    NodeMemory rp{p.radiosity_node(rank), "radiosity", rank, costs.node_reserve_bytes + records};
+    // Section 2.2: without visibility processors every radiosity processor holds the
+    // geometry of all patches; section 3: with them, only its own.
+    rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes;
+    rp.bytes += owned * costs.patch_radiosity_bytes + owned_elements * costs.element_bytes;
+    if (V > 0)  // a block of points out, V blocks of answers in
+      rp.bytes += in_flight * block * (costs.point_bytes + V * mask_bytes);
+    nodes.push_back(rp);
+    for (int j = 0; j < V; ++j) {
+      const double share = double(visibility_share(setup.scene, V, j).size());
+      NodeMemory vp{p.visibility_node(rank, j), "visibility", rank,
+                    costs.node_reserve_bytes + records + share * costs.patch_geometry_bytes +
+                        in_flight * block * (costs.point_bytes + mask_bytes)};
+      nodes.push_back(vp);
+    }
+  }
+  return nodes;
+}
+
+}  // namespace ncube

@@ -1,0 +1,26 @@
+// What each node holds, in the modeled bytes of cost_model.json, checked against the
+// node's memory (platforms/ncube2.json). The programs allocate everything when they start
+// (there is no adaptive subdivision), so the peak is known before the first iteration.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "machine/cost_model.h"
+#include "nodes/program_setup.h"
+
+namespace ncube {
+
+struct NodeMemory {
+  int node = 0;
+  std::string role;
+  int rank = 0;
+  double bytes = 0.0;
+};
+
+// One entry per node in use, in node order.
+std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
+                                    const std::vector<std::vector<int>>& owned_patches,
+                                    const CostModel& costs);
+
+}  // namespace ncube

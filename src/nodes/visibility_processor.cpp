@@ -1,0 +1,37 @@
+#include "nodes/visibility_processor.h"
+
+namespace ncube {
+
+VisibilityProcessor::VisibilityProcessor(const ProgramSetup& setup, NodeRuntime& runtime,
+                                         const Occluders& share)
+    : setup_(setup), runtime_(runtime), share_(share) {}
+
+void VisibilityProcessor::run() {
+  runtime_.start();
+  Shooter shooter;
+  const double mask_bytes = (setup_.options.samples + 7) / 8;
+  for (;;) {
+    const std::unique_ptr<Message> message =
+        runtime_.receive({MessageKind::kShooter, MessageKind::kPoints, MessageKind::kStop});
+    if (message->kind == MessageKind::kStop) break;
+    if (message->kind == MessageKind::kShooter) {
+      shooter = make_shooter(setup_.scene, message->candidate.patch, message->candidate.unshot,
+                             setup_.options.samples);
+      continue;
+    }
+    // A block of points: one ray per point and shooter part, against this share's patches.
+    auto answer = std::make_unique<Message>();
+    answer->kind = MessageKind::kAnswers;
+    answer->block = message->block;
+    WorkCounts work;
+    for (std::size_t k = 0; k < message->points.size(); ++k)
+      answer->masks.push_back(
+          share_.unblocked_parts(message->points[k], message->point_patches[k], shooter, work));
+    runtime_.compute(work);
+    const double bytes = double(answer->masks.size()) * mask_bytes;
+    runtime_.send(message->from, std::move(answer), bytes);
+  }
+  runtime_.finish();
+}
+
+}  // namespace ncube
