@@ -32,7 +32,23 @@ expect_exit 2 "non-integer R" -- scene0.json --R 2.5
 expect_exit 2 "R zero" -- scene0.json --R 0
 expect_exit 2 "negative V" -- scene0.json --V -1
 expect_exit 2 "samples not a square" -- scene0.json --samples 20
-expect_exit 2 "parallel not yet" -- scene0.json --R 8 --V 7
+expect_exit 2 "more nodes than the platform" -- scene0.json --R 8 --V 8
+grep -q "72" "$work/stderr" || fail "too many nodes: message does not give R x (V + 1)"
+expect_exit 2 "more radiosity processors than patches" -- scene0.json --R 53
+expect_exit 2 "non-integer V" -- scene0.json --V 1.5
+expect_exit 2 "block size zero" -- scene0.json --V 1 --block-size 0
+echo '{"parameters": {}}' >"$work/platform.json"
+expect_exit 2 "inconsistent platform" -- scene0.json --platform "$work/platform.json"
+grep -q "dimension" "$work/stderr" || fail "inconsistent platform: message does not name the parameter"
+expect_exit 2 "missing cost model" -- scene0.json --cost-model "$work/none.json"
+
+# Out of memory (section 5: scene3 with R=4, V=15 does not fit): exit 3, and the result
+# file says so, naming the node.
+"$simulate" scene3.json --R 4 --V 15 --json "$work/oom.json" >/dev/null 2>"$work/stderr"
+[ $? -eq 3 ] || fail "out of memory: exit code is not 3"
+grep -q '"status": "out_of_memory"' "$work/oom.json" || fail "out of memory: status not in result file"
+grep -q '"needed_bytes"' "$work/oom.json" || fail "out of memory: needed bytes not reported"
+grep -q "radiosity" "$work/stderr" || fail "out of memory: message does not name the role"
 expect_exit 2 "missing scene" -- "$work/nothing.json"
 echo '{"name": "x", "patches": [' >"$work/broken.json"
 expect_exit 2 "malformed scene" -- "$work/broken.json"
@@ -47,6 +63,11 @@ expect_exit 2 "missing platform" -- scene0.json --platform "$work/none.json"
 "$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b"
 strip() { grep -v '"host_seconds"' "$1"; }
 cmp -s <(strip "$work/a.json") <(strip "$work/b.json") || fail "result files differ"
+# Also for a parallel configuration with V + 1 not a power of two, and its trace.
+"$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/c.json" --trace "$work/c.trace" --quiet || fail "run c"
+"$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/d.json" --quiet || fail "run d"
+cmp -s <(strip "$work/c.json") <(strip "$work/d.json") || fail "parallel result files differ"
+grep -q '"traceEvents"' "$work/c.trace" || fail "trace is not a trace-event file"
 [ "$(head -c 4 "$work/a.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "image is not a PNG"
 
 [ "$failures" -eq 0 ] && echo "cli_test: all passed"
