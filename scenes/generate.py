@@ -150,12 +150,15 @@ class Builder:
 
     # -- building blocks
 
-    def room_shell(self, size, nx, nz, floor, ceiling, walls):
+    def room_shell(self, size, nx, nz, floor, ceiling, walls, wx=None, wz=None, rows=1):
         """The room [0,W] x [0,H] x [0,D], all surfaces facing inwards. Floor and ceiling are
-        cut into nx x nz panels, the walls along x into nx and those along z into nz strips
-        (keeps every patch's subdivision at most MAX_SUBDIVISION). walls: colours of the walls
-        x=0, x=W, z=0, z=D."""
+        cut into nx x nz panels; the walls along x (z = 0, z = D) into wx and those along z
+        (x = 0, x = W) into wz vertical strips (default nx and nz), each strip into `rows`
+        panels one above the other. Keeps every patch's element count small (see
+        PATCH_SHARE). walls: colours of the walls x=0, x=W, z=0, z=D."""
         W, H, D = size
+        wx = nx if wx is None else wx
+        wz = nz if wz is None else wz
         self.room = ((0.0, 0.0, 0.0), (W, H, D))
         chk = ("in", (W / 2.0, H / 2.0, D / 2.0))
         xs = [clean(W * i / nx) for i in range(nx + 1)]
@@ -168,14 +171,25 @@ class Builder:
             for k in range(nz):
                 self.axis_rect(1, -1, H, (xs[i], 0, zs[k]), (xs[i + 1], 0, zs[k + 1]), ceiling,
                                check=chk)
-        for k in range(nz):
-            self.axis_rect(0, +1, 0.0, (0, 0, zs[k]), (0, H, zs[k + 1]), walls[0], check=chk)
-        for k in range(nz):
-            self.axis_rect(0, -1, W, (0, 0, zs[k]), (0, H, zs[k + 1]), walls[1], check=chk)
-        for i in range(nx):
-            self.axis_rect(2, +1, 0.0, (xs[i], 0, 0), (xs[i + 1], H, 0), walls[2], check=chk)
-        for i in range(nx):
-            self.axis_rect(2, -1, D, (xs[i], 0, 0), (xs[i + 1], H, 0), walls[3], check=chk)
+        xs = [clean(W * i / wx) for i in range(wx + 1)]
+        zs = [clean(D * k / wz) for k in range(wz + 1)]
+        ys = [clean(H * j / rows) for j in range(rows + 1)]
+        for k in range(wz):
+            for j in range(rows):
+                self.axis_rect(0, +1, 0.0, (0, ys[j], zs[k]), (0, ys[j + 1], zs[k + 1]), walls[0],
+                               check=chk)
+        for k in range(wz):
+            for j in range(rows):
+                self.axis_rect(0, -1, W, (0, ys[j], zs[k]), (0, ys[j + 1], zs[k + 1]), walls[1],
+                               check=chk)
+        for i in range(wx):
+            for j in range(rows):
+                self.axis_rect(2, +1, 0.0, (xs[i], ys[j], 0), (xs[i + 1], ys[j + 1], 0), walls[2],
+                               check=chk)
+        for i in range(wx):
+            for j in range(rows):
+                self.axis_rect(2, -1, D, (xs[i], ys[j], 0), (xs[i + 1], ys[j + 1], 0), walls[3],
+                               check=chk)
 
     def box(self, lo, hi, refl, omit=(), label=""):
         """Axis-aligned box, faces outwards; `omit` names faces that are hidden (touching the

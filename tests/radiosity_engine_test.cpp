@@ -119,3 +119,29 @@ TEST(RadiosityEngine, ShootsTheBrightestPatchFirst) {
 
 }  // namespace
 }  // namespace ncube
+
+namespace ncube {
+namespace {
+
+TEST(RadiosityEngine, TracingFromReceiversThatCannotSeeTheShooterChangesWorkNotLight) {
+  // A light in the middle of a box facing down: the ceiling and the upper walls cannot see
+  // its front. Tracing their rays anyway costs rays but adds no light.
+  Scene s = closed_box(6, 0.5, 0.0, 0.0);
+  Patch light = face({0.4, 0.5, 0.4}, {0.2, 0, 0}, {0, 0, 0.2}, 1, 0.0, 5.0);  // facing down
+  s.patches.push_back(light);
+  s.build_elements();
+  ProgressiveOptions skip, trace_all;
+  skip.max_iterations = trace_all.max_iterations = 1;  // the light shoots
+  trace_all.skip_facing_away = false;
+  RadiosityEngine a(s, all_patches(s)), b(s, all_patches(s));
+  const Occluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
+  const ProgressiveRun run_a = run_progressive(a, occluders, skip);
+  const ProgressiveRun run_b = run_progressive(b, occluders, trace_all);
+  EXPECT_GT(run_b.total.rays, run_a.total.rays);
+  for (int e = 0; e < int(s.elements.size()); ++e)
+    ASSERT_EQ(a.element_radiosity(e), b.element_radiosity(e)) << e;
+  EXPECT_EQ(a.element_radiosity(s.patches[1].first_element), Rgb(0.0));  // ceiling stays dark
+}
+
+}  // namespace
+}  // namespace ncube

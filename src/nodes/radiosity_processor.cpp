@@ -64,7 +64,7 @@ void RadiosityProcessor::shoot(const Shooter& shooter) {
   // Section 2.2: for each receiving element, trace a ray to every part of the shooter and
   // intersect it with all other patches; add the light of the visible parts.
   WorkCounts work;
-  const std::vector<int> receivers = engine_.receivers(shooter, work);
+  const std::vector<int> receivers = engine_.receivers(shooter, setup_.options.skip_facing_away, work);
   std::vector<PartMask> visible(receivers.size());
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     const Element& element = setup_.scene.elements[receivers[k]];
@@ -79,7 +79,7 @@ void RadiosityProcessor::shoot_with_visibility_processors(const Shooter& shooter
   // group; each answers with one bit vector per point (bit set: that part of the shooter is
   // not blocked by its share of the patches); the AND of the V answers is the visibility.
   WorkCounts facing;
-  const std::vector<int> receivers = engine_.receivers(shooter, facing);
+  const std::vector<int> receivers = engine_.receivers(shooter, setup_.options.skip_facing_away, facing);
   runtime_.compute(facing);
   const int V = setup_.placement.visibility_processors;
   const int B = setup_.block_size;

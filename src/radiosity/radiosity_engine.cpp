@@ -1,6 +1,7 @@
 #include "radiosity/radiosity_engine.h"
 
 #include <bitset>
+#include <glm/geometric.hpp>
 
 #include "radiosity/form_factor.h"
 
@@ -32,12 +33,14 @@ ShooterChoice RadiosityEngine::best_shooter(WorkCounts& counts) const {
   return best;
 }
 
-std::vector<int> RadiosityEngine::receivers(const Shooter& shooter, WorkCounts& counts) const {
+std::vector<int> RadiosityEngine::receivers(const Shooter& shooter, bool skip_facing_away,
+                                            WorkCounts& counts) const {
   std::vector<int> result;
   for (int e : owned_elements_) {
     const Element& element = scene_.elements[e];
     if (element.patch == shooter.patch) continue;  // a patch does not light itself
-    if (faces_shooter(element.centre, scene_.patches[element.patch].normal, shooter))
+    if (!skip_facing_away ||
+        faces_shooter(element.centre, scene_.patches[element.patch].normal, shooter))
       result.push_back(e);
   }
   counts.receivers += owned_elements_.size();
@@ -49,12 +52,15 @@ void RadiosityEngine::gather(const Shooter& shooter, const std::vector<int>& rec
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     const Element& element = scene_.elements[receivers[k]];
     const Patch& patch = scene_.patches[element.patch];
+    // The shooter emits from its front only: a receiver behind its plane gets nothing.
+    const PartMask mask =
+        glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0 ? masks[k] : 0;
     double form_factor = 0.0;
     for (int part = 0; part < shooter.part_count; ++part)
-      if (masks[k] & (PartMask(1) << part))
+      if (mask & (PartMask(1) << part))
         form_factor += point_to_polygon_form_factor(element.centre, patch.normal,
                                                     shooter.parts[part]);
-    counts.form_factors += std::bitset<64>(masks[k]).count();
+    counts.form_factors += std::bitset<64>(mask).count();
     // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
     const Rgb gained = patch.reflectance * shooter.unshot * form_factor;
     radiosity_[receivers[k]] += gained;
@@ -88,7 +94,7 @@ ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occlude
     }
     if (options.max_iterations >= 0 && run.iterations >= options.max_iterations) break;
     const Shooter shooter = make_shooter(engine.scene(), best.patch, best.unshot, options.samples);
-    const std::vector<int> receivers = engine.receivers(shooter, counts);
+    const std::vector<int> receivers = engine.receivers(shooter, options.skip_facing_away, counts);
     std::vector<PartMask> masks(receivers.size());
     for (std::size_t k = 0; k < receivers.size(); ++k) {
       const Element& e = engine.scene().elements[receivers[k]];

@@ -31,8 +31,11 @@ class RadiosityEngine {
 
   // Step 1 of section 2.2: the owned patch with the most unshot power.
   ShooterChoice best_shooter(WorkCounts& counts) const;
-  // The owned elements that can receive light from the shooter: not on it and facing it.
-  std::vector<int> receivers(const Shooter& shooter, WorkCounts& counts) const;
+  // The owned elements that receive from the shooter: all but the shooter's own, and with
+  // `skip_facing_away` only those that can see its front (the others get no rays; their
+  // form factor is zero anyway).
+  std::vector<int> receivers(const Shooter& shooter, bool skip_facing_away,
+                             WorkCounts& counts) const;
   // Adds the shooter's light to each receiver through the parts its mask marks visible:
   // form factor = sum of the point-to-part contour integrals (section 2.2).
   void gather(const Shooter& shooter, const std::vector<int>& receivers,
@@ -58,6 +61,7 @@ class RadiosityEngine {
 struct ProgressiveOptions {
   int samples = 16;                    // M, parts of the shooter
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
+  bool skip_facing_away = true;         // receivers that cannot see the shooter trace no rays
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged
 };

@@ -31,6 +31,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"nodes", config.node_count()},
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
+                 {"skip_facing_away", config.options.skip_facing_away},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},
                  {"block_size", config.block_size},
