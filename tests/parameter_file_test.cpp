@@ -1,0 +1,93 @@
+#include "machine/parameter_file.h"
+
+#include <cstdio>
+#include <fstream>
+#include <gtest/gtest.h>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
+
+std::string write_temp(const std::string& text) {
+  const std::string path = ::testing::TempDir() + "params.json";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    load_platform_config(write_temp(text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kValid = R"({"description": "x", "parameters": {
+  "dimension": {"value": 3}, "node_speed": {"value": 1e6}, "node_memory": {"value": 1000},
+  "link_bandwidth": {"value": 1e6}, "hop_latency": {"value": 1e-6},
+  "send_overhead": {"value": 1e-5}, "receive_overhead": {"value": 1e-5}}})";
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string text = kValid;
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+TEST(ParameterFile, ReadsTheShippedPlatformAndCostModel) {
+  const PlatformConfig p = load_platform_config(repo("platforms/ncube2.json"));
+  EXPECT_EQ(p.node_count(), 64);
+  EXPECT_DOUBLE_EQ(p.node_speed, 2.5e6);
+  EXPECT_DOUBLE_EQ(p.node_memory, 4194304);
+  const CostModel c = load_cost_model(repo("platforms/cost_model.json"));
+  EXPECT_GT(c.flops_per_ray_patch_test, 0.0);
+  EXPECT_GT(c.element_bytes, 0.0);
+}
+
+TEST(ParameterFile, ValidFileLoads) { EXPECT_EQ(error_of(kValid), ""); }
+
+TEST(ParameterFile, NamesTheParameterThatIsWrong) {
+  EXPECT_NE(error_of(with(R"("dimension": {"value": 3})", R"("dimension": {"value": 2.5})"))
+                .find("\"dimension\": value 2.5 must be a whole number"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("dimension": {"value": 3})", R"("dimension": {"value": 40})"))
+                .find("\"dimension\": value 40 is above"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("node_speed": {"value": 1e6})", R"("node_speed": {"value": -1})"))
+                .find("\"node_speed\": value -1 is below"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("node_speed": {"value": 1e6})", R"("node_sped": {"value": 1e6})"))
+                .find("\"node_speed\": missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("hop_latency": {"value": 1e-6})", R"("hop_latency": {"value": "fast"})"))
+                .find("\"hop_latency\": expected"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("description": "x",)", R"("description": "x", "extra": 1,)"))
+                .find("unknown key \"extra\""),
+            std::string::npos);
+  EXPECT_NE(error_of(with(R"("hop_latency": {"value": 1e-6})", R"("hop_latency": {"value": 1e-6, "units": "s"})"))
+                .find("unknown key \"units\""),
+            std::string::npos);
+  EXPECT_NE(error_of("{ not json").find("malformed JSON"), std::string::npos);
+  EXPECT_NE(error_of(std::string(kValid).substr(0, std::string(kValid).size() - 2) +
+                     R"(, "turbo": {"value": 1}}})")
+                .find("unknown parameter \"turbo\""),
+            std::string::npos);
+}
+
+TEST(ParameterFile, MissingFileIsNamed) {
+  try {
+    load_cost_model("/nonexistent/cost.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/cost.json: cannot read file"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace ncube
