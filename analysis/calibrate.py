@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Fits the free parameters of the cost model on the calibration cells (analysis/calibration.json).
 
 The simulated seconds per iteration of the calibration cells are (nearly) affine in the fitted

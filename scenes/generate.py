@@ -32,6 +32,18 @@ TARGETS = {
 }
 
 MAX_SUBDIVISION = 64  # largest nu or nv of any patch
+
+# The simulator gives whole patches to up to 64 radiosity processors, each about the same
+# number of elements (largest patches first, each to the processor with the fewest elements so
+# far; paper, section 4). A patch cannot be split, so in the scenes run with up to 64 of them no
+# patch may hold more than 1/64 of the scene's elements; the room surfaces are cut into panels
+# of about half that, so that the 64-way partition balances within a few percent.
+# scene0 (Table 5) is run with at most 52 processors, 32 of them with V = 0 besides R = 52 (one
+# patch each); its patches hold at most 1/32 of its elements.
+PARTITION_WAYS = {"scene0": 32, "scene1": 64, "scene2": 64, "scene3": 64}
+# Largest / mean elements per processor of that partition; scene0's 36 elements per processor
+# on average leave less room (a patch of up to 36 and a small one).
+MAX_IMBALANCE = {"scene0": 1.15, "scene1": 1.10, "scene2": 1.10, "scene3": 1.10}
 LIGHT_EMISSION = (10.0, 10.0, 9.0)  # ceiling panels of scenes 0-3, slightly warm white
 
 # ------------------------------------------------------------------------------------------
@@ -155,7 +167,7 @@ class Builder:
         cut into nx x nz panels; the walls along x (z = 0, z = D) into wx and those along z
         (x = 0, x = W) into wz vertical strips (default nx and nz), each strip into `rows`
         panels one above the other. Keeps every patch's element count small (see
-        PATCH_SHARE). walls: colours of the walls x=0, x=W, z=0, z=D."""
+        PARTITION_WAYS). walls: colours of the walls x=0, x=W, z=0, z=D."""
         W, H, D = size
         wx = nx if wx is None else wx
         wz = nz if wz is None else wz
@@ -290,6 +302,16 @@ def table(w, d, h, top, legs, t=0.04, leg=0.05, inset=0.04):
     return pieces
 
 
+def panel_table(w, d, h, top, sides, t=0.04, board=0.04, inset=0.04):
+    """Top slab (6 faces) on two end boards (4 sides each) instead of legs: 14 patches. w along
+    x, d along z; the boards stand across the ends, `inset` in from the top's edges."""
+    pieces = [((-w / 2, h - t, -d / 2), (w / 2, h, d / 2), top, ())]
+    for x0 in (-w / 2 + inset, w / 2 - inset - board):
+        pieces.append(((x0, 0.0, -d / 2 + inset), (x0 + board, h - t, d / 2 - inset), sides,
+                       ("-y", "+y")))
+    return pieces
+
+
 def chair(seat, frame_colour, sw=0.44, sd=0.42, sh=0.46, t=0.04, leg=0.035, bh=0.44, bt=0.03):
     """Seat slab (6) on four legs (4 each) with a backrest at +z (5): 27 patches."""
     pieces = [((-sw / 2, sh - t, -sd / 2), (sw / 2, sh, sd / 2), seat, ())]
@@ -301,6 +323,12 @@ def chair(seat, frame_colour, sw=0.44, sd=0.42, sh=0.46, t=0.04, leg=0.035, bh=0
                            ("-y", "+y")))
     pieces.append(((-sw / 2, sh, sd / 2 - bt), (sw / 2, sh + bh, sd / 2), seat, ("-y",)))
     return pieces
+
+
+def upholstered_chair(colour, sw=0.46, sd=0.46, sh=0.46, bh=0.44, bt=0.06):
+    """Skirted seat block down to the floor (5 faces) with a backrest at +z (5): 10 patches."""
+    return [((-sw / 2, 0.0, -sd / 2), (sw / 2, sh, sd / 2), colour, ("-y",)),
+            ((-sw / 2, sh, sd / 2 - bt), (sw / 2, sh + bh, sd / 2), colour, ("-y",))]
 
 
 def sofa(w, d, colour, cushion, against_wall=True, seat_h=0.42, back_h=0.82, arm_w=0.18,
@@ -364,24 +392,29 @@ def plant():
             ((-0.3, 0.35, -0.3), (0.3, 1.1, 0.3), LEAVES, ())]
 
 
-def desk_and_chair(b, x, z, desk_colour, seat_colour, front="-z"):
-    """A student's desk (0.7 x 0.5) with the chair behind it, the sitter looking `front`:
-    49 patches. (x, z) is the desk centre."""
+def desk_and_chair(b, x, z, desk_colour, seat_colour, front="-z", panels=False):
+    """A student's desk (0.7 x 0.5) on four steel legs (22 patches), or on two steel end
+    panels if `panels` (14), with the chair behind it, the sitter looking `front`: 49 or 41
+    patches. (x, z) is the desk centre."""
     f = Frame(x, z, front)
-    b.place(table(0.7, 0.5, 0.72, desk_colour, STEEL, leg=0.04), f, "desk")
+    if panels:
+        desk = panel_table(0.7, 0.5, 0.72, desk_colour, STEEL, board=0.03)
+    else:
+        desk = table(0.7, 0.5, 0.72, desk_colour, STEEL, leg=0.04)
+    b.place(desk, f, "desk")
     cx, cz = f.turn(0.0, 0.25 + 0.06 + 0.21)
     b.place(chair(seat_colour, STEEL), Frame(x + cx, z + cz, front), "chair")
 
 
-def table_with_chairs(b, x, z, w, d, top, legs, seat, frame_colour, per_side, label):
-    """A table w (x) by d (z) with `per_side` chairs along each long side: 22 + 54 * per_side
-    patches."""
+def table_with_chairs(b, x, z, w, d, top, legs, chair_pieces, per_side, label):
+    """A table w (x) by d (z) on four legs with `per_side` chairs (chair_pieces: a chair's
+    pieces, front -z) along each long side: 22 + 2 * per_side * (a chair's patches)."""
     b.place(table(w, d, 0.74, top, legs), Frame(x, z), label)
     for side, front in ((-1, "+z"), (1, "-z")):
         for i in range(per_side):
             cx = x - w / 2 + w * (i + 0.5) / per_side
             cz = z + side * (d / 2 + 0.06 + 0.21)
-            b.place(chair(seat, frame_colour), Frame(cx, cz, front), label + "-chair")
+            b.place(chair_pieces, Frame(cx, cz, front), label + "-chair")
 
 
 # ------------------------------------------------------------------------------------------
@@ -411,23 +444,24 @@ def scene1():
     """A furnished living and dining room."""
     b = Builder("scene1", min_edge=0.02)
     W, H, D = 8.0, 2.7, 6.0
-    b.room_shell((W, H, D), 1, 1, OAK_FLOOR, CEILING, [WARM_WALL] * 4)
+    b.room_shell((W, H, D), 5, 5, OAK_FLOOR, CEILING, [WARM_WALL] * 4, wx=6, wz=4, rows=2)
     for x in (2.0, 6.0):
         for z in (1.8, 4.2):
             b.light(x, z, 0.6, 0.6)
     # Dining corner: table with four chairs, sideboard, bookshelf.
-    table_with_chairs(b, 2.0, 3.0, 1.6, 0.9, WOOD, DARK_WOOD, RED_FABRIC, DARK_WOOD, 2,
+    table_with_chairs(b, 2.0, 3.0, 1.6, 0.9, WOOD, DARK_WOOD, upholstered_chair(RED_FABRIC), 2,
                       "dining")
     b.place(cabinet(1.6, 0.45, 0.85, DARK_WOOD), Frame(2.0, D - 0.225, "-z"), "sideboard")
     b.place(bookshelf(1.0, 0.35, 2.0, 3, BIRCH, books=2), Frame(0.175, 1.2, "+x"), "bookshelf")
     # Living corner: sofa, coffee table, armchair, television.
     b.place(sofa(2.2, 0.9, GREY_FABRIC, BLUE_FABRIC), Frame(6.0, D - 0.45, "-z"), "sofa")
-    b.place(table(1.0, 0.55, 0.42, BIRCH, BIRCH), Frame(6.0, 4.2), "coffee-table")
+    b.place(panel_table(1.0, 0.55, 0.42, BIRCH, BIRCH, board=0.03), Frame(6.0, 4.2),
+            "coffee-table")
     b.place(sofa(0.9, 0.85, GREEN_FABRIC, GREEN_FABRIC, against_wall=False),
             Frame(4.5, 4.2, "+x"), "armchair")
     b.place(tv_on_stand(), Frame(6.0, 0.225, "+z"), "tv")
     # Writing desk by the right wall.
-    b.place(table(1.2, 0.6, 0.74, WOOD, DARK_WOOD), Frame(W - 0.32, 1.5, "-x"), "desk")
+    b.place(panel_table(1.2, 0.6, 0.74, WOOD, DARK_WOOD), Frame(W - 0.32, 1.5, "-x"), "desk")
     b.place(chair(BLUE_FABRIC, DARK_WOOD), Frame(W - 0.88, 1.5, "+x"), "desk-chair")
     b.wall_panel("z0", 1.0, 1.9, 0.0, 2.05, DOOR)
     b.wall_panel("xW", 3.0, 4.4, 0.9, 2.2, WINDOW)
@@ -440,20 +474,24 @@ def scene2():
     """A classroom: fifteen desks with chairs, teacher's desk, blackboard, cabinets."""
     b = Builder("scene2", min_edge=0.02)
     W, H, D = 10.0, 3.2, 8.0
-    b.room_shell((W, H, D), 2, 2, LINOLEUM, CEILING, [OFF_WHITE, OFF_WHITE, OFF_WHITE,
-                                                        PALE_BLUE])
+    b.room_shell((W, H, D), 6, 5, LINOLEUM, CEILING, [OFF_WHITE, OFF_WHITE, OFF_WHITE,
+                                                        PALE_BLUE], rows=2)
     for z in (2.0, 4.3, 6.6):
         for x in (1.5, 3.8, 6.2, 8.5):
             b.light(x, z, 0.6, 1.2)
     seats = [ORANGE_PLASTIC, BLUE_PLASTIC, ORANGE_PLASTIC, BLUE_PLASTIC, ORANGE_PLASTIC]
     for row, z in enumerate((3.0, 4.6, 6.2)):
         for col, x in enumerate((1.6, 3.3, 5.0, 6.7, 8.4)):
-            desk_and_chair(b, x, z, BIRCH, seats[(col + row) % len(seats)])
+            desk_and_chair(b, x, z, BIRCH, seats[(col + row) % len(seats)], panels=True)
     b.place(table(1.4, 0.7, 0.76, WOOD, DARK_WOOD), Frame(5.0, 1.4), "teacher-desk")
     b.place(chair(RED_FABRIC, STEEL), Frame(5.0, 0.79, "+z"), "teacher-chair")
-    for x in (2.0, 5.0, 8.0):
+    for i, x in enumerate((2.0, 5.0, 8.0)):  # cabinets with a poster over each
         b.place(cabinet(1.2, 0.45, 1.1, WHITE_PAINT), Frame(x, D - 0.225, "-z"), "cabinet")
-    b.wall_panel("z0", 2.5, 7.5, 0.9, 2.1, BLACKBOARD)
+        b.wall_panel("zD", x - 0.4, x + 0.4, 1.45, 2.25, POSTERS[3 + i])
+    b.place(bookshelf(1.0, 0.35, 2.0, 3, BIRCH, books=1), Frame(3.5, D - 0.175, "-z"),
+            "bookshelf")
+    for u0, u1 in ((2.5, 4.15), (4.2, 5.8), (5.85, 7.5)):  # a blackboard in three panels
+        b.wall_panel("z0", u0, u1, 0.9, 2.1, BLACKBOARD)
     b.wall_panel("x0", 0.6, 1.6, 0.0, 2.1, DOOR)
     for z0 in (1.5, 3.8, 6.1):
         b.wall_panel("xW", z0, z0 + 1.5, 0.9, 2.6, WINDOW)
@@ -468,8 +506,8 @@ def scene3():
     a stage with a lectern, bookshelves, a lounge corner, four columns, 24 lights."""
     b = Builder("scene3", min_edge=0.02)
     W, H, D = 30.0, 5.0, 20.0
-    b.room_shell((W, H, D), 6, 4, CARPET, CEILING, [OFF_WHITE, OFF_WHITE, PALE_BLUE,
-                                                      OFF_WHITE])
+    b.room_shell((W, H, D), 6, 5, CARPET, CEILING, [OFF_WHITE, OFF_WHITE, PALE_BLUE,
+                                                      OFF_WHITE], wz=4, rows=2)
     for k in range(4):
         for i in range(6):
             b.light(2.5 + 5.0 * i, 2.5 + 5.0 * k, 1.2, 1.2)
@@ -486,16 +524,16 @@ def scene3():
     b.box((9.7, 0.4, 1.0), (10.3, 1.5, 1.5), DARK_WOOD, ("-y",), "lectern")
     # Group area (x > 21): three long tables with six chairs each.
     for z in (4.0, 10.0, 16.0):
-        table_with_chairs(b, 25.0, z, 2.4, 1.0, WOOD, DARK_WOOD, GREEN_FABRIC, STEEL, 3,
+        table_with_chairs(b, 25.0, z, 2.4, 1.0, WOOD, DARK_WOOD, chair(GREEN_FABRIC, STEEL), 3,
                           "group")
     # Bookshelves along the back wall, the first with books.
-    for i in range(10):
+    for i in range(9):
         b.place(bookshelf(1.0, 0.35, 2.0, 3, BIRCH, books=3 if i == 0 else 0),
                 Frame(1.5 + 1.1 * i, D - 0.175, "-z"), "bookshelf")
     # Lounge corner.
     b.place(sofa(2.2, 0.9, BLUE_FABRIC, BLUE_FABRIC), Frame(24.0, D - 0.45, "-z"), "sofa")
     b.place(sofa(2.2, 0.9, RED_FABRIC, RED_FABRIC), Frame(27.0, D - 0.45, "-z"), "sofa")
-    for x, z in ((29.5, 0.5), (29.5, 19.5), (15.0, 19.5)):
+    for x, z in ((29.5, 19.5), (15.0, 19.5)):
         b.place(plant(), Frame(x, z), "plant")
     b.wall_panel("x0", 0.6, 2.4, 0.0, 2.4, DOOR)
     b.wall_panel("xW", 8.0, 9.8, 0.0, 2.4, DOOR)
@@ -600,15 +638,27 @@ def edge_lengths(p):
     return lu, vlen(vcross(e1, vsub(v[2], v[0]))) / lu
 
 
-def fit_elements(patches, target):
+def fit_elements(patches, target, cap=None):
     """Sets every patch's nu, nv so that elements are about h x h for one h over the whole
     scene (so element counts follow patch areas), then refines the coarsest directions one
-    step at a time until the total is exactly `target`. Deterministic."""
+    step at a time until the total is exactly `target`; a refinement never takes a patch
+    beyond `cap` elements. Deterministic."""
     lengths = [edge_lengths(p) for p in patches]
 
+    def capped(nu, nv):
+        # A patch over the cap keeps its shape but gets coarser elements.
+        if cap is None or nu * nv <= cap:
+            return nu, nv
+        f = math.sqrt(cap / float(nu * nv))
+        nu, nv = max(1, int(nu * f)), max(1, int(nv * f))
+        while nu * nv > cap:
+            nu, nv = (nu - 1, nv) if nu >= nv else (nu, nv - 1)
+        return nu, nv
+
     def counts(h):
-        return [(min(MAX_SUBDIVISION, max(1, math.ceil(lu / h - 1e-9))),
-                 min(MAX_SUBDIVISION, max(1, math.ceil(lv / h - 1e-9)))) for lu, lv in lengths]
+        return [capped(min(MAX_SUBDIVISION, max(1, math.ceil(lu / h - 1e-9))),
+                       min(MAX_SUBDIVISION, max(1, math.ceil(lv / h - 1e-9))))
+                for lu, lv in lengths]
 
     def total(cs):
         return sum(nu * nv for nu, nv in cs)
@@ -644,7 +694,7 @@ def fit_elements(patches, target):
         if [nu, nv] != cs[i]:
             continue  # stale entry
         delta = nv if direction == 0 else nu
-        if delta > remaining:
+        if delta > remaining or (cap is not None and nu * nv + delta > cap):
             continue  # only grows: never usable again
         cs[i][direction] += 1
         remaining -= delta
@@ -690,6 +740,24 @@ def to_text(b):
 
 # ------------------------------------------------------------------------------------------
 # Validation of the written text.
+
+
+def patch_cap(name):
+    """Most elements a patch of the scene may have (None: no limit)."""
+    if name not in PARTITION_WAYS:
+        return None
+    return TARGETS[name][1] // PARTITION_WAYS[name]
+
+
+def partition_imbalance(counts, processors):
+    """Largest / mean elements per processor when whole patches with these element counts are
+    dealt out as the simulator does: largest first, each to the processor with the fewest
+    elements so far (the first such)."""
+    heap = [(0, r) for r in range(processors)]
+    for c in sorted(counts, reverse=True):
+        load, r = heapq.heappop(heap)
+        heapq.heappush(heap, (load + c, r))
+    return max(load for load, _ in heap) * processors / float(sum(counts))
 
 
 def validate(b, text, target):
@@ -764,6 +832,17 @@ def validate(b, text, target):
                 break
     if emitters == 0:
         problems.append(b.name + ": no emitter")
+    cap = patch_cap(b.name)
+    if cap is not None:
+        counts = [p["elements"][0] * p["elements"][1] for p in patches]
+        for index, c in enumerate(counts):
+            if c > cap:
+                problems.append("%s patch %d: %d elements, more than 1/%d of the scene (%d)"
+                                % (b.name, index, c, PARTITION_WAYS[b.name], cap))
+        imbalance = partition_imbalance(counts, PARTITION_WAYS[b.name])
+        if imbalance > MAX_IMBALANCE[b.name]:
+            problems.append("%s: the %d-way partition by elements is off by %.3f"
+                            % (b.name, PARTITION_WAYS[b.name], imbalance))
     if target is not None and (len(patches), elements) != target:
         problems.append("%s: %d patches / %d elements, want %d / %d"
                         % (b.name, len(patches), elements, target[0], target[1]))
@@ -841,7 +920,7 @@ def build_all():
         target = TARGETS[b.name]
         if len(b.patches) != target[0]:
             raise SystemExit("%s: %d patches, want %d" % (b.name, len(b.patches), target[0]))
-        fit_elements(b.patches, target[1])
+        fit_elements(b.patches, target[1], patch_cap(b.name))
         scenes.append((b, target))
     scenes.append((cornell_box(), None))
     return scenes

@@ -1,6 +1,7 @@
 // The committed scene files (scenes/, made by scenes/generate.py; see docs/scenes.md) load,
 // have exactly the patch and element counts of the paper's table (Stuerzlinger & Wild 1994,
-// section 5) and are lit; the Cornell box loads too.
+// section 5), are lit, and (scenes 1-3) have no patch too big to share out among 64
+// radiosity processors; the Cornell box loads too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "nodes/placement.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 
@@ -90,6 +92,45 @@ TEST_P(PaperScenes, RoomFacesInwardsAndCameraIsInside) {
     EXPECT_LT(scene.camera.eye[axis], hi[axis]);
   }
 }
+
+// The simulator deals whole patches out to up to 64 radiosity processors by element count
+// (paper, section 4); a patch cannot be split, so in scenes 1-3 no patch may hold more than
+// 1/64 of the scene's elements, and the 64-way partition balances within a few percent.
+// (scene0, 52 patches, is run with at most 52 processors.)
+class CappedScenes : public ::testing::TestWithParam<PaperScene> {};
+
+TEST_P(CappedScenes, NoPatchHasMoreThanA64thOfTheElements) {
+  const PaperScene& want = GetParam();
+  const Scene scene = load_scene(scene_path(want.file));
+  const std::size_t cap = want.elements / 64;
+  for (std::size_t index = 0; index < scene.patches.size(); ++index) {
+    const Patch& p = scene.patches[index];
+    EXPECT_LE(std::size_t(p.nu) * std::size_t(p.nv), cap) << "patch " << index;
+  }
+}
+
+TEST_P(CappedScenes, SixtyFourWayPartitionIsBalanced) {
+  const Scene scene = load_scene(scene_path(GetParam().file));
+  for (int R : {4, 8, 16, 32, 64}) {
+    long most = 0;
+    for (const auto& owned : partition_patches_by_elements(scene, R)) {
+      long elements = 0;
+      for (int patch : owned) elements += scene.patches[std::size_t(patch)].element_count();
+      most = std::max(most, elements);
+    }
+    const double mean = double(scene.elements.size()) / R;
+    EXPECT_LE(double(most), 1.10 * mean) << "R=" << R;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CappedScenes,
+                         ::testing::Values(PaperScene{"scene1.json", 288, 4648},
+                                           PaperScene{"scene2.json", 832, 18952},
+                                           PaperScene{"scene3.json", 3328, 74368}),
+                         [](const ::testing::TestParamInfo<PaperScene>& info) {
+                           std::string name = info.param.file;
+                           return name.substr(0, name.find('.'));
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PaperScenes,
                          ::testing::Values(PaperScene{"scene0.json", 52, 1162},
