@@ -476,7 +476,7 @@ def summary_section(inputs):
             markdown_table(["cells", "n", "median |error|", "90th pct |error|", "bias",
                             "within a factor 2"], rows,
                            ["---", "--:", "--:", "--:", "--:", "--:"]),
-            "", "![simulation vs paper, every cell](figures/scatter.png)", ""]
+            "", f"![simulation vs paper, every cell]({figure_scatter(inputs)})", ""]
 
 
 # ---------------------------------------------------------------------------------------------
