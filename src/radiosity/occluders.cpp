@@ -156,55 +156,53 @@ int Occluders::build(int first, int count) {
   return index;
 }
 
-int Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
-                           int hint) const {
-  // The last blocker usually blocks the next ray too (rays of one receiver are coherent).
-  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) return hint;
+template <class Skip, class Visit>
+void Occluders::walk(const Vec3& from, const Vec3& delta, Skip skip, Visit visit) const {
   const Segment segment(from, delta);
   int stack[64];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!segment_meets_box(node.lo, node.hi, segment)) continue;
+    if (skip(node) || !segment_meets_box(node.lo, node.hi, segment)) continue;
     if (node.count == 0) {
       stack[top++] = node.right;
       stack[top++] = node.first;
       continue;
     }
-    for (int i = node.first; i < node.first + node.count; ++i) {
-      const Candidate& c = patches_[order_[i]];
-      if (c.scene_index != receiver && c.scene_index != shooter && segment_crosses(c, from, delta))
-        return order_[i];
-    }
+    for (int i = node.first; i < node.first + node.count; ++i)
+      if (visit(order_[i])) return;
   }
-  return -1;
+}
+
+int Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
+                           int hint) const {
+  // The last blocker usually blocks the next ray too (rays of one receiver are coherent).
+  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) return hint;
+  int found = -1;
+  walk(from, delta, [](const Node&) { return false; }, [&](int position) {
+    const Candidate& c = patches_[position];
+    if (c.scene_index == receiver || c.scene_index == shooter || !segment_crosses(c, from, delta))
+      return false;
+    found = position;
+    return true;
+  });
+  return found;
 }
 
 int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
                              int hint) const {
   int best = 1 << 30;
   if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) best = hint;
-  const Segment segment(from, delta);
-  int stack[64];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (node.min_position >= best || !segment_meets_box(node.lo, node.hi, segment)) continue;
-    if (node.count == 0) {
-      stack[top++] = node.right;
-      stack[top++] = node.first;
-      continue;
-    }
-    for (int i = node.first; i < node.first + node.count; ++i) {
-      const int position = order_[i];
-      const Candidate& c = patches_[position];
-      if (position < best && c.scene_index != receiver && c.scene_index != shooter &&
-          segment_crosses(c, from, delta))
-        best = position;
-    }
-  }
+  // Subtrees holding only later candidates than the best blocker so far cannot matter.
+  walk(from, delta, [&](const Node& node) { return node.min_position >= best; },
+       [&](int position) {
+         const Candidate& c = patches_[position];
+         if (position < best && c.scene_index != receiver && c.scene_index != shooter &&
+             segment_crosses(c, from, delta))
+           best = position;
+         return false;
+       });
   return best == (1 << 30) ? -1 : best;
 }
 

@@ -54,6 +54,10 @@ class Occluders {
   };
 
   int build(int first, int count);
+  // Depth-first over the nodes whose boxes the segment meets; `skip(node)` prunes a subtree,
+  // `visit(position)` sees each candidate of a reached leaf and returns true to stop.
+  template <class Skip, class Visit>
+  void walk(const Vec3& from, const Vec3& delta, Skip skip, Visit visit) const;
   // Position of the first blocking candidate in brute-force order, or -1. `hint` is a
   // candidate position to try first (the previous ray's blocker) or -1.
   int first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
