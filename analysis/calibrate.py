@@ -7,7 +7,7 @@ simulated(cell) = paper(cell) for all cells at once. The result is written into
 platforms/cost_model.json (value and a "source" saying how it was obtained) and into
 analysis/calibration-fit.json. This is the only way figures of the paper reach the simulator.
 
-usage: analysis/calibrate.py [--dry-run]
+usage: analysis/calibrate.py [--dry-run] [--simulate-args "..."]
 """
 import argparse
 import json
@@ -44,7 +44,7 @@ def write_cost_model(document, path):
     path.write_text("\n".join(lines) + "\n")
 
 
-def simulate(cell, values, document, workdir):
+def simulate(cell, values, document, workdir, extra=()):
     trial = json.loads(json.dumps(document))
     for name, value in values.items():
         trial["parameters"][name]["value"] = value
@@ -53,7 +53,7 @@ def simulate(cell, values, document, workdir):
     out = Path(workdir) / "cell.json"
     subprocess.run([str(ROOT / "simulate"), f"{cell['scene']}.json", "--R", str(cell["R"]),
                     "--V", str(cell["V"]), "--iterations", str(iterations_of(cell["table"])),
-                    "--cost-model", str(model), "--json", str(out), "--quiet"], check=True)
+                    "--cost-model", str(model), "--json", str(out), "--quiet", *extra], check=True)
     result = json.loads(out.read_text())
     per_iteration = result["seconds_per_iteration"]
     return sum(per_iteration) / len(per_iteration)
@@ -62,6 +62,8 @@ def simulate(cell, values, document, workdir):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dry-run", action="store_true", help="fit, but write nothing")
+    parser.add_argument("--simulate-args", default="",
+                        help="more simulate options for the calibration runs (a what-if)")
     args = parser.parse_args()
     calibration = json.loads((ROOT / "analysis" / "calibration.json").read_text())
     tables = json.loads((ROOT / "analysis" / "paper_tables.json").read_text())
@@ -72,7 +74,8 @@ def main():
 
     def times(params, workdir):
         values = dict(zip(names, params))
-        return np.array([simulate(c, values, document, workdir) for c in cells])
+        extra = args.simulate_args.split()
+        return np.array([simulate(c, values, document, workdir, extra) for c in cells])
 
     with tempfile.TemporaryDirectory() as workdir:
         y = times(x, workdir)
