@@ -7,28 +7,17 @@
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Engine.hpp>
 
-#include "machine/hypercube.h"
+#include "simulated_machine.h"
 
 namespace ncube {
 namespace {
 
-struct Machine {
-  int argc = 1;
-  char name[8] = "test";
-  char* argv[2] = {name, nullptr};
-  simgrid::s4u::Engine engine{&argc, argv};
-  PlatformConfig platform;
+struct Machine : SimulatedMachine {
   CostModel costs;
-  std::vector<simgrid::s4u::Host*> hosts;
   Machine() {
-    configure_network_model(engine);
-    hosts = build_hypercube(platform);
     costs.message_header_bytes = 8;
     costs.shooter_record_bytes = 88;
     costs.flops_per_shooter_candidate = 4;
-  }
-  double transfer(int from, int to, double bytes) const {
-    return hypercube_hops(from, to) * platform.hop_latency + bytes / platform.link_bandwidth;
   }
 };
 

@@ -1,6 +1,6 @@
 // The modeled nCube2 network: e-cube routes and the latency-plus-bandwidth timing.
 // Each TEST starts its own SimGrid Engine, so ctest runs each in its own process.
-#include "machine/hypercube.h"
+#include "simulated_machine.h"
 
 #include <gtest/gtest.h>
 #include <simgrid/s4u/Actor.hpp>
@@ -10,21 +10,9 @@
 namespace ncube {
 namespace {
 
-struct Network {
-  int argc = 1;
-  char name[8] = "test";
-  char* argv[2] = {name, nullptr};
-  simgrid::s4u::Engine engine{&argc, argv};
-  std::vector<simgrid::s4u::Host*> hosts;
-  explicit Network(const PlatformConfig& config) {
-    configure_network_model(engine);
-    hosts = build_hypercube(config);
-  }
-};
-
 TEST(Hypercube, HasTwoToTheDimensionNodesNamedByAddress) {
   PlatformConfig config;
-  Network net(config);
+  SimulatedMachine net(config);
   ASSERT_EQ(net.hosts.size(), 64u);
   EXPECT_EQ(net.hosts[37]->get_name(), "node-37");
   EXPECT_DOUBLE_EQ(net.hosts[5]->get_speed(), 2.5e6);
@@ -32,7 +20,7 @@ TEST(Hypercube, HasTwoToTheDimensionNodesNamedByAddress) {
 
 TEST(Hypercube, RoutesAreECubeWithOneLinkPerDifferingBit) {
   PlatformConfig config;
-  Network net(config);
+  SimulatedMachine net(config);
   for (int from = 0; from < 64; ++from)
     for (int to = 0; to < 64; ++to) {
       if (from == to) continue;
@@ -49,7 +37,7 @@ TEST(Hypercube, RoutesAreECubeWithOneLinkPerDifferingBit) {
 
 TEST(Hypercube, MessageTakesHopsTimesLatencyPlusSizeOverBandwidth) {
   PlatformConfig config;
-  Network net(config);
+  SimulatedMachine net(config);
   struct Case { int from, to; double bytes; double measured; };
   std::vector<Case> cases = {{0, 1, 1, 0},      {0, 63, 1, 0},       {5, 10, 4096, 0},
                              {17, 46, 1e5, 0},  {63, 0, 12, 0},      {32, 33, 1e6, 0}};
@@ -64,6 +52,7 @@ TEST(Hypercube, MessageTakesHopsTimesLatencyPlusSizeOverBandwidth) {
   for (const Case& c : cases) {
     const double expected =
         hypercube_hops(c.from, c.to) * config.hop_latency + c.bytes / config.link_bandwidth;
+    EXPECT_DOUBLE_EQ(expected, net.transfer(c.from, c.to, c.bytes));
     EXPECT_NEAR(c.measured, expected, 1e-9 * expected) << c.from << "->" << c.to;
   }
 }

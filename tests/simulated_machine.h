@@ -1,0 +1,30 @@
+// Test fixture: a SimGrid Engine with the nCube2 hypercube built from a platform config.
+// One per TEST (SimGrid allows one Engine per process; ctest runs each TEST on its own).
+#pragma once
+
+#include <simgrid/s4u/Engine.hpp>
+#include <vector>
+
+#include "machine/hypercube.h"
+
+namespace ncube {
+
+struct SimulatedMachine {
+  int argc = 1;
+  char name[8] = "test";
+  char* argv[2] = {name, nullptr};
+  simgrid::s4u::Engine engine{&argc, argv};
+  PlatformConfig platform;
+  std::vector<simgrid::s4u::Host*> hosts;
+
+  explicit SimulatedMachine(const PlatformConfig& config = PlatformConfig{}) : platform(config) {
+    configure_network_model(engine);
+    hosts = build_hypercube(platform);
+  }
+  // h x latency + S / bandwidth: one message alone on its e-cube route.
+  double transfer(int from, int to, double bytes) const {
+    return hypercube_hops(from, to) * platform.hop_latency + bytes / platform.link_bandwidth;
+  }
+};
+
+}  // namespace ncube
