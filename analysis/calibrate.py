@@ -28,9 +28,8 @@ def paper_value(tables, cell):
     return float(row[cell["scene"]])
 
 
-def iterations_of(table_number):
-    sweep = json.loads((ROOT / "experiments" / f"table{table_number}.json").read_text())
-    return sweep["iterations"]
+def sweep_of(table_number):
+    return json.loads((ROOT / "experiments" / f"table{table_number}.json").read_text())
 
 
 def write_cost_model(document, path):
@@ -52,7 +51,8 @@ def simulate(cell, values, document, workdir, extra=()):
     write_cost_model(trial, model)
     out = Path(workdir) / "cell.json"
     subprocess.run([str(ROOT / "simulate"), f"{cell['scene']}.json", "--R", str(cell["R"]),
-                    "--V", str(cell["V"]), "--iterations", str(iterations_of(cell["table"])),
+                    "--V", str(cell["V"]), "--iterations", str(sweep_of(cell["table"])["iterations"]),
+                    "--samples", str(sweep_of(cell["table"])["samples"]),
                     "--cost-model", str(model), "--json", str(out), "--quiet", *extra], check=True)
     result = json.loads(out.read_text())
     per_iteration = result["seconds_per_iteration"]

@@ -18,6 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 EXPECTED = ROOT / "tests" / "expected_speedups.json"
 ITERATIONS = 4  # scene1: enough to cover lights and first reflectors, a few seconds in all
+SAMPLES = 64    # as in the sweeps of experiments/
 
 CONFIGS = {
     "scene1": [(4, 0), (8, 0), (16, 0), (32, 0), (64, 0), (4, 1), (4, 3), (4, 7), (4, 15),
@@ -29,7 +30,7 @@ CONFIGS = {
 def run(simulate, scene, r, v, workdir):
     out = Path(workdir) / f"{scene}-{r}-{v}.json"
     args = [simulate, str(ROOT / "scenes" / f"{scene}.json"), "--R", str(r), "--V", str(v),
-            "--json", str(out), "--quiet"]
+            "--samples", str(SAMPLES), "--json", str(out), "--quiet"]
     if scene != "scene0":
         args += ["--iterations", str(ITERATIONS)]
     subprocess.run(args, check=True, env={"NCUBE_ROOT": str(ROOT), "PATH": "/usr/bin:/bin"})
