@@ -1,6 +1,7 @@
 #include "machine/parameter_file.h"
 
 #include <cstdio>
+#include <unistd.h>
 #include <fstream>
 #include <gtest/gtest.h>
 
@@ -14,7 +15,10 @@ namespace {
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
 
 std::string write_temp(const std::string& text) {
-  const std::string path = ::testing::TempDir() + "params.json";
+  // One file per test and process: ctest runs the tests of this file in parallel.
+  const std::string path = ::testing::TempDir() + "params-" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                           "-" + std::to_string(::getpid()) + ".json";
   std::ofstream(path) << text;
   return path;
 }
