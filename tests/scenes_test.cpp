@@ -65,12 +65,7 @@ TEST_P(PaperScenes, IsLitByCeilingLightsFacingDown) {
 // ceiling, walls) face into the room, where the camera stands.
 TEST_P(PaperScenes, RoomFacesInwardsAndCameraIsInside) {
   const Scene scene = load_scene(scene_path(GetParam().file));
-  Vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Patch& p : scene.patches)
-    for (int i = 0; i < p.polygon.count; ++i) {
-      lo = glm::min(lo, p.polygon[i]);
-      hi = glm::max(hi, p.polygon[i]);
-    }
+  const auto [lo, hi] = scene_bounds(scene);
   const Vec3 centre = 0.5 * (lo + hi);
   int room_patches = 0;
   for (std::size_t index = 0; index < scene.patches.size(); ++index) {

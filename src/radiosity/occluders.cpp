@@ -54,14 +54,8 @@ bool segment_crosses(const Occluders::Candidate& c, const Vec3& from, const Vec3
 
 Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
-  Vec3 scene_lo(1e300), scene_hi(-1e300);
-  for (const Patch& p : scene.patches)
-    for (int i = 0; i < p.polygon.count; ++i) {
-      scene_lo = glm::min(scene_lo, p.polygon[i]);
-      scene_hi = glm::max(scene_hi, p.polygon[i]);
-    }
   // Pad boxes so that rounding in the slab test never prunes a patch the exact test hits.
-  const double pad = 1e-7 * (1.0 + glm::length(scene_hi - scene_lo));
+  const double pad = 1e-7 * (1.0 + scene_bounds(scene).diagonal());
   patches_.reserve(patch_indices.size());
   for (int scene_index : patch_indices) {
     const Patch& p = scene.patches[scene_index];

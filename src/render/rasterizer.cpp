@@ -214,13 +214,7 @@ Image render_solution(const Scene& scene, const Camera& camera,
   const View view = make_view(camera, width * kSamples, height * kSamples);
 
   // The near plane scales with the scene so that any unit of length works.
-  Vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Patch& p : scene.patches)
-    for (int i = 0; i < p.polygon.count; ++i) {
-      lo = glm::min(lo, p.polygon[i]);
-      hi = glm::max(hi, p.polygon[i]);
-    }
-  const double extent = scene.patches.empty() ? 0.0 : glm::length(hi - lo);
+  const double extent = scene_bounds(scene).diagonal();
   const double near = extent > 0.0 ? 1e-6 * extent : 1e-9;
 
   Frame frame(width * kSamples, height * kSamples);

@@ -33,15 +33,20 @@ double Scene::emitted_power() const {
   return power;
 }
 
-Camera default_camera(const Scene& scene) {
-  // Scenes are interiors, so the default view stands just inside the +z face of the bounding
-  // box, at mid height, and looks across the room towards the -z face (y is up).
+Bounds scene_bounds(const Scene& scene) {
   Vec3 lo(INFINITY), hi(-INFINITY);
   for (const Patch& p : scene.patches)
     for (int i = 0; i < p.polygon.count; ++i) {
       lo = glm::min(lo, p.polygon[i]);
       hi = glm::max(hi, p.polygon[i]);
     }
+  return {lo, hi};
+}
+
+Camera default_camera(const Scene& scene) {
+  // Scenes are interiors, so the default view stands just inside the +z face of the bounding
+  // box, at mid height, and looks across the room towards the -z face (y is up).
+  const auto [lo, hi] = scene_bounds(scene);
   const Vec3 centre = 0.5 * (lo + hi);
   Camera camera;
   camera.eye = Vec3(centre.x, centre.y, hi.z - 0.02 * (hi.z - lo.z));

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "geometry/polygon.h"
 
 namespace ncube {
@@ -49,6 +51,13 @@ struct Scene {
   // Total emitted power, sum over patches of (r+g+b) * area.
   double emitted_power() const;
 };
+
+// The axis-aligned box around all patches (lo > hi when there are none).
+struct Bounds {
+  Vec3 lo, hi;
+  double diagonal() const { return lo.x <= hi.x ? glm::length(hi - lo) : 0.0; }
+};
+Bounds scene_bounds(const Scene& scene);
 
 // A default camera that sees the whole scene: from the front of the bounding box, looking
 // at its centre. Used when the scene file has no "camera".
