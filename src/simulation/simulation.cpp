@@ -76,14 +76,6 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
       result.out_of_memory = {m.node, m.role, m.bytes, platform.node_memory};
     }
 
-  int argc = 1;
-  char program[] = "simulate";
-  char* argv[] = {program, nullptr};
-  simgrid::s4u::Engine engine(&argc, argv);
-  xbt_log_control_set("root.thresh:warning");
-  configure_network_model(engine);
-  const std::vector<simgrid::s4u::Host*> hosts = build_hypercube(platform);
-
   Programs programs;
   std::vector<int> all_patches(scene.patches.size());
   std::iota(all_patches.begin(), all_patches.end(), 0);
@@ -92,7 +84,14 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     programs.runtimes.emplace_back(m.node, m.role, m.rank, platform, costs, trace);
     programs.runtimes.back().set_memory(m.bytes);
   }
-  if (result.status == "ok") {
+  if (result.status == "ok") {  // a node out of memory stops the run before it starts
+    int argc = 1;
+    char program[] = "simulate";
+    char* argv[] = {program, nullptr};
+    simgrid::s4u::Engine engine(&argc, argv);
+    xbt_log_control_set("root.thresh:warning");
+    configure_network_model(engine);
+    const std::vector<simgrid::s4u::Host*> hosts = build_hypercube(platform);
     // The occluder sets are read-only and the same for every group: built once, shared.
     if (V == 0) programs.occluders.emplace_back(scene, all_patches, config.options.ray_policy);
     for (int j = 0; j < V; ++j)
