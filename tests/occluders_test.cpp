@@ -47,6 +47,7 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
   for (const auto& set : {all, share}) {
     const Occluders occluders(scene, set, policy);
     int blocked_rays = 0, visible_rays = 0;
+    std::uint64_t tests = 0, crossings = 0;
     for (int shooter_patch = 0; shooter_patch < 12; ++shooter_patch) {
       const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 16);
       for (int e = 0; e < int(scene.elements.size()); e += 7) {
@@ -58,6 +59,8 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
             occluders.unblocked_parts_brute_force(element.centre, element.patch, shooter, slow);
         ASSERT_EQ(a, b) << "element " << e << " shooter " << shooter_patch;
         ASSERT_EQ(fast, slow) << "element " << e << " shooter " << shooter_patch;
+        tests += slow.ray_patch_tests;
+        crossings += slow.plane_crossings;
         const int visible = __builtin_popcountll(a);
         visible_rays += visible;
         blocked_rays += 16 - visible;
@@ -66,6 +69,9 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
     // The random scene must exercise both outcomes, or the comparison proves little.
     EXPECT_GT(blocked_rays, 1000);
     EXPECT_GT(visible_rays, 1000);
+    // Plane crossings must be neither none nor all of the tests for their count to be tested.
+    EXPECT_GT(crossings, tests / 20);
+    EXPECT_LT(crossings, tests);
   }
 }
 
@@ -90,13 +96,19 @@ TEST(Occluders, EachRayIsTestedAgainstAllOtherPatches) {
   EXPECT_EQ(counts.ray_patch_tests, 64u * 48u);  // all patches but receiver and shooter
 }
 
-TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
+// One square wall, x = 0 and |y|, |z| <= 1.
+Scene wall_scene() {
   Scene scene;
   Patch wall;
   wall.polygon = Polygon::quad({0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1});
   wall.reflectance = Rgb(0.5);
   scene.patches = {wall};
   scene.build_elements();
+  return scene;
+}
+
+TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
+  const Scene scene = wall_scene();
   const Occluders occluders(scene, {0}, RayTestPolicy::kTestAllPatches);
   Shooter shooter;
   shooter.patch = -1;
@@ -105,6 +117,29 @@ TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
   shooter.targets[1] = Vec3(-1, 0, 3);   // passes above it
   WorkCounts counts;
   EXPECT_EQ(occluders.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, counts), PartMask(2));
+}
+
+TEST(Occluders, CountsARayAsAPlaneCrossingWhenItsEndsLieOnOppositeSides) {
+  // The wall x = 0, |y|, |z| <= 1. From (-1, 0, 0): the first ray goes through the wall, the
+  // second stays on its side, the third crosses its plane beside it (no hit, but the loop
+  // still computes the hit point and tests the edges), the fourth ends in the plane.
+  const Scene scene = wall_scene();
+  Shooter shooter;
+  shooter.patch = -1;
+  shooter.part_count = 4;
+  shooter.targets[0] = Vec3(1, 0, 0);
+  shooter.targets[1] = Vec3(-1, 0, 3);
+  shooter.targets[2] = Vec3(1, 0, 5);
+  shooter.targets[3] = Vec3(0, 0, 5);
+  for (RayTestPolicy policy : {RayTestPolicy::kTestAllPatches, RayTestPolicy::kStopAtFirstBlocker}) {
+    const Occluders occluders(scene, {0}, policy);
+    WorkCounts counts, reference;
+    EXPECT_EQ(occluders.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, counts), PartMask(0b1110));
+    occluders.unblocked_parts_brute_force(Vec3(-1, 0, 0), -1, shooter, reference);
+    EXPECT_EQ(counts.ray_patch_tests, 4u);
+    EXPECT_EQ(counts.plane_crossings, 2u);
+    EXPECT_EQ(counts, reference);
+  }
 }
 
 }  // namespace

@@ -132,7 +132,8 @@ TEST(RadiosityEngine, TracingFromReceiversThatCannotSeeTheShooterChangesWorkNotL
   s.build_elements();
   ProgressiveOptions skip, trace_all;
   skip.max_iterations = trace_all.max_iterations = 1;  // the light shoots
-  trace_all.skip_facing_away = false;
+  skip.skip_facing_away = true;
+  trace_all.skip_facing_away = false;  // the default
   RadiosityEngine a(s, all_patches(s)), b(s, all_patches(s));
   const Occluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
   const ProgressiveRun run_a = run_progressive(a, occluders, skip);

@@ -8,6 +8,7 @@ double CostModel::flops(const WorkCounts& c) const {
   return flops_per_shooter_candidate * double(c.shooter_candidates) +
          flops_per_receiver * double(c.receivers) + flops_per_ray * double(c.rays) +
          flops_per_ray_patch_test * double(c.ray_patch_tests) +
+         flops_per_plane_crossing * double(c.plane_crossings) +
          flops_per_form_factor * double(c.form_factors) +
          flops_per_element_update * double(c.element_updates);
 }
@@ -17,6 +18,7 @@ CostModel load_cost_model(const std::string& path) {
                                             {"flops_per_receiver", 0, false},
                                             {"flops_per_ray", 0, false},
                                             {"flops_per_ray_patch_test", 0, false},
+                                            {"flops_per_plane_crossing", 0, false},
                                             {"flops_per_form_factor", 0, false},
                                             {"flops_per_element_update", 0, false},
                                             {"message_header_bytes", 0, true},
@@ -31,6 +33,7 @@ CostModel load_cost_model(const std::string& path) {
   m.flops_per_receiver = v.at("flops_per_receiver");
   m.flops_per_ray = v.at("flops_per_ray");
   m.flops_per_ray_patch_test = v.at("flops_per_ray_patch_test");
+  m.flops_per_plane_crossing = v.at("flops_per_plane_crossing");
   m.flops_per_form_factor = v.at("flops_per_form_factor");
   m.flops_per_element_update = v.at("flops_per_element_update");
   m.message_header_bytes = v.at("message_header_bytes");

@@ -12,7 +12,8 @@ struct CostModel {
   double flops_per_shooter_candidate = 0;  // one comparison in the search for the shooter
   double flops_per_receiver = 0;           // facing test of one element against the shooter
   double flops_per_ray = 0;                // setting up one shadow ray
-  double flops_per_ray_patch_test = 0;     // one ray-patch intersection test
+  double flops_per_ray_patch_test = 0;     // one ray-patch test up to the plane hit (t)
+  double flops_per_plane_crossing = 0;     // the rest of a test whose ray crosses the plane
   double flops_per_form_factor = 0;        // one point-to-part contour integral
   double flops_per_element_update = 0;     // adding the shot light to one element
 

@@ -56,6 +56,7 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
   // Pad boxes so that rounding in the slab test never prunes a patch the exact test hits.
   const double pad = 1e-7 * (1.0 + scene_bounds(scene).diagonal());
+  side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
   patches_.reserve(patch_indices.size());
   for (int scene_index : patch_indices) {
     const Patch& p = scene.patches[scene_index];
@@ -75,6 +76,10 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
     c.scene_index = scene_index;
     position_of_scene_patch_[scene_index] = int(patches_.size());
     patches_.push_back(c);
+    plane_x_.push_back(c.normal.x);
+    plane_y_.push_back(c.normal.y);
+    plane_z_.push_back(c.normal.z);
+    plane_offset_.push_back(c.plane_offset);
   }
   order_.resize(patches_.size());
   for (int i = 0; i < int(order_.size()); ++i) order_[i] = i;
@@ -200,36 +205,102 @@ int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, 
   return best == (1 << 30) ? -1 : best;
 }
 
+namespace {
+// The signed distance of x from a plane, written out once for the single test and the
+// vectorised count so that both round alike.
+inline double plane_distance(double nx, double ny, double nz, double offset, const Vec3& x) {
+  return nx * x.x + ny * x.y + nz * x.z - offset;
+}
+}  // namespace
+
+int Occluders::plane_side(int position, const Vec3& x) const {
+  const double distance = plane_distance(plane_x_[position], plane_y_[position],
+                                         plane_z_[position], plane_offset_[position], x);
+  return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
+}
+
+const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
+  const int m = shooter.part_count;
+  if (sides_.part_count == m &&
+      std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_.targets.begin()))
+    return sides_;
+  const std::size_t n = patches_.size();
+  sides_.part_count = m;
+  sides_.targets = shooter.targets;
+  sides_.in_front.assign(n, 0);
+  sides_.behind.assign(n, 0);
+  sides_.side.assign(n * std::size_t(m), 0);
+  for (std::size_t c = 0; c < n; ++c)
+    for (int k = 0; k < m; ++k) {
+      const int side = plane_side(int(c), shooter.targets[k]);
+      sides_.side[c * m + k] = std::int8_t(side);
+      if (side > 0) ++sides_.in_front[c];
+      if (side < 0) ++sides_.behind[c];
+    }
+  return sides_;
+}
+
+std::uint64_t Occluders::plane_crossings(const Vec3& point, const TargetSides& sides,
+                                         int receiver_position, int shooter_position) const {
+  // Summed per candidate instead of per ray: a candidate is crossed by the rays to the
+  // targets on the other side of its plane from the point.
+  auto crossings_at = [&](int c) -> std::int64_t {
+    const double d = plane_distance(plane_x_[c], plane_y_[c], plane_z_[c], plane_offset_[c], point);
+    return d > side_tolerance_ ? sides.behind[c] : (d < -side_tolerance_ ? sides.in_front[c] : 0);
+  };
+  std::int64_t crossings = 0;
+  const int n = int(plane_x_.size());
+  for (int c = 0; c < n; ++c) crossings += crossings_at(c);
+  if (receiver_position >= 0) crossings -= crossings_at(receiver_position);
+  if (shooter_position >= 0) crossings -= crossings_at(shooter_position);
+  return std::uint64_t(crossings);
+}
+
 PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                                     WorkCounts& counts) const {
   const int receiver_position = position_in_set(receiver_patch);
   const int shooter_position = position_in_set(shooter.patch);
   const int excluded = (receiver_position >= 0) + (shooter_position >= 0);
+  const int m = shooter.part_count;
   PartMask visible = 0;
-  int last_blocker = -1;  // never an excluded patch: those are never found blocking
-  for (int part = 0; part < shooter.part_count; ++part) {
-    const Vec3 delta = shooter.targets[part] - point;
-    std::uint64_t tests = std::uint64_t(size() - excluded);
-    if (patches_.empty()) {
-      visible |= PartMask(1) << part;
-    } else if (policy_ == RayTestPolicy::kTestAllPatches) {
-      last_blocker = any_blocker(point, delta, receiver_patch, shooter.patch, last_blocker);
+  if (patches_.empty()) {
+    counts.rays += std::uint64_t(m);
+    return shooter.all_parts();
+  }
+  const TargetSides& sides = target_sides(shooter);
+  if (policy_ == RayTestPolicy::kTestAllPatches) {
+    int last_blocker = -1;  // never an excluded patch: those are never found blocking
+    for (int part = 0; part < m; ++part) {
+      last_blocker = any_blocker(point, shooter.targets[part] - point, receiver_patch,
+                                 shooter.patch, last_blocker);
       if (last_blocker < 0) visible |= PartMask(1) << part;
-    } else {
-      const int blocker = first_blocker(point, delta, receiver_patch, shooter.patch, last_blocker);
-      if (blocker >= 0) last_blocker = blocker;
-      if (blocker < 0) {
-        visible |= PartMask(1) << part;
-      } else {
-        // The loop tested every candidate up to and including the blocker, skipping the
-        // excluded ones before it.
-        tests = std::uint64_t(blocker + 1 - (receiver_position >= 0 && receiver_position < blocker) -
-                              (shooter_position >= 0 && shooter_position < blocker));
-      }
+    }
+    counts.ray_patch_tests += std::uint64_t(m) * std::uint64_t(size() - excluded);
+    counts.plane_crossings += plane_crossings(point, sides, receiver_position, shooter_position);
+    counts.rays += std::uint64_t(m);
+    return visible;
+  }
+  // First blocker: the loop of each ray tests the candidates up to and including its first
+  // blocker (all of them when there is none), skipping the excluded ones.
+  std::vector<std::int8_t> point_side(patches_.size());
+  for (int c = 0; c < size(); ++c) point_side[c] = std::int8_t(plane_side(c, point));
+  int last_blocker = -1;
+  for (int part = 0; part < m; ++part) {
+    const int blocker = first_blocker(point, shooter.targets[part] - point, receiver_patch,
+                                      shooter.patch, last_blocker);
+    if (blocker >= 0) last_blocker = blocker;
+    if (blocker < 0) visible |= PartMask(1) << part;
+    const int end = blocker < 0 ? size() : blocker + 1;
+    std::uint64_t tests = 0, crossings = 0;
+    for (int c = 0; c < end; ++c) {
+      if (c == receiver_position || c == shooter_position) continue;
+      ++tests;
+      crossings += point_side[c] * sides.side[std::size_t(c) * m + part] < 0;
     }
     counts.ray_patch_tests += tests;
+    counts.plane_crossings += crossings;
   }
-  counts.rays += std::uint64_t(shooter.part_count);
+  counts.rays += std::uint64_t(m);
   return visible;
 }
 
@@ -239,9 +310,12 @@ PartMask Occluders::unblocked_parts_brute_force(const Vec3& point, int receiver_
   for (int part = 0; part < shooter.part_count; ++part) {
     const Vec3 delta = shooter.targets[part] - point;
     bool blocked = false;
-    for (const Candidate& c : patches_) {
+    for (int position = 0; position < size(); ++position) {
+      const Candidate& c = patches_[position];
       if (c.scene_index == receiver_patch || c.scene_index == shooter.patch) continue;
       ++counts.ray_patch_tests;
+      if (plane_side(position, point) * plane_side(position, shooter.targets[part]) < 0)
+        ++counts.plane_crossings;
       if (segment_crosses(c, point, delta)) {
         blocked = true;
         if (policy_ == RayTestPolicy::kStopAtFirstBlocker) break;

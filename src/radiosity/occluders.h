@@ -5,6 +5,8 @@
 // brute-force loop would have made.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "radiosity/shooter.h"
@@ -25,7 +27,9 @@ class Occluders {
 
   // Bit p of the result is set when the segment from `point` to the shooter's part p crosses
   // none of this set's patches other than `receiver_patch` and the shooter itself. Adds the
-  // rays and the ray-patch tests of the brute-force loop to `counts`.
+  // rays, the ray-patch tests and the plane crossings of the brute-force loop to `counts`.
+  // A test is a plane crossing when the ray's two ends lie strictly on opposite sides of the
+  // patch's plane: only then does the loop go on to the hit point and the edge tests.
   PartMask unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            WorkCounts& counts) const;
 
@@ -65,6 +69,20 @@ class Occluders {
   // Position of some blocking candidate, or -1.
   int any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
                   int hint) const;
+  // Which side of each candidate's plane the shooter's ray targets lie on. The targets
+  // depend only on the shooter's geometry and M, so the last shooter's sides are kept.
+  struct TargetSides {
+    int part_count = -1;
+    std::array<Vec3, kMaxShooterParts> targets{};
+    std::vector<std::int32_t> in_front, behind;  // per candidate: targets strictly on each side
+    std::vector<std::int8_t> side;               // per candidate and part: +1, -1 or 0
+  };
+  const TargetSides& target_sides(const Shooter& shooter) const;
+  // +1, -1 or 0 (within the tolerance) for a point and the plane of candidate `position`.
+  int plane_side(int position, const Vec3& x) const;
+  // Plane crossings of the rays from `point` to every target, over the whole set.
+  std::uint64_t plane_crossings(const Vec3& point, const TargetSides& sides, int receiver_position,
+                                int shooter_position) const;
   int position_in_set(int scene_patch) const {
     return scene_patch >= 0 && scene_patch < int(position_of_scene_patch_.size())
                ? position_of_scene_patch_[scene_patch]
@@ -73,6 +91,10 @@ class Occluders {
 
   RayTestPolicy policy_;
   std::vector<Candidate> patches_;  // in brute-force order (position = index)
+  // The candidates' planes, one array per coordinate so that the crossing count vectorises.
+  std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
+  double side_tolerance_ = 0.0;     // distances within this count as "on the plane"
+  mutable TargetSides sides_;       // of the last shooter (actors run one at a time)
   std::vector<int> order_;          // candidate positions, permuted by the hierarchy
   std::vector<Node> nodes_;
   std::vector<int> position_of_scene_patch_;  // -1 when not in this set

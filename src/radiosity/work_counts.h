@@ -11,6 +11,8 @@ struct WorkCounts {
   std::uint64_t receivers = 0;           // elements tested for facing the shooter
   std::uint64_t rays = 0;                // shadow rays set up (one per receiver and part)
   std::uint64_t ray_patch_tests = 0;     // ray-patch intersection tests (section 2.2)
+  std::uint64_t plane_crossings = 0;     // tests whose ray crosses the patch's plane, so the
+                                         // loop goes on to the hit point and the edge tests
   std::uint64_t form_factors = 0;        // point-to-part contour integrals (visible parts)
   std::uint64_t element_updates = 0;     // receiving elements whose radiosity was updated
 
@@ -19,6 +21,7 @@ struct WorkCounts {
     receivers += o.receivers;
     rays += o.rays;
     ray_patch_tests += o.ray_patch_tests;
+    plane_crossings += o.plane_crossings;
     form_factors += o.form_factors;
     element_updates += o.element_updates;
     return *this;
@@ -26,6 +29,7 @@ struct WorkCounts {
   bool operator==(const WorkCounts& o) const {
     return shooter_candidates == o.shooter_candidates && receivers == o.receivers &&
            rays == o.rays && ray_patch_tests == o.ray_patch_tests &&
+           plane_crossings == o.plane_crossings &&
            form_factors == o.form_factors && element_updates == o.element_updates;
   }
 };

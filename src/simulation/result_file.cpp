@@ -11,7 +11,8 @@ namespace {
 nlohmann::json counts_to_json(const WorkCounts& c) {
   return {{"shooter_candidates", c.shooter_candidates}, {"receivers", c.receivers},
           {"rays", c.rays},                             {"ray_patch_tests", c.ray_patch_tests},
-          {"form_factors", c.form_factors},             {"element_updates", c.element_updates}};
+          {"plane_crossings", c.plane_crossings},       {"form_factors", c.form_factors},
+          {"element_updates", c.element_updates}};
 }
 
 const char* ray_policy_name(RayTestPolicy policy) {

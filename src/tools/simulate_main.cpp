@@ -32,7 +32,9 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
               r.converged ? "converged" : "not converged");
   std::printf("simulated seconds     %.3f in all, %.3f per iteration\n", r.simulated_seconds,
               per_iteration);
-  std::printf("ray-patch tests       %llu\n", (unsigned long long)r.counts.ray_patch_tests);
+  std::printf("ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
+              (unsigned long long)r.counts.ray_patch_tests,
+              (unsigned long long)r.counts.plane_crossings);
   std::printf("host seconds          %.3f\n", r.host_seconds);
 }
 

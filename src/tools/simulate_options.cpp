@@ -56,10 +56,9 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "section 2.2) or first-blocker")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "first-blocker"}));
-  bool all_receivers = false;
-  app.add_flag("--all-receivers", all_receivers,
-               "trace rays also from elements that cannot see the shooter's front (default: "
-               "they are skipped)");
+  app.add_flag("--skip-facing-away", config.options.skip_facing_away,
+               "trace no rays from elements that cannot see the shooter's front (default: every "
+               "element traces its rays, section 2.2)");
   app.add_option("--block-size", config.block_size,
                  "visibility points per message to a visibility processor (section 3)")
       ->capture_default_str()
@@ -95,7 +94,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     return kExitBadInput;
   }
   config.memory_cap = !unlimited_memory;
-  config.options.skip_facing_away = !all_receivers;
   config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
