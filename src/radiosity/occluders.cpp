@@ -205,17 +205,9 @@ int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, 
   return best == (1 << 30) ? -1 : best;
 }
 
-namespace {
-// The signed distance of x from a plane, written out once for the single test and the
-// vectorised count so that both round alike.
-inline double plane_distance(double nx, double ny, double nz, double offset, const Vec3& x) {
-  return nx * x.x + ny * x.y + nz * x.z - offset;
-}
-}  // namespace
-
 int Occluders::plane_side(int position, const Vec3& x) const {
-  const double distance = plane_distance(plane_x_[position], plane_y_[position],
-                                         plane_z_[position], plane_offset_[position], x);
+  const double distance = plane_x_[position] * x.x + plane_y_[position] * x.y +
+                          plane_z_[position] * x.z - plane_offset_[position];
   return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
 }
 
@@ -245,8 +237,8 @@ std::uint64_t Occluders::plane_crossings(const Vec3& point, const TargetSides& s
   // Summed per candidate instead of per ray: a candidate is crossed by the rays to the
   // targets on the other side of its plane from the point.
   auto crossings_at = [&](int c) -> std::int64_t {
-    const double d = plane_distance(plane_x_[c], plane_y_[c], plane_z_[c], plane_offset_[c], point);
-    return d > side_tolerance_ ? sides.behind[c] : (d < -side_tolerance_ ? sides.in_front[c] : 0);
+    const int side = plane_side(c, point);
+    return side > 0 ? sides.behind[c] : (side < 0 ? sides.in_front[c] : 0);
   };
   std::int64_t crossings = 0;
   const int n = int(plane_x_.size());

@@ -91,7 +91,7 @@ class Occluders {
 
   RayTestPolicy policy_;
   std::vector<Candidate> patches_;  // in brute-force order (position = index)
-  // The candidates' planes, one array per coordinate so that the crossing count vectorises.
+  // The candidates' planes, one array per coordinate: the crossing count streams through them.
   std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
   double side_tolerance_ = 0.0;     // distances within this count as "on the plane"
   mutable TargetSides sides_;       // of the last shooter (actors run one at a time)
