@@ -61,12 +61,21 @@ expect_exit 2 "missing platform" -- scene0.json --platform "$work/none.json"
 # Same command, same result file (host-time fields aside); a picture is a PNG.
 "$simulate" scene0.json --iterations 5 --json "$work/a.json" --image "$work/a.png" --quiet || fail "run a"
 "$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b"
+# The same command twice: the same bytes but for host_seconds. Two commands that differ only in
+# their outputs: the same result but for the command line recorded in the provenance.
+cp "$work/b.json" "$work/b1.json"
+"$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b again"
 strip() { grep -v '"host_seconds"' "$1"; }
-cmp -s <(strip "$work/a.json") <(strip "$work/b.json") || fail "result files differ"
+cmp -s <(strip "$work/b1.json") <(strip "$work/b.json") || fail "result files of the same command differ"
+strip_command() {
+  /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); del r["host_seconds"]
+del r["provenance"]["command_line"]; print(json.dumps(r, indent=1))' "$1"
+}
+cmp -s <(strip_command "$work/a.json") <(strip_command "$work/b.json") || fail "result files differ"
 # Also for a parallel configuration with V + 1 not a power of two, and its trace.
 "$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/c.json" --trace "$work/c.trace" --quiet || fail "run c"
 "$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/d.json" --quiet || fail "run d"
-cmp -s <(strip "$work/c.json") <(strip "$work/d.json") || fail "parallel result files differ"
+cmp -s <(strip_command "$work/c.json") <(strip_command "$work/d.json") || fail "parallel result files differ"
 grep -q '"traceEvents"' "$work/c.trace" || fail "trace is not a trace-event file"
 [ "$(head -c 4 "$work/a.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "image is not a PNG"
 
