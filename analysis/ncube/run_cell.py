@@ -33,7 +33,7 @@ def find_cell(plan_path, cell_file):
 
 
 def run(cell, results_dir="."):
-    results_dir = Path(results_dir)
+    results_dir = Path(results_dir).resolve()   # absolute paths in the command line
     final = results_dir / cell.file
     final.parent.mkdir(parents=True, exist_ok=True)
     temporary = final.with_name(final.name + ".running")

@@ -56,8 +56,12 @@ def discard_unfinished(cells, results_dir="."):
 
 
 def snakemake_command(plan, results_dir, args):
+    # --ignore-incomplete: a cell's file appears only once it is verified (ncube.run_cell) and
+    # every existing file is verified again before the run (discard_unfinished), so Snakemake's
+    # own bookkeeping must not rerun a cell that finished just before an interruption.
+    # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
-               "--config", f"plan={plan}", "--rerun-incomplete", "--rerun-triggers", "mtime",
+               "--config", f"plan={plan}", "--ignore-incomplete", "--rerun-triggers", "mtime",
                "--keep-going", "--quiet", "rules", "--cores", str(args.cores)]
     if args.slurm:
         command += ["--slurm", "--jobs", str(args.jobs)]
@@ -124,6 +128,8 @@ def main(argv=None):
             for cell in sweep.cells:
                 print(f"  {cell.file}  ({cell.label})")
         return 0
+    if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
+        os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
     results_dir.mkdir(parents=True, exist_ok=True)
     plan = write_plan(sweeps, results_dir)
