@@ -7,6 +7,10 @@
 namespace ncube {
 
 nlohmann::json platform_values(const PlatformConfig& p) {
+  if (p.format == "simgrid-xml")  // the interconnect is the file's (its hash names it)
+    return {{"nodes", p.node_count()},          {"node_speed", p.node_speed},
+            {"node_memory", p.node_memory},     {"send_overhead", p.send_overhead},
+            {"receive_overhead", p.receive_overhead}};
   return {{"dimension", p.dimension},         {"nodes", p.node_count()},
           {"node_speed", p.node_speed},       {"node_memory", p.node_memory},
           {"link_bandwidth", p.link_bandwidth}, {"hop_latency", p.hop_latency},
