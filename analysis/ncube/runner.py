@@ -62,7 +62,7 @@ def snakemake_command(plan, results_dir, args):
     # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
                "--config", f"plan={plan}", "--ignore-incomplete", "--rerun-triggers", "mtime",
-               "--keep-going", "--quiet", "rules", "--cores", str(args.cores)]
+               "--keep-going", "--cores", str(args.cores)]
     if args.slurm:
         command += ["--slurm", "--jobs", str(args.jobs)]
     if args.profile:
