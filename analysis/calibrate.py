@@ -7,19 +7,21 @@ simulated(cell) = paper(cell) for all cells at once. The result is written into
 platforms/cost_model.json (value and a "source" saying how it was obtained) and into
 analysis/calibration-fit.json. This is the only way figures of the paper reach the simulator.
 
-usage: analysis/calibrate.py [--dry-run] [--simulate-args "..."]
+usage: analysis/calibrate.py [--dry-run] [--set OPTION=VALUE ...]
 """
 import argparse
 import json
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parent.parent
-COST_MODEL = ROOT / "platforms" / "cost_model.json"
+from ncube import simulate as simulator
+from ncube import sweep as sweeps
+from ncube.paths import ANALYSIS, EXPERIMENTS, PLATFORMS
+
+COST_MODEL = PLATFORMS / "cost_model.json"
 
 
 def paper_value(tables, cell):
@@ -28,8 +30,11 @@ def paper_value(tables, cell):
     return float(row[cell["scene"]])
 
 
-def sweep_of(table_number):
-    return json.loads((ROOT / "experiments" / f"table{table_number}.json").read_text())
+def sweep_cell(cell):
+    """The cell of the table's sweep (experiments/tableN.json): its options are the
+    calibration run's."""
+    sweep = sweeps.load(EXPERIMENTS / f"table{cell['table']}.json")
+    return next(c for c in sweep.cells if (c.scene, c.R, c.V) == (cell["scene"], cell["R"], cell["V"]))
 
 
 def write_cost_model(document, path):
@@ -43,30 +48,29 @@ def write_cost_model(document, path):
     path.write_text("\n".join(lines) + "\n")
 
 
-def simulate(cell, values, document, workdir, extra=()):
+def simulate(cell, values, document, workdir, changes):
     trial = json.loads(json.dumps(document))
     for name, value in values.items():
         trial["parameters"][name]["value"] = value
     model = Path(workdir) / "cost_model.json"
     write_cost_model(trial, model)
-    out = Path(workdir) / "cell.json"
-    subprocess.run([str(ROOT / "simulate"), f"{cell['scene']}.json", "--R", str(cell["R"]),
-                    "--V", str(cell["V"]), "--iterations", str(sweep_of(cell["table"])["iterations"]),
-                    "--samples", str(sweep_of(cell["table"])["samples"]),
-                    "--cost-model", str(model), "--json", str(out), "--quiet", *extra], check=True)
-    result = json.loads(out.read_text())
-    per_iteration = result["seconds_per_iteration"]
-    return sum(per_iteration) / len(per_iteration)
+    spec = sweep_cell(cell)
+    result = simulator.run(spec.scene_file, dict(spec.options, **changes), spec.platform_file,
+                           model, spec.cfg, accept_out_of_memory=False)
+    return result["seconds_per_iteration"]   # the one definition (docs/reproduce.md)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dry-run", action="store_true", help="fit, but write nothing")
-    parser.add_argument("--simulate-args", default="",
-                        help="more simulate options for the calibration runs (a what-if)")
+    parser.add_argument("--set", action="append", default=[], metavar="OPTION=VALUE",
+                        help="a simulate option for the calibration runs (a what-if), as in a "
+                             "sweep file: skip_facing_away=true, ray_test=first-blocker")
     args = parser.parse_args()
-    calibration = json.loads((ROOT / "analysis" / "calibration.json").read_text())
-    tables = json.loads((ROOT / "analysis" / "paper_tables.json").read_text())
+    import yaml
+    changes = {k: yaml.safe_load(v) for k, _, v in (item.partition("=") for item in args.set)}
+    calibration = json.loads((ANALYSIS / "calibration.json").read_text())
+    tables = json.loads((ANALYSIS / "paper_tables.json").read_text())
     document = json.loads(COST_MODEL.read_text())
     names, cells = calibration["parameters"], calibration["cells"]
     target = np.array([paper_value(tables, c) for c in cells])
@@ -74,8 +78,7 @@ def main():
 
     def times(params, workdir):
         values = dict(zip(names, params))
-        extra = args.simulate_args.split()
-        return np.array([simulate(c, values, document, workdir, extra) for c in cells])
+        return np.array([simulate(c, values, document, workdir, changes) for c in cells])
 
     with tempfile.TemporaryDirectory() as workdir:
         y = times(x, workdir)
@@ -109,7 +112,7 @@ def main():
     fit = {"parameters": {n: float(f"{v:.6g}") for n, v in zip(names, x)},
            "cells": [dict(c, paper=paper_value(tables, c), simulated=float(f"{t:.6g}"))
                      for c, t in zip(cells, y)]}
-    (ROOT / "analysis" / "calibration-fit.json").write_text(json.dumps(fit, indent=1) + "\n")
+    (ANALYSIS / "calibration-fit.json").write_text(json.dumps(fit, indent=1) + "\n")
     return 0
 
 

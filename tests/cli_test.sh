@@ -61,14 +61,44 @@ expect_exit 2 "missing platform" -- scene0.json --platform "$work/none.json"
 # Same command, same result file (host-time fields aside); a picture is a PNG.
 "$simulate" scene0.json --iterations 5 --json "$work/a.json" --image "$work/a.png" --quiet || fail "run a"
 "$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b"
+# The same command twice: the same bytes but for host_seconds. Two commands that differ only in
+# their outputs: the same result but for the command line recorded in the provenance.
+cp "$work/b.json" "$work/b1.json"
+"$simulate" scene0.json --iterations 5 --json "$work/b.json" --quiet || fail "run b again"
 strip() { grep -v '"host_seconds"' "$1"; }
-cmp -s <(strip "$work/a.json") <(strip "$work/b.json") || fail "result files differ"
+cmp -s <(strip "$work/b1.json") <(strip "$work/b.json") || fail "result files of the same command differ"
+strip_command() {
+  /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); del r["host_seconds"]
+del r["provenance"]["command_line"]; print(json.dumps(r, indent=1))' "$1"
+}
+cmp -s <(strip_command "$work/a.json") <(strip_command "$work/b.json") || fail "result files differ"
 # Also for a parallel configuration with V + 1 not a power of two, and its trace.
 "$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/c.json" --trace "$work/c.trace" --quiet || fail "run c"
 "$simulate" scene0.json --R 5 --V 2 --iterations 3 --json "$work/d.json" --quiet || fail "run d"
-cmp -s <(strip "$work/c.json") <(strip "$work/d.json") || fail "parallel result files differ"
+cmp -s <(strip_command "$work/c.json") <(strip_command "$work/d.json") || fail "parallel result files differ"
 grep -q '"traceEvents"' "$work/c.trace" || fail "trace is not a trace-event file"
 [ "$(head -c 4 "$work/a.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "image is not a PNG"
+
+# The nCube2 as a SimGrid platform file gives the same result as the JSON platform.
+"$simulate" scene0.json --R 8 --V 7 --iterations 2 --json "$work/j.json" --quiet || fail "run json"
+"$simulate" scene0.json --R 8 --V 7 --iterations 2 --platform "$root/platforms/ncube2.xml" --json "$work/x.json" --quiet || fail "run xml"
+same_result() {
+  /usr/bin/python3 -c 'import json, sys; a, b = (json.load(open(f)) for f in sys.argv[1:3])
+for r in (a, b): del r["host_seconds"], r["provenance"]
+sys.exit(a != b)' "$1" "$2"
+}
+same_result "$work/j.json" "$work/x.json" || fail "platforms/ncube2.xml and ncube2.json give different results"
+grep -q '"simgrid-xml"' "$work/x.json" || fail "the result file does not say the platform was XML"
+# --cfg reaches SimGrid, overrides the platform's network model, and the result file says so.
+"$simulate" scene0.json --R 8 --V 7 --iterations 2 --cfg=network/model:LV08 --json "$work/l.json" --quiet || fail "run --cfg"
+grep -q '"network/model": "LV08"' "$work/l.json" || fail "--cfg=network/model:LV08 not recorded"
+same_result "$work/j.json" "$work/l.json" && fail "--cfg=network/model:LV08 changed nothing"
+# --log with the project's categories; --version names the code and SimGrid.
+"$simulate" scene0.json --R 2 --V 1 --iterations 1 --quiet --log=ncube_messages.thresh:debug 2>"$work/log" || fail "run --log"
+grep -q "ncube_messages/DEBUG" "$work/log" || fail "--log=ncube_messages.thresh:debug shows no message"
+"$simulate" --version | grep -q "SimGrid 3" || fail "--version does not name SimGrid"
+# The summary names its measure of seconds per iteration.
+"$simulate" scene0.json --iterations 3 | grep -q "seconds per iteration .*(mean of the first 3 iterations" || fail "summary does not name its measure"
 
 [ "$failures" -eq 0 ] && echo "cli_test: all passed"
 exit "$failures"

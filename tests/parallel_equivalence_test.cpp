@@ -41,7 +41,7 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
   ASSERT_EQ(parallel.status, "ok");
   EXPECT_EQ(parallel.iterations, iterations);
   EXPECT_EQ(parallel.shooters, sequential.shooters);
-  ASSERT_EQ(parallel.seconds_per_iteration.size(), std::size_t(iterations));
+  ASSERT_EQ(parallel.iteration_seconds.size(), std::size_t(iterations));
   for (int p = 0; p < int(scene.patches.size()); ++p) {
     const Rgb expected = reference.patch_radiosity(p);
     for (int c = 0; c < 3; ++c)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "machine/hypercube.h"
+#include "machine/simgrid_session.h"
 
 namespace ncube {
 
@@ -18,7 +19,7 @@ struct SimulatedMachine {
   std::vector<simgrid::s4u::Host*> hosts;
 
   explicit SimulatedMachine(const PlatformConfig& config = PlatformConfig{}) : platform(config) {
-    configure_network_model(engine);
+    apply_simgrid_defaults(platform.simgrid_config);
     hosts = build_hypercube(platform);
   }
   // h x latency + S / bandwidth: one message alone on its e-cube route.

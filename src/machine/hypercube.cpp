@@ -7,15 +7,6 @@
 
 namespace ncube {
 
-void configure_network_model(simgrid::s4u::Engine& engine) {
-  // CM02 has no latency or bandwidth correction factors (the default LV08 model multiplies
-  // latency by 13); without cross traffic there is no reverse acknowledgement flow; the
-  // fair-bottleneck solver shares a link equally between the messages crossing it.
-  engine.set_config("network/model:CM02");
-  engine.set_config("network/crosstraffic:0");
-  engine.set_config("network/solver:fairbottleneck");
-}
-
 std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
   namespace s4u = simgrid::s4u;
   std::vector<s4u::Host*> hosts(std::size_t(config.node_count()), nullptr);

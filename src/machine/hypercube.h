@@ -12,10 +12,6 @@
 
 namespace ncube {
 
-// Selects the network model (CM02 without cross traffic, equal link sharing); must run on a
-// fresh Engine before any zone exists.
-void configure_network_model(simgrid::s4u::Engine& engine);
-
 // Builds the hypercube; node k is host "node-k" and has index k in the result.
 std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config);
 

@@ -1,5 +1,6 @@
 #include "machine/parameter_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -10,7 +11,8 @@
 namespace ncube {
 
 std::map<std::string, double> read_parameter_file(const std::string& path,
-                                                  const std::vector<ParameterSpec>& specs) {
+                                                  const std::vector<ParameterSpec>& specs,
+                                                  const std::vector<std::string>& sections) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot read file");
   std::stringstream buffer;
@@ -24,7 +26,8 @@ std::map<std::string, double> read_parameter_file(const std::string& path,
   if (!doc.is_object() || !doc.contains("parameters") || !doc["parameters"].is_object())
     throw InputError(path + ": expected an object with a \"parameters\" object");
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "description" && it.key() != "parameters")
+    if (it.key() != "description" && it.key() != "parameters" &&
+        std::find(sections.begin(), sections.end(), it.key()) == sections.end())
       throw InputError(path + ": unknown key \"" + it.key() + "\"");
   const nlohmann::json& parameters = doc["parameters"];
   std::map<std::string, double> values;

@@ -20,7 +20,9 @@ struct ParameterSpec {
 // Reads `path` and returns the value of every parameter in `specs`. Throws InputError naming
 // the file and the parameter when one is missing, unknown, not a finite number, out of range
 // or (for integers) fractional.
+// `sections` names further top-level keys the file may have (read by the caller).
 std::map<std::string, double> read_parameter_file(const std::string& path,
-                                                  const std::vector<ParameterSpec>& specs);
+                                                  const std::vector<ParameterSpec>& specs,
+                                                  const std::vector<std::string>& sections = {});
 
 }  // namespace ncube

@@ -1,17 +1,44 @@
 #include "machine/platform_config.h"
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "machine/parameter_file.h"
+#include "machine/simgrid_platform_file.h"
+#include "util/input_error.h"
 
 namespace ncube {
+namespace {
 
-PlatformConfig load_platform_config(const std::string& path) {
-  const auto v = read_parameter_file(path, {{"dimension", 0, true, 13},
-                                            {"node_speed", 1e-300, false},
-                                            {"node_memory", 1, true},
-                                            {"link_bandwidth", 1e-300, false},
-                                            {"hop_latency", 0, false},
-                                            {"send_overhead", 0, false},
-                                            {"receive_overhead", 0, false}});
+std::map<std::string, std::string> read_simgrid_config(const std::string& path) {
+  std::ifstream in(path);
+  const nlohmann::json doc = nlohmann::json::parse(in);  // already checked by the reader
+  if (!doc.contains("simgrid_config")) return PlatformConfig{}.simgrid_config;
+  const nlohmann::json& section = doc["simgrid_config"];
+  if (!section.is_object()) throw InputError(path + ": \"simgrid_config\": expected an object");
+  std::map<std::string, std::string> settings;
+  for (auto it = section.begin(); it != section.end(); ++it) {
+    if (!it.value().is_string())
+      throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": expected a string");
+    settings[it.key()] = it.value().get<std::string>();
+  }
+  return settings;
+}
+
+}  // namespace
+
+PlatformConfig load_platform_config(const std::string& path,
+                                    const std::vector<std::string>& simgrid_arguments) {
+  if (is_simgrid_platform_file(path)) return read_simgrid_platform_file(path, simgrid_arguments);
+  const auto v = read_parameter_file(path,
+                                     {{"dimension", 0, true, 13},
+                                      {"node_speed", 1e-300, false},
+                                      {"node_memory", 1, true},
+                                      {"link_bandwidth", 1e-300, false},
+                                      {"hop_latency", 0, false},
+                                      {"send_overhead", 0, false},
+                                      {"receive_overhead", 0, false}},
+                                     {"simgrid_config"});
   PlatformConfig c;
   c.dimension = int(v.at("dimension"));
   c.node_speed = v.at("node_speed");
@@ -20,6 +47,7 @@ PlatformConfig load_platform_config(const std::string& path) {
   c.hop_latency = v.at("hop_latency");
   c.send_overhead = v.at("send_overhead");
   c.receive_overhead = v.at("receive_overhead");
+  c.simgrid_config = read_simgrid_config(path);
   return c;
 }
 

@@ -1,7 +1,9 @@
 // The modeled machine, read from platforms/<machine>.json (e.g. platforms/ncube2.json).
 #pragma once
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace ncube {
 
@@ -14,9 +16,25 @@ struct PlatformConfig {
   double send_overhead = 80e-6;       // CPU s of the sender per message
   double receive_overhead = 80e-6;    // CPU s of the receiver per message
 
-  int node_count() const { return 1 << dimension; }
+  // "json" (this project's parameter file, the hypercube built in code) or "simgrid-xml" (a
+  // SimGrid platform file, any interconnect: docs/platforms.md).
+  std::string format = "json";
+  // SimGrid settings the platform asks for, defaults that --cfg overrides. Without a
+  // "simgrid_config" in the file, the nCube2's network model (docs/model.md): CM02 has no
+  // latency or bandwidth correction factors (SimGrid's default LV08 multiplies latency by 13),
+  // without cross traffic there is no reverse acknowledgement flow, and the fair-bottleneck
+  // solver shares a link equally between the messages crossing it.
+  std::map<std::string, std::string> simgrid_config = {{"network/model", "CM02"},
+                                                       {"network/crosstraffic", "0"},
+                                                       {"network/solver", "fairbottleneck"}};
+  int xml_nodes = 0;  // "simgrid-xml": hosts node-0 ... node-(n-1)
+
+  int node_count() const { return format == "json" ? 1 << dimension : xml_nodes; }
 };
 
-PlatformConfig load_platform_config(const std::string& path);
+// Reads a JSON parameter file or a SimGrid platform file (XML, recognised by its first
+// character; loading it creates the process's SimGrid Engine with `simgrid_arguments`).
+PlatformConfig load_platform_config(const std::string& path,
+                                    const std::vector<std::string>& simgrid_arguments = {});
 
 }  // namespace ncube

@@ -4,6 +4,10 @@
 #include <simgrid/s4u/Comm.hpp>
 #include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/Mailbox.hpp>
+#include <xbt/log.h>
+
+// --log=ncube_messages.thresh:debug shows every message sent and received.
+XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_messages, "the messages between the nodes");
 
 namespace ncube {
 namespace {
@@ -47,6 +51,7 @@ void NodeRuntime::send(int to, std::unique_ptr<Message> message, double payload_
   message->from = stats_.node;
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;
+  XBT_DEBUG("node %d -> node %d: kind %d, %.0f bytes", stats_.node, to, int(message->kind), bytes);
   mailbox_of(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
 }
 
@@ -76,6 +81,7 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
     if (trace_) trace_->push_back({stats_.node, "wait", start, now()});
   }
   ++stats_.messages_received;
+  XBT_DEBUG("node %d <- node %d: kind %d", stats_.node, message->from, int(message->kind));
   busy(platform_.receive_overhead, "overhead", stats_.overhead_seconds);
   return message;
 }

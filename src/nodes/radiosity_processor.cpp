@@ -1,6 +1,10 @@
 #include "nodes/radiosity_processor.h"
 
 #include <algorithm>
+#include <xbt/log.h>
+
+// --log=ncube_radiosity.thresh:verbose shows every decision, :debug every shot.
+XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_radiosity, "the radiosity processors (sections 2.2 and 3)");
 
 namespace ncube {
 
@@ -38,10 +42,13 @@ void RadiosityProcessor::run() {
 ShooterChoice RadiosityProcessor::decide(const ShooterChoice& global_best) {
   if (!shooters_.empty()) iteration_ends_.push_back(runtime_.now());
   const ProgressiveOptions& o = setup_.options;
+  largest_unshot_power_ = global_best.power;
   converged_ = has_converged(global_best, setup_.emitted_power, o.convergence_fraction);
   if (converged_ || (o.max_iterations >= 0 && int(shooters_.size()) >= o.max_iterations))
     return ShooterChoice{};  // stop
   shooters_.push_back(global_best.patch);
+  XBT_VERB("iteration %zu: shooter patch %d, unshot power %g", shooters_.size(),
+           global_best.patch, global_best.power);
   return global_best;
 }
 
@@ -57,6 +64,7 @@ void RadiosityProcessor::tell_visibility_processors(const ShooterChoice& decisio
 }
 
 void RadiosityProcessor::shoot(const Shooter& shooter) {
+  XBT_DEBUG("rank %d shoots patch %d", rank_, shooter.patch);
   if (setup_.placement.visibility_processors > 0) {
     shoot_with_visibility_processors(shooter);
     return;

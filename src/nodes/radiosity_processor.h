@@ -25,6 +25,8 @@ class RadiosityProcessor {
   const std::vector<double>& iteration_ends() const { return iteration_ends_; }
   const std::vector<int>& shooters() const { return shooters_; }
   bool converged() const { return converged_; }
+  // At the master: the largest unshot power at the last decision (for progress reports).
+  double largest_unshot_power() const { return largest_unshot_power_; }
 
  private:
   ShooterChoice decide(const ShooterChoice& global_best);
@@ -42,6 +44,7 @@ class RadiosityProcessor {
   std::vector<double> iteration_ends_;
   std::vector<int> shooters_;
   bool converged_ = false;
+  double largest_unshot_power_ = 0.0;
 };
 
 }  // namespace ncube

@@ -1,5 +1,10 @@
 #include "nodes/visibility_processor.h"
 
+#include <xbt/log.h>
+
+// --log=ncube_visibility.thresh:debug shows every block answered.
+XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_visibility, "the visibility processors (section 3)");
+
 namespace ncube {
 
 VisibilityProcessor::VisibilityProcessor(const ProgramSetup& setup, NodeRuntime& runtime,
@@ -28,6 +33,8 @@ void VisibilityProcessor::run() {
       answer->masks.push_back(
           share_.unblocked_parts(message->points[k], message->point_patches[k], shooter, work));
     runtime_.compute(work);
+    XBT_DEBUG("block %d from node %d: %zu points, %llu ray-patch tests", message->block,
+              message->from, message->points.size(), (unsigned long long)work.ray_patch_tests);
     const double bytes = double(answer->masks.size()) * mask_bytes;
     runtime_.send(message->from, std::move(answer), bytes);
   }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "simulation/iteration_time.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -24,6 +25,7 @@ const char* ray_policy_name(RayTestPolicy policy) {
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
                               const SimulationResult& result) {
   nlohmann::json j;
+  j["schema_version"] = kResultSchemaVersion;
   j["scene"] = {{"name", scene.name},
                 {"patches", scene.patches.size()},
                 {"elements", scene.elements.size()}};
@@ -47,7 +49,10 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   j["iterations"] = result.iterations;
   j["converged"] = result.converged;
   j["simulated_seconds"] = result.simulated_seconds;
-  j["seconds_per_iteration"] = result.seconds_per_iteration;
+  j["iteration_seconds"] = result.iteration_seconds;
+  const std::optional<double> per_iteration = seconds_per_iteration(result.iteration_seconds);
+  j["seconds_per_iteration"] = per_iteration ? nlohmann::json(*per_iteration) : nlohmann::json();
+  j["iterations_measured"] = iterations_measured(result.iteration_seconds);
   j["shooters"] = result.shooters;
   nlohmann::json radiosity = nlohmann::json::array();
   for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});

@@ -11,6 +11,9 @@
 
 namespace ncube {
 
+// Version of the result file's layout; raised with every change of a field's meaning.
+constexpr int kResultSchemaVersion = 2;
+
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
                               const SimulationResult& result);
 

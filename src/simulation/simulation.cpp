@@ -9,6 +9,8 @@
 #include <xbt/log.h>
 
 #include "machine/hypercube.h"
+#include "machine/simgrid_platform_file.h"
+#include "machine/simgrid_session.h"
 #include "nodes/memory_plan.h"
 #include "nodes/radiosity_processor.h"
 #include "nodes/visibility_processor.h"
@@ -85,13 +87,15 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     programs.runtimes.back().set_memory(m.bytes);
   }
   if (result.status == "ok") {  // a node out of memory stops the run before it starts
-    int argc = 1;
-    char program[] = "simulate";
-    char* argv[] = {program, nullptr};
-    simgrid::s4u::Engine engine(&argc, argv);
-    xbt_log_control_set("root.thresh:warning");
-    configure_network_model(engine);
-    const std::vector<simgrid::s4u::Host*> hosts = build_hypercube(platform);
+    simgrid::s4u::Engine& engine = simgrid_engine(config.simgrid_arguments);
+    std::vector<simgrid::s4u::Host*> hosts;
+    if (platform.format == "simgrid-xml") {
+      hosts = simgrid_platform_nodes(platform);  // loaded with its <config> by the reader
+    } else {
+      apply_simgrid_defaults(platform.simgrid_config);  // before the first zone
+      hosts = build_hypercube(platform);
+    }
+    result.simgrid_config = simgrid_settings_used(config.simgrid_arguments);
     // The occluder sets are read-only and the same for every group: built once, shared.
     if (V == 0) programs.occluders.emplace_back(scene, all_patches, config.options.ray_policy);
     for (int j = 0; j < V; ++j)
@@ -114,6 +118,17 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
             hosts[setup.placement.visibility_node(rank, j)], [&vp] { vp.run(); });
       }
     }
+    if (config.on_iteration) {
+      const RadiosityProcessor& master = programs.radiosity.front();
+      const double threshold = setup.emitted_power * config.options.convergence_fraction;
+      std::size_t reported = 0;
+      simgrid::s4u::Engine::on_time_advance_cb([&master, &config, threshold, &reported](double) {
+        if (master.iteration_ends().size() == reported) return;
+        reported = master.iteration_ends().size();
+        config.on_iteration({int(reported), master.largest_unshot_power(), threshold,
+                             simgrid::s4u::Engine::get_clock()});
+      });
+    }
     engine.run();
     const RadiosityProcessor& master = programs.radiosity.front();
     result.simulated_seconds = simgrid::s4u::Engine::get_clock();
@@ -122,7 +137,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     result.iterations = int(master.shooters().size());
     double previous = 0.0;
     for (double end : master.iteration_ends()) {
-      result.seconds_per_iteration.push_back(end - previous);
+      result.iteration_seconds.push_back(end - previous);
       previous = end;
     }
     collect_solution(scene, programs, result);

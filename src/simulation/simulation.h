@@ -3,6 +3,8 @@
 // allows one Engine per process).
 #pragma once
 
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,13 @@
 
 namespace ncube {
 
+struct IterationReport {
+  int iterations_done = 0;
+  double largest_unshot_power = 0.0;
+  double threshold_power = 0.0;  // converged below this
+  double simulated_seconds = 0.0;
+};
+
 struct SimulationConfig {
   int radiosity_processors = 1;   // R
   int visibility_processors = 0;  // V, per radiosity processor
@@ -24,6 +33,10 @@ struct SimulationConfig {
   bool record_trace = false;
   std::string platform_file;
   std::string cost_model_file;
+  // Called as each iteration is decided (the master's view); may be empty.
+  std::function<void(const IterationReport&)> on_iteration;
+  // SimGrid's own command-line arguments (--cfg=name:value, --log=...), given to its Engine.
+  std::vector<std::string> simgrid_arguments;
 
   int node_count() const { return radiosity_processors * (visibility_processors + 1); }
 };
@@ -41,7 +54,7 @@ struct SimulationResult {
   int iterations = 0;
   bool converged = false;
   double simulated_seconds = 0.0;
-  std::vector<double> seconds_per_iteration;
+  std::vector<double> iteration_seconds;  // simulated seconds of each iteration, at the master
   std::vector<int> shooters;
   std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
   std::vector<Rgb> element_radiosity;  // for rendering
@@ -49,6 +62,8 @@ struct SimulationResult {
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace
   double host_seconds = 0.0;
+  // The SimGrid settings the run used (the platform's defaults, overridden by --cfg).
+  std::map<std::string, std::string> simgrid_config;
 };
 
 // Throws InputError for a configuration the simulator cannot run.

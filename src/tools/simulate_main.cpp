@@ -2,14 +2,18 @@
 // the modeled nCube2; prints a summary, optionally writes the result file and a picture.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
+#include "simulation/iteration_time.h"
+#include "simulation/provenance.h"
 #include "simulation/result_file.h"
 #include "simulation/trace_file.h"
+#include "tools/progress.h"
 #include "tools/simulate_options.h"
 #include "util/input_error.h"
 
@@ -17,7 +21,6 @@ namespace {
 
 void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& config,
                    const ncube::SimulationResult& r) {
-  const double per_iteration = r.iterations > 0 ? r.simulated_seconds / r.iterations : 0.0;
   std::printf("scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
               scene.patches.size(), scene.elements.size());
   std::printf("configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
@@ -30,8 +33,11 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
                 r.out_of_memory.available_bytes);
   std::printf("iterations            %d (%s)\n", r.iterations,
               r.converged ? "converged" : "not converged");
-  std::printf("simulated seconds     %.3f in all, %.3f per iteration\n", r.simulated_seconds,
-              per_iteration);
+  std::printf("simulated seconds     %.3f in all\n", r.simulated_seconds);
+  if (const std::optional<double> per_iteration = ncube::seconds_per_iteration(r.iteration_seconds))
+    std::printf("seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,
+                ncube::iterations_measured(r.iteration_seconds),
+                r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
   std::printf("ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
               (unsigned long long)r.counts.ray_patch_tests,
               (unsigned long long)r.counts.plane_crossings);
@@ -46,16 +52,27 @@ int main(int argc, char** argv) {
   if (parse_status >= 0) return parse_status;
   try {
     const ncube::Scene scene = ncube::load_scene(options.scene_file);
-    const ncube::PlatformConfig platform = ncube::load_platform_config(options.config.platform_file);
+    const ncube::PlatformConfig platform =
+        ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
     const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
     ncube::check_configuration(scene, options.config, platform);
 
+    std::optional<ncube::Progress> progress;
+    if (!options.quiet && ncube::stderr_is_terminal()) {
+      progress.emplace(stderr, options.config.options.max_iterations);
+      options.config.on_iteration = [&progress](const ncube::IterationReport& r) { progress->report(r); };
+    }
     const ncube::SimulationResult result =
         ncube::run_simulation(scene, options.config, platform, costs);
+    progress.reset();
+    nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
+    result_json["provenance"] = ncube::provenance_to_json(
+        {options.command_line, options.scene_file, options.config.platform_file,
+         options.config.cost_model_file},
+        scene, platform, costs, result);
     if (!options.quiet) print_summary(scene, options.config, result);
     if (!options.json_file.empty())
-      ncube::write_file_atomically(options.json_file,
-                                   ncube::result_to_json(scene, options.config, result).dump(1) + "\n");
+      ncube::write_file_atomically(options.json_file, result_json.dump(1) + "\n");
     if (!options.trace_file.empty())
       ncube::write_file_atomically(options.trace_file, ncube::trace_to_json(result));
     if (result.status == "out_of_memory") {

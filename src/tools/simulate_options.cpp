@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "util/input_error.h"
+#include "util/version.h"
 
 namespace ncube {
 
@@ -26,6 +27,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   SimulationConfig& config = options.config;
   config.platform_file = root + "/platforms/ncube2.json";
   config.cost_model_file = root + "/platforms/cost_model.json";
+  // The calibrated setup (docs/reproduce.md, "Calibration"): 64 samples per shooter.
+  config.options.samples = 64;
   std::string ray_test = "all";
 
   CLI::App app{"Simulates the parallel progressive radiosity of Stuerzlinger & Wild (1994) on a "
@@ -82,17 +85,32 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--image-height", options.image_height, "picture height in pixels")
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));
-  app.add_flag("--quiet", options.quiet, "print nothing but errors");
+  app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
+  std::vector<std::string> cfg, log;
+  app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "
+                 "overrides the platform's")->type_name("NAME:VALUE")->allow_extra_args(false);
+  app.add_option("--log", log, "a SimGrid log setting, e.g. ncube_messages.thresh:debug "
+                 "(categories: ncube_radiosity, ncube_visibility, ncube_messages)")
+      ->type_name("SETTING")->allow_extra_args(false);
+  app.set_version_flag("--version", [] {
+    return "simulate " + code_version() + " (SimGrid " + simgrid_version() + ")";
+  });
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return kExitOk;
   } catch (const CLI::ParseError& e) {
     std::cerr << "simulate: " << e.what() << "\n(see simulate --help)\n";
     return kExitBadInput;
   }
+  for (const std::string& setting : cfg) config.simgrid_arguments.push_back("--cfg=" + setting);
+  for (const std::string& setting : log) config.simgrid_arguments.push_back("--log=" + setting);
+  options.command_line.assign(argv, argv + argc);
   config.memory_cap = !unlimited_memory;
   config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =

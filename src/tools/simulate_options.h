@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "simulation/simulation.h"
 
@@ -16,6 +17,7 @@ struct SimulateOptions {
   int image_width = 800;
   int image_height = 600;
   bool quiet = false;
+  std::vector<std::string> command_line;  // argv, for the result file's provenance
 };
 
 // Parses argv. Returns the exit code to stop with (0 after --help, kExitBadInput after a

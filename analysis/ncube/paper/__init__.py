@@ -1,0 +1,1 @@
+"""The paper report: analysis/report.py puts these modules together."""

@@ -1,0 +1,102 @@
+"""The plots of any sweep (ncube.summary). One line per scene and V (and other options when
+they vary), deterministic output (no dates in the PNGs)."""
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save(fig, path):
+    fig.savefig(path, dpi=100, bbox_inches="tight", metadata={"Software": None})
+    plt.close(fig)
+    return path
+
+
+def _series(table, y):
+    """{(scene, V, other options): [(R, nodes, y)]} over the cells with a value."""
+    groups = {}
+    for row in table:
+        if row.get(y) is None:
+            continue
+        others = tuple((k, row[k]) for k in ("samples", "iterations", "ray_test", "block_size",
+                                              "platform", "cost_model", "cfg") if row.get(k) is not None)
+        groups.setdefault((row["scene"], row["V"], others), []).append((row["R"], row["nodes"], row[y]))
+    return groups
+
+
+def _label(key, all_keys):
+    scene, V, others = key
+    varying = [k for k, (name, value) in enumerate(others)
+               if len({dict(o[2]).get(name) for o in all_keys}) > 1]
+    extra = "".join(f", {others[k][0]}={others[k][1]}" for k in varying)
+    return f"{scene} V={V}{extra}"
+
+
+def time_vs_R(table, ylabel, path):
+    groups = _series(table, "value")
+    if not groups:
+        return None
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    for key, points in sorted(groups.items(), key=lambda kv: str(kv[0])):
+        points.sort()
+        ax.plot([p[0] for p in points], [p[2] for p in points], "-o", label=_label(key, groups))
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xlabel("R, radiosity processors")
+    ax.set_ylabel(ylabel)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    return save(fig, path)
+
+
+def ratio_vs_nodes(table, y, path):
+    groups = _series(table, y)
+    if not groups:
+        return None
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    for key, points in sorted(groups.items(), key=lambda kv: str(kv[0])):
+        points.sort(key=lambda p: p[1])
+        ax.plot([p[1] for p in points], [p[2] for p in points], "-o", label=_label(key, groups))
+    nodes = sorted({row["nodes"] for row in table})
+    if y == "speedup" and nodes:
+        base = min(nodes)
+        ax.plot(nodes, [n / base for n in nodes], "k:", lw=1, label="linear")
+    ax.set_xscale("log", base=2)
+    if y == "speedup":
+        ax.set_yscale("log", base=2)
+    ax.set_xlabel("nodes, R x (V + 1)")
+    ax.set_ylabel(y + " (against the cell with the fewest nodes)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    return save(fig, path)
+
+
+def node_breakdown(loaded, path):
+    """Per cell: the mean share of compute, message overhead and waiting of its radiosity and
+    of its visibility processors."""
+    bars = []
+    for cell, result in loaded:
+        if not result or result.get("status") != "ok":
+            continue
+        for role in ("radiosity", "visibility"):
+            nodes = [n for n in result["nodes"] if n["role"] == role]
+            total = sum(n["compute_seconds"] + n["overhead_seconds"] + n["waiting_seconds"] for n in nodes)
+            if nodes and total > 0:
+                bars.append((f"{cell.scene} R={cell.R} V={cell.V} {role[:3]}",
+                             [sum(n[f"{k}_seconds"] for n in nodes) / total
+                              for k in ("compute", "overhead", "waiting")]))
+    if not bars:
+        return None
+    fig, ax = plt.subplots(figsize=(7, 0.25 * len(bars) + 1.2))
+    left = [0.0] * len(bars)
+    for k, (what, colour) in enumerate((("compute", "tab:green"), ("message overhead", "tab:red"),
+                                        ("waiting", "lightgrey"))):
+        shares = [b[1][k] for b in bars]
+        ax.barh(range(len(bars)), shares, left=left, color=colour, label=what)
+        left = [a + b for a, b in zip(left, shares)]
+    ax.set_yticks(range(len(bars)), [b[0] for b in bars], fontsize=7)
+    ax.invert_yaxis()
+    ax.set_xlim(0, 1)
+    ax.set_xlabel("share of the nodes' time (mean over the nodes of the role)")
+    ax.legend(fontsize=8, loc="lower right")
+    return save(fig, path)

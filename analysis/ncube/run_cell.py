@@ -1,0 +1,81 @@
+"""Computes one cell of a sweep: the job Snakemake runs (locally or on a cluster node).
+
+usage: python3 -m ncube.run_cell PLAN CELL_FILE     (in the results folder)
+
+Runs ./simulate into temporary names, checks that the result is complete and belongs to the
+cell (ncube.results.mismatch), and only then gives it its final name: a killed job leaves no
+file that could be taken as done. The simulation dies with this job (it is told so by the
+kernel, prctl PR_SET_PDEATHSIG), so a killed sweep leaves no simulation running."""
+import ctypes
+import json
+import os
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+from . import paths, results
+from .sweep import Cell
+
+PR_SET_PDEATHSIG = 1
+
+
+def _die_with_parent():
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+
+
+def find_cell(plan_path, cell_file):
+    for sweep in json.loads(Path(plan_path).read_text())["sweeps"]:
+        for cell in sweep["cells"]:
+            if cell["file"] == cell_file:
+                return Cell.from_dict(cell)
+    raise SystemExit(f"run_cell: {cell_file} is not a cell of {plan_path}")
+
+
+def run(cell, results_dir="."):
+    results_dir = Path(results_dir).resolve()   # absolute paths in the command line
+    final = results_dir / cell.file
+    final.parent.mkdir(parents=True, exist_ok=True)
+    temporary = final.with_name(final.name + ".running")
+    trace_final = results_dir / cell.trace_file if cell.trace else None
+    trace_temporary = trace_final.with_name(trace_final.name + ".running") if cell.trace else None
+    command = cell.command(temporary, trace_temporary)
+    child = subprocess.Popen(command, env=paths.simulate_environment(), stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True, preexec_fn=_die_with_parent)
+
+    def stop(signum, _frame):
+        child.terminate()
+        child.wait()
+        for path in (temporary, trace_temporary):
+            if path:
+                path.unlink(missing_ok=True)
+        sys.exit(128 + signum)
+
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGINT, stop)
+    _, stderr = child.communicate()
+    if child.returncode not in (0, 3):   # 3: out of memory, a finished cell
+        sys.stderr.write(f"run_cell: {cell.file}: simulate exited with {child.returncode}:\n"
+                         f"{stderr}  command: {' '.join(map(str, command))}\n")
+        return 1
+    problem = results.mismatch(results.read(temporary), cell)
+    if problem is None and cell.trace and child.returncode == 0:
+        problem = results.trace_mismatch(trace_temporary)
+    if problem:
+        sys.stderr.write(f"run_cell: {cell.file}: the result does not belong to the cell: {problem}\n")
+        return 1
+    if cell.trace and trace_temporary.exists():
+        os.replace(trace_temporary, trace_final)
+    elif cell.trace:   # out of memory: no timeline; an empty one marks the cell done
+        trace_final.write_text('{"traceEvents": []}\n')
+    os.replace(temporary, final)
+    return 0
+
+
+def main():
+    plan, cell_file = sys.argv[1], sys.argv[2]
+    return run(find_cell(plan, cell_file))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,148 @@
+"""Runs sweeps through Snakemake (docs/sweeps.md): two local cores by default, a Slurm cluster
+with --slurm or a profile, any other cluster with --cluster.
+
+usage: experiments/sweep SWEEP.yaml [SWEEP.json ...] [--results DIR] [--cores N]
+                         [--slurm | --profile DIR | --cluster CMD] [--jobs N] [--check]
+                         [-- more snakemake arguments]
+
+Every sweep file is validated first (exit 2 with the file, cell and key at the first error).
+The cells of all sweeps go to DIR/cells/ (traced ones to DIR/traced/), named after their
+identity, so a cell in several sweeps runs once; DIR/sweeps/<name>/ gets each sweep's CSV and
+plots. Interrupt it (Ctrl-C, SIGTERM) and run it again: finished cells are kept, the running
+ones are stopped with their simulations and start again."""
+import argparse
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from . import paths, results
+from .sweep import SweepError, load_all
+
+SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
+SNAKEMAKE = "/usr/bin/snakemake"
+
+
+def write_plan(sweeps, results_dir):
+    plan = results_dir / "plan.json"
+    text = json.dumps({"sweeps": [s.to_dict() for s in sweeps]}, indent=1) + "\n"
+    temporary = plan.with_name("plan.json.partial")
+    temporary.write_text(text)
+    os.replace(temporary, plan)
+    return plan
+
+
+def discard_unfinished(cells, results_dir="."):
+    """A result file counts as done only when it is complete and belongs to its cell: any
+    other file at a cell's name is moved aside (to <name>.rejected) so the cell runs again."""
+    rejected = []
+    for cell in cells:
+        path = Path(results_dir) / cell.file
+        if not path.exists():
+            continue
+        problem = results.mismatch(results.read(path), cell)
+        if problem is None and cell.trace:
+            problem = results.trace_mismatch(Path(results_dir) / cell.trace_file)
+        if problem:
+            os.replace(path, path.with_name(path.name + ".rejected"))
+            rejected.append((cell.file, problem))
+    for file, problem in rejected:
+        print(f"sweep: {file} is not a finished result of its cell ({problem}): it runs again",
+              file=sys.stderr)
+    return rejected
+
+
+def snakemake_command(plan, results_dir, args):
+    # --ignore-incomplete: a cell's file appears only once it is verified (ncube.run_cell) and
+    # every existing file is verified again before the run (discard_unfinished), so Snakemake's
+    # own bookkeeping must not rerun a cell that finished just before an interruption.
+    # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
+    command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
+               "--config", f"plan={plan}", "--ignore-incomplete", "--rerun-triggers", "mtime",
+               "--keep-going", "--cores", str(args.cores)]
+    if args.slurm:
+        command += ["--slurm", "--jobs", str(args.jobs)]
+    if args.profile:
+        command += ["--profile", str(args.profile)]
+    if args.cluster:
+        command += ["--cluster", args.cluster, "--jobs", str(args.jobs)]
+    return command + args.snakemake
+
+
+def run_snakemake(command):
+    """Runs Snakemake in its own process group; a signal to this process stops the group, so
+    no job and no simulation outlives the sweep."""
+    process = subprocess.Popen(command, start_new_session=True)
+
+    def stop(signum, _frame):
+        for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 0.0)):
+            try:
+                os.killpg(process.pid, sig)
+            except ProcessLookupError:
+                break
+            deadline = time.monotonic() + grace
+            while process.poll() is None and time.monotonic() < deadline:
+                time.sleep(0.1)
+        # Jobs of the group may outlive Snakemake itself by a moment.
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        sys.exit(128 + signum)
+
+    signal.signal(signal.SIGINT, stop)
+    signal.signal(signal.SIGTERM, stop)
+    return process.wait()
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("sweeps", nargs="+", type=Path, help="sweep files (YAML or JSON)")
+    parser.add_argument("--results", type=Path, default=Path("results"),
+                        help="results folder (default: ./results)")
+    parser.add_argument("--cores", type=int, default=2, help="local cores (default 2)")
+    parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
+    parser.add_argument("--profile", type=Path, help="a Snakemake profile (experiments/profiles/slurm)")
+    parser.add_argument("--cluster", help="generic cluster mode: the submit command")
+    parser.add_argument("--jobs", type=int, default=100, help="cluster jobs at once (default 100)")
+    parser.add_argument("--check", action="store_true", help="validate and list the cells only")
+    argv = sys.argv[1:] if argv is None else argv
+    extra = []
+    if "--" in argv:
+        extra = argv[argv.index("--") + 1:]
+        argv = argv[:argv.index("--")]
+    args = parser.parse_args(argv)
+    args.snakemake = extra
+    try:
+        sweeps = load_all(args.sweeps)
+    except SweepError as e:
+        print(f"sweep: {e}", file=sys.stderr)
+        return 2
+    cells = {c.id: c for s in sweeps for c in s.cells}
+    if args.check:
+        for sweep in sweeps:
+            print(f"{sweep.name}: {len(sweep.cells)} cells, measure {sweep.measure}")
+            for cell in sweep.cells:
+                print(f"  {cell.file}  ({cell.label})")
+        return 0
+    if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
+        os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
+    results_dir = args.results.resolve()
+    results_dir.mkdir(parents=True, exist_ok=True)
+    plan = write_plan(sweeps, results_dir)
+    done = sum((results_dir / c.file).exists() for c in cells.values())
+    print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a result "
+          f"file in {results_dir}", flush=True)
+    start = time.monotonic()
+    status = run_snakemake(snakemake_command(plan, results_dir, args))
+    wall = time.monotonic() - start
+    print(f"sweep: {wall:.1f} s wall time; tables: " +
+          ", ".join(str(results_dir / "sweeps" / s.name / "cells.csv") for s in sweeps), flush=True)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())

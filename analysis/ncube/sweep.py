@@ -1,0 +1,302 @@
+"""Sweep files (docs/sweeps.md): a grid or a list of cells over scenes, R, V and any ./simulate
+option, plus platform, cost model and a measure. Loading validates strictly: an unknown key, a
+bad value or an impossible cell is refused at once, naming the file, the cell and the key.
+
+A cell's identity is its complete configuration: every option (defaults written out), the
+SimGrid settings, whether it is traced, and the content hashes of its scene, platform and
+cost-model files. Its result file is named after the identity, so a changed option or input
+file can never reuse a stale result."""
+import hashlib
+import itertools
+import json
+import re
+import xml.etree.ElementTree as ElementTree
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from . import options as opts
+from . import paths
+from .results import MEASURES
+
+SWEEP_KEYS = {
+    "name": "the sweep's name (default: the file's name without extension)",
+    "description": "free text",
+    "measure": "seconds_per_iteration or total_seconds",
+    "options": "cell keys applied to every cell (a cell's own keys win)",
+    "grid": "cell keys with lists of values: every combination is a cell",
+    "cells": "a list of cells",
+    "paper_table": "the paper table the sweep reproduces (for analysis/report.py)",
+}
+CELL_KEYS = dict({name: option.doc or name for name, option in opts.OPTIONS.items()},
+                 scene="a scene file: a path (relative to the sweep file) or a name in scenes/",
+                 platform="a platform file (JSON or SimGrid XML): a path or a name in platforms/",
+                 cost_model="a cost-model file: a path or a name in platforms/",
+                 cfg="SimGrid settings, {name: value} (./simulate --cfg=name:value)",
+                 trace="also write the per-node timeline (./simulate --trace)",
+                 paper_row="the paper's row {R, V} this cell stands for (not part of its identity)")
+
+
+class SweepError(Exception):
+    """A sweep file that cannot be run; the message names the file, the cell and the key."""
+
+
+def file_sha256(path):
+    return "sha256:" + hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+@dataclass
+class Cell:
+    sweep: str
+    label: str                  # how the sweep file names it, for messages
+    scene: str                  # the scene's name (its "name" field)
+    scene_file: str
+    scene_sha256: str
+    platform_file: str
+    platform_sha256: str
+    cost_model_file: str
+    cost_model_sha256: str
+    options: dict               # every ./simulate option, defaults written out
+    cfg: dict = field(default_factory=dict)
+    trace: bool = False
+    paper_row: dict = None
+    nodes: int = 0              # the platform's
+
+    @property
+    def R(self):
+        return self.options["R"]
+
+    @property
+    def V(self):
+        return self.options["V"]
+
+    def identity(self):
+        return {"scene_sha256": self.scene_sha256, "platform_sha256": self.platform_sha256,
+                "cost_model_sha256": self.cost_model_sha256, "options": self.options,
+                "cfg": {k: str(v) for k, v in sorted(self.cfg.items())}, "trace": self.trace}
+
+    @property
+    def id(self):
+        text = json.dumps(self.identity(), sort_keys=True, separators=(",", ":"))
+        return hashlib.sha256(text.encode()).hexdigest()[:12]
+
+    @property
+    def file(self):
+        """The result file, relative to the results folder."""
+        folder = "traced" if self.trace else "cells"
+        scene = re.sub(r"[^A-Za-z0-9_-]", "_", self.scene)
+        return f"{folder}/{scene}-R{self.R}-V{self.V}-{self.id}.json"
+
+    @property
+    def trace_file(self):
+        return self.file[:-len(".json")] + ".trace.json" if self.trace else None
+
+    def config_fields(self):
+        return opts.config_fields(self.options)
+
+    def command(self, json_out, trace_out=None, simulate=None):
+        return opts.command(simulate or paths.simulate_binary(), self.scene_file, self.options,
+                            self.platform_file, self.cost_model_file, self.cfg, json_out,
+                            trace_out)
+
+    def to_dict(self):
+        return dict(asdict(self), id=self.id, file=self.file, trace_file=self.trace_file)
+
+    @classmethod
+    def from_dict(cls, d):
+        return cls(**{k: v for k, v in d.items() if k not in ("id", "file", "trace_file")})
+
+
+@dataclass
+class Sweep:
+    name: str
+    file: str
+    measure: str
+    description: str
+    cells: list
+    paper_table: object = None
+
+    def to_dict(self):
+        return {"name": self.name, "file": self.file, "measure": self.measure,
+                "description": self.description, "paper_table": self.paper_table,
+                "cells": [c.to_dict() for c in self.cells]}
+
+    @classmethod
+    def from_dict(cls, d):
+        return cls(d["name"], d["file"], d["measure"], d["description"],
+                   [Cell.from_dict(c) for c in d["cells"]], d.get("paper_table"))
+
+
+def read_document(path):
+    text = Path(path).read_text()
+    if Path(path).suffix in (".yaml", ".yml"):
+        import yaml
+        try:
+            return yaml.safe_load(text)
+        except yaml.YAMLError as e:
+            raise SweepError(f"{path}: not valid YAML: {e}") from None
+    try:
+        return json.loads(text)
+    except ValueError as e:
+        raise SweepError(f"{path}: not valid JSON: {e}") from None
+
+
+def platform_nodes(path):
+    """Nodes of a platform file: 2^dimension (JSON), the hosts node-0... (SimGrid XML)."""
+    text = Path(path).read_text()
+    if text.lstrip().startswith("<"):
+        root = ElementTree.fromstring(text)
+        names = {h.get("id") for h in root.iter("host")}
+        for cluster in root.iter("cluster"):
+            for part in cluster.get("radical", "").split(","):
+                low, _, high = part.partition("-")
+                for k in range(int(low), int(high or low) + 1):
+                    names.add(f"{cluster.get('prefix', '')}{k}{cluster.get('suffix', '')}")
+        count = 0
+        while f"node-{count}" in names:
+            count += 1
+        return count
+    return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
+
+
+def scene_summary(path):
+    """(name, patches) of a scene file."""
+    scene = json.loads(Path(path).read_text())
+    return scene.get("name", Path(path).stem), len(scene.get("patches", []))
+
+
+def _expand(document, where):
+    """The sweep's cell specifications, each (label, keys)."""
+    shared = document.get("options", {}) or {}
+    if not isinstance(shared, dict):
+        raise SweepError(f"{where}: \"options\": expected a mapping of cell keys")
+    specs = []
+    grid = document.get("grid")
+    if grid is not None:
+        if not isinstance(grid, dict) or not grid:
+            raise SweepError(f"{where}: \"grid\": expected a mapping of cell keys to lists")
+        for key, values in grid.items():
+            if not isinstance(values, list) or not values:
+                raise SweepError(f"{where}: grid: key {key!r}: expected a non-empty list")
+        keys = list(grid)
+        for combination in itertools.product(*(grid[k] for k in keys)):
+            point = dict(zip(keys, combination))
+            label = "grid cell " + " ".join(f"{k}={v}" for k, v in point.items())
+            specs.append((label, dict(shared, **point)))
+    cells = document.get("cells")
+    if cells is not None:
+        if not isinstance(cells, list):
+            raise SweepError(f"{where}: \"cells\": expected a list")
+        for k, cell in enumerate(cells, 1):
+            if not isinstance(cell, dict):
+                raise SweepError(f"{where}: cell {k}: expected a mapping")
+            label = f"cell {k} (" + " ".join(f"{key}={cell[key]}" for key in ("scene", "R", "V")
+                                             if key in cell) + ")"
+            specs.append((label, dict(shared, **cell)))
+    if not specs:
+        raise SweepError(f"{where}: no cells: give \"grid\" or \"cells\"")
+    return specs
+
+
+def _cell(spec, label, sweep_name, base, where):
+    def fail(key, reason):
+        raise SweepError(f"{where}: {label}: key {key!r}: {reason}")
+
+    for key in spec:
+        if key not in CELL_KEYS:
+            fail(key, "unknown key (known: " + ", ".join(sorted(CELL_KEYS)) + ")")
+    if "scene" not in spec:
+        fail("scene", "missing")
+    files = {}
+    for key, default, folder in (("scene", None, paths.SCENES),
+                                 ("platform", "ncube2.json", paths.PLATFORMS),
+                                 ("cost_model", "cost_model.json", paths.PLATFORMS)):
+        name = spec.get(key, default)
+        if not isinstance(name, str):
+            fail(key, "must be a file name or path")
+        files[key] = paths.resolve_input(name, base, folder)
+        if files[key] is None:
+            fail(key, f"no such file: {name!r} (relative to {base}, or in {folder})")
+    options = {}
+    for name, option in opts.OPTIONS.items():
+        if name in spec:
+            value = spec[name]
+            error = opts.type_error(option, value) or (option.check(value) if option.check else None)
+            if error:
+                fail(name, f"{value!r} {error}")
+            options[name] = float(value) if option.kind is float else value
+    options = opts.complete(options)
+    cfg = spec.get("cfg", {}) or {}
+    if not isinstance(cfg, dict) or any(":" in str(k) or not isinstance(v, (str, int, float))
+                                        for k, v in cfg.items()):
+        fail("cfg", "expected a mapping {SimGrid setting: value}, e.g. {network/model: LV08}")
+    trace = spec.get("trace", False)
+    if not isinstance(trace, bool):
+        fail("trace", f"{trace!r} must be true or false")
+    paper_row = spec.get("paper_row")
+    if paper_row is not None and (not isinstance(paper_row, dict) or set(paper_row) != {"R", "V"}):
+        fail("paper_row", "expected {R: ..., V: ...}")
+    try:
+        scene_name, patches = scene_summary(files["scene"])
+    except (ValueError, AttributeError) as e:
+        fail("scene", f"{files['scene']}: not a scene file ({e})")
+    try:
+        nodes = platform_nodes(files["platform"])
+    except (ValueError, KeyError, TypeError, ElementTree.ParseError) as e:
+        fail("platform", f"{files['platform']}: not a platform file ({e})")
+    R, V = options["R"], options["V"]
+    if R * (V + 1) > nodes:
+        fail("V" if "V" in spec else "R", f"R={R}, V={V} needs R x (V + 1) = {R * (V + 1)} "
+             f"nodes; the platform {files['platform'].name} has {nodes}")
+    if R > patches:
+        fail("R", f"R={R}: more radiosity processors than the scene's {patches} patches")
+    return Cell(sweep=sweep_name, label=label, scene=scene_name, scene_file=str(files["scene"]),
+                scene_sha256=file_sha256(files["scene"]), platform_file=str(files["platform"]),
+                platform_sha256=file_sha256(files["platform"]),
+                cost_model_file=str(files["cost_model"]),
+                cost_model_sha256=file_sha256(files["cost_model"]), options=options,
+                cfg={str(k): v for k, v in cfg.items()}, trace=trace, paper_row=paper_row,
+                nodes=nodes)
+
+
+def load(path):
+    """Reads and validates a sweep file; raises SweepError naming the file, cell and key."""
+    path = Path(path).resolve()
+    where = str(path)
+    if not path.is_file():
+        raise SweepError(f"{where}: no such file")
+    document = read_document(path)
+    if not isinstance(document, dict):
+        raise SweepError(f"{where}: expected a mapping at the top")
+    for key in document:
+        if key not in SWEEP_KEYS:
+            raise SweepError(f"{where}: key {key!r}: unknown key (known: "
+                             + ", ".join(sorted(SWEEP_KEYS)) + ")")
+    name = document.get("name", path.stem)
+    if not isinstance(name, str) or not name or "/" in name or name.startswith("."):
+        raise SweepError(f"{where}: key 'name': {name!r} must be a plain name")
+    measure = document.get("measure", "seconds_per_iteration")
+    if measure not in MEASURES:
+        raise SweepError(f"{where}: key 'measure': {measure!r} must be one of "
+                         + ", ".join(MEASURES))
+    cells, seen = [], {}
+    for label, spec in _expand(document, where):
+        cell = _cell(spec, label, name, path.parent, where)
+        if cell.id in seen:
+            raise SweepError(f"{where}: {label}: the same configuration as {seen[cell.id]}")
+        seen[cell.id] = label
+        cells.append(cell)
+    return Sweep(name=name, file=where, measure=measure,
+                 description=str(document.get("description", "")), cells=cells,
+                 paper_table=document.get("paper_table"))
+
+
+def load_all(paths_):
+    """Several sweeps; their names must differ."""
+    sweeps = [load(p) for p in paths_]
+    names = {}
+    for sweep in sweeps:
+        if sweep.name in names:
+            raise SweepError(f"{sweep.file}: sweep name {sweep.name!r} is also the name of "
+                             f"{names[sweep.name]}")
+        names[sweep.name] = sweep.file
+    return sweeps

@@ -1,0 +1,76 @@
+#include "machine/simgrid_platform_file.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <simgrid/s4u/Engine.hpp>
+#include <simgrid/s4u/NetZone.hpp>
+
+#include "machine/simgrid_session.h"
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+// A host's property, else its zone's (a <cluster>'s <prop> belongs to the zone).
+double node_property(const std::string& path, simgrid::s4u::Host* host, const char* name) {
+  const char* text = host->get_property(name);
+  if (!text) text = host->get_englobing_zone()->get_property(name);
+  const std::string where = path + ": host \"" + host->get_name() + "\": property \"" + name + "\"";
+  if (!text) throw InputError(where + ": missing");
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(value) || value < 0)
+    throw InputError(where + ": \"" + text + "\" is not a number of 0 or more");
+  return value;
+}
+
+}  // namespace
+
+bool is_simgrid_platform_file(const std::string& path) {
+  std::ifstream in(path);
+  char c = 0;
+  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  }
+  return in && c == '<';
+}
+
+PlatformConfig read_simgrid_platform_file(const std::string& path,
+                                          const std::vector<std::string>& simgrid_arguments) {
+  simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
+  try {
+    engine.load_platform(path);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not a SimGrid platform file: " + e.what());
+  }
+  PlatformConfig c;
+  c.format = "simgrid-xml";
+  c.simgrid_config.clear();  // the file's own <config> tags are the defaults
+  while (engine.host_by_name_or_null("node-" + std::to_string(c.xml_nodes))) ++c.xml_nodes;
+  if (c.xml_nodes == 0) throw InputError(path + ": no host \"node-0\" (nodes are named node-0 ... node-(n-1))");
+  if (std::size_t(c.xml_nodes) != engine.get_host_count())
+    throw InputError(path + ": " + std::to_string(engine.get_host_count()) + " hosts, but only node-0 ... node-" +
+                     std::to_string(c.xml_nodes - 1) + " are numbered without a gap");
+  for (simgrid::s4u::Host* host : simgrid_platform_nodes(c)) {
+    const double memory = node_property(path, host, "node_memory");
+    const double send = node_property(path, host, "send_overhead");
+    const double receive = node_property(path, host, "receive_overhead");
+    if (host->get_name() == "node-0") {
+      c.node_speed = host->get_speed();  // counted work becomes seconds at this speed
+      c.node_memory = memory, c.send_overhead = send, c.receive_overhead = receive;
+    } else if (host->get_speed() != c.node_speed || memory != c.node_memory || send != c.send_overhead || receive != c.receive_overhead) {
+      throw InputError(path + ": host \"" + host->get_name() +
+                       "\": speed, node_memory, send_overhead and receive_overhead must be those of node-0");
+    }
+  }
+  return c;
+}
+
+std::vector<simgrid::s4u::Host*> simgrid_platform_nodes(const PlatformConfig& platform) {
+  std::vector<simgrid::s4u::Host*> hosts;
+  for (int k = 0; k < platform.xml_nodes; ++k)
+    hosts.push_back(simgrid::s4u::Engine::get_instance()->host_by_name("node-" + std::to_string(k)));
+  return hosts;
+}
+
+}  // namespace ncube

@@ -1,0 +1,29 @@
+// A SimGrid platform file (XML) as the machine: any interconnect SimGrid can describe (a 2D
+// mesh, a fat tree, ...) runs the same node programs (docs/platforms.md). Node k is the host
+// "node-k" (k = 0 ... n-1); its speed is the host's; the nCube2 values SimGrid has no notion
+// of are host properties (or properties of the host's zone): node_memory (bytes),
+// send_overhead and receive_overhead (seconds of CPU per message). The file's <config> tags
+// are defaults that --cfg overrides.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <simgrid/s4u/Host.hpp>
+
+#include "machine/platform_config.h"
+
+namespace ncube {
+
+// Whether `path` is XML (its first non-blank character is '<').
+bool is_simgrid_platform_file(const std::string& path);
+
+// Loads the platform into the process's SimGrid Engine (created with `simgrid_arguments`) and
+// reads the nodes. Throws InputError naming the file and host for a missing node or property.
+PlatformConfig read_simgrid_platform_file(const std::string& path,
+                                          const std::vector<std::string>& simgrid_arguments);
+
+// The loaded platform's nodes in node order.
+std::vector<simgrid::s4u::Host*> simgrid_platform_nodes(const PlatformConfig& platform);
+
+}  // namespace ncube

@@ -1,0 +1,189 @@
+#!/usr/bin/python3
+"""Sweeps through the real Snakemake (docs/sweeps.md): validation of sweep files, a small sweep
+on the local cores, results that do not belong to their cell run again, an interrupted sweep
+resumes without losing a finished cell and leaves no simulation running, and the path a
+cluster takes (Snakemake's generic cluster mode with a submit command that runs here)."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "analysis"))
+from ncube import options, results, simulate, sweep  # noqa: E402
+
+SWEEP = [str(ROOT / "experiments" / "sweep")]
+failures = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def run_sweep(*args, timeout=240):
+    return subprocess.run(SWEEP + [str(a) for a in args], capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def processes_mentioning(text):
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit() and int(entry.name) != os.getpid():
+            try:
+                command = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode()
+            except OSError:
+                continue
+            if text in command:
+                found.append(command)
+    return found
+
+
+def test_validation(work):
+    good = {"measure": "seconds_per_iteration", "options": {"iterations": 1, "samples": 4},
+            "cells": [{"scene": "scene0", "R": 1, "V": 0}, {"scene": "scene0", "R": 2, "V": 1}]}
+    cases = {
+        "unknown cell key": ({"bogus": 10}, "'bogus'"),
+        "impossible cell (72 nodes)": ({"R": 8, "V": 8}, "72"),
+        "bad value (samples 20)": ({"samples": 20}, "'samples'"),
+        "R not a whole number": ({"R": 2.5}, "'R'"),
+        "unknown scene": ({"scene": "nowhere"}, "'scene'"),
+    }
+    for what, (change, expected) in cases.items():
+        document = json.loads(json.dumps(good))
+        document["cells"][1].update(change)
+        path = work / "bad.json"
+        path.write_text(json.dumps(document))
+        done = run_sweep(path, "--results", work / "never", "--check")
+        check(done.returncode == 2 and str(path) in done.stderr and "cell 2" in done.stderr
+              and expected in done.stderr, f"refused at once: {what} ({done.stderr.strip()[:160]})")
+    path = work / "bad.yaml"
+    path.write_text("measure: seconds_per_iteration\nmesure: x\ngrid: {scene: [scene0], R: [1]}\n")
+    done = run_sweep(path, "--check")
+    check(done.returncode == 2 and "'mesure'" in done.stderr, "unknown top-level key refused")
+    check(not (work / "never").exists(), "nothing written for a refused sweep")
+    # Identity: a changed option is another cell; the same configuration twice is refused.
+    (work / "a.yaml").write_text("grid: {scene: [scene0], R: [1], iterations: [1, 2]}\n")
+    cells = sweep.load(work / "a.yaml").cells
+    check(len({c.id for c in cells}) == 2 and cells[0].file != cells[1].file,
+          "cells differing in one option have different result files")
+    (work / "b.yaml").write_text("grid: {scene: [scene0, scene0.json], R: [1]}\n")
+    try:
+        sweep.load(work / "b.yaml")
+        check(False, "the same cell twice is refused")
+    except sweep.SweepError as e:
+        check("same configuration" in str(e), "the same cell twice is refused")
+    # The defaults the identity writes out are simulate's own.
+    result = simulate.run("scene0", {"iterations": 0})
+    check(result["config"] == dict(options.config_fields({"iterations": 0}), nodes=1),
+          "ncube.options defaults are those of simulate")
+
+
+def test_local_sweep(work):
+    (work / "tiny.yaml").write_text(
+        "measure: seconds_per_iteration\noptions: {iterations: 2, samples: 4}\n"
+        "grid: {scene: [scene0], R: [1, 2], V: [0, 1]}\n"
+        "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1}]\n")
+    (work / "scenes_copy").mkdir()
+    (work / "scenes_copy" / "box.json").write_bytes((ROOT / "scenes" / "cornell-box.json").read_bytes())
+    results_dir = work / "res"
+    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
+    check(done.returncode == 0, f"a small sweep runs on 2 local cores ({done.stderr[-300:]})")
+    loaded = sweep.load(work / "tiny.yaml")
+    for cell in loaded.cells:
+        check(results.mismatch(results.read(results_dir / cell.file), cell) is None,
+              f"{cell.file} is a finished result of its cell")
+    table = (results_dir / "sweeps" / "tiny" / "cells.csv").read_text().splitlines()
+    check(len(table) == 6, "the sweep's CSV has a row per cell")
+    check(all((results_dir / "sweeps" / "tiny" / f).exists() for f in
+              ("time_vs_R.png", "speedup.png", "efficiency.png", "node_breakdown.png")),
+          "the sweep's plots are written")
+    outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
+               p.parent.name != "scenes_copy" and p.name != "bad.json"]
+    check(not outside, f"results only under the results folder ({outside[:2]})")
+    # Files that are not a finished result of their cell run again.
+    plain = [c for c in loaded.cells if not c.trace]
+    traced = next(c for c in loaded.cells if c.trace)
+    stamp = {c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells}
+    (results_dir / plain[0].file).write_text('{"status": "ok"}\n')
+    (results_dir / plain[1].file).write_bytes((results_dir / plain[2].file).read_bytes())
+    (results_dir / traced.trace_file).unlink()
+    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
+    check(done.returncode == 0, "the sweep runs again")
+    for cell, why in ((plain[0], "a bare {status: ok}"), (plain[1], "another cell's result"),
+                      (traced, "a result whose trace was deleted")):
+        result = results.read(results_dir / cell.file) or {}
+        config = result.get("config", {})
+        own = ((config.get("R"), config.get("V"), config.get("max_iterations")) ==
+               (cell.R, cell.V, cell.options["iterations"]) and
+               (not cell.trace or (results_dir / cell.trace_file).exists()))
+        check(own and f"sweep: {cell.file} is not a finished result of its cell" in done.stderr,
+              f"{why} is not taken as done")
+    check((results_dir / plain[3].file).stat().st_mtime_ns == stamp[plain[3].id],
+          "a finished cell is not run again")
+
+
+def test_kill_and_resume(work):
+    (work / "kill.yaml").write_text(
+        "measure: total_seconds\n"
+        "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
+        "        {scene: scene1, R: 1, iterations: 60, samples: 64}]\n")
+    results_dir = work / "killed"
+    loaded = sweep.load(work / "kill.yaml")
+    quick, slow = loaded.cells
+    process = subprocess.Popen(SWEEP + [str(work / "kill.yaml"), "--results", str(results_dir)],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and not (
+            (results_dir / quick.file).exists() and
+            any("simulate" in c and slow.id in c for c in processes_mentioning(str(results_dir)))):
+        time.sleep(0.2)
+    running = any("simulate" in c for c in processes_mentioning(str(results_dir)))
+    check((results_dir / quick.file).exists() and running, "one cell done, the other running")
+    stamp = (results_dir / quick.file).stat().st_mtime_ns
+    process.send_signal(signal.SIGTERM)
+    process.wait(timeout=30)
+    time.sleep(0.5)
+    left = processes_mentioning(str(results_dir))
+    check(not left, f"a killed sweep leaves no simulation or job running ({left[:1]})")
+    check(not (results_dir / slow.file).exists(), "the interrupted cell has no result file")
+    # The next run finishes the interrupted cell only.
+    slow_short = work / "kill.yaml"
+    done = run_sweep(slow_short, "--results", results_dir, timeout=280)
+    check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
+    check((results_dir / quick.file).stat().st_mtime_ns == stamp, "the finished cell is kept")
+    check(results.mismatch(results.read(results_dir / slow.file), slow) is None,
+          "the interrupted cell is done after the resume")
+
+
+def test_cluster_mode(work):
+    (work / "cluster.yaml").write_text(
+        "options: {iterations: 1, samples: 4}\ngrid: {scene: [scene0], R: [1, 4]}\n")
+    results_dir = work / "cluster"
+    submit = f"bash {ROOT / 'tests' / 'sweep_local_submit.sh'}"
+    done = run_sweep(work / "cluster.yaml", "--results", results_dir, "--cluster", submit,
+                     "--jobs", "2", "--", "--latency-wait", "5")
+    loaded = sweep.load(work / "cluster.yaml")
+    check(done.returncode == 0 and all(results.mismatch(results.read(results_dir / c.file), c) is None
+                                       for c in loaded.cells),
+          f"generic cluster mode with a local submit command ({done.stderr[-300:]})")
+    check("local-" in done.stdout + done.stderr, "the jobs went through the submit command")
+
+
+def main():
+    with tempfile.TemporaryDirectory(prefix="ncube-sweep-test-") as folder:
+        work = Path(folder)
+        for test in (test_validation, test_local_sweep, test_kill_and_resume, test_cluster_mode):
+            print(f"-- {test.__name__}", flush=True)
+            test(work)
+    print(f"sweep_test: {len(failures)} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
