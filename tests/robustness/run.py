@@ -98,6 +98,9 @@ def run_case(simulate, case, timeout, memory_bytes, results):
         Path(path).write_bytes(content)
     before = {str(p): digest(p) for p in case.get("inputs", [])}
 
+    if case.get("memory_mb"):
+        memory_bytes = case["memory_mb"] << 20
+
     def limits():
         resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
