@@ -35,6 +35,15 @@ mode_t new_file_mode() {
 }  // namespace
 
 OutputFiles::OutputFiles(const std::vector<Output>& outputs, const std::vector<std::string>& inputs) {
+  try {
+    open(outputs, inputs);
+  } catch (...) {
+    remove_temporaries();  // a constructor that throws gets no destructor call
+    throw;
+  }
+}
+
+void OutputFiles::open(const std::vector<Output>& outputs, const std::vector<std::string>& inputs) {
   std::vector<fs::path> taken;
   for (const std::string& input : inputs) taken.push_back(identity(input));
   for (const Output& output : outputs) {
@@ -64,10 +73,14 @@ OutputFiles::OutputFiles(const std::vector<Output>& outputs, const std::vector<s
   }
 }
 
-OutputFiles::~OutputFiles() {
+OutputFiles::~OutputFiles() { remove_temporaries(); }
+
+void OutputFiles::remove_temporaries() {
   for (Pending& p : pending_) {
     if (p.descriptor >= 0) close(p.descriptor);
+    p.descriptor = -1;
     if (!p.temporary.empty()) std::remove(p.temporary.c_str());
+    p.temporary.clear();
   }
 }
 

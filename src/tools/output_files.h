@@ -33,6 +33,9 @@ class OutputFiles {
   void commit();
 
  private:
+  void open(const std::vector<Output>& outputs, const std::vector<std::string>& inputs);
+  void remove_temporaries();
+
   struct Pending {
     std::string option, path, temporary;
     int descriptor = -1;

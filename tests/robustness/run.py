@@ -13,7 +13,7 @@ hang or exhaust the machine running the script. Outcomes:
   crash/signal    killed by a signal (abort, segmentation fault, ...)
   hang/timeout    still running at the timeout
   wrong exit      any other exit code than expected
-  bad output      the expected exit code, but an output left behind, an input changed, a
+  bad output      the expected exit code, but an output or temporary file left behind, an input changed, a
                   message too long, or a result file with status other than expected,
                   null or non-finite numbers, or radiosities that differ from the reference
 Exit status: 0 when every case is clean, 1 otherwise (ctest runs it).
@@ -90,7 +90,7 @@ def check_result(case, results):
     return problems
 
 
-def run_case(simulate, case, timeout, memory_bytes, results):
+def run_case(simulate, case, timeout, memory_bytes, results, work):
     for p in case.get("outputs", []):
         if Path(p).is_file():
             Path(p).unlink()
@@ -128,6 +128,10 @@ def run_case(simulate, case, timeout, memory_bytes, results):
         return ("wrong exit", f"exit {code}, expected {EXIT[case['expect']]}: {message[:200]!r}" +
                 (f" (left {', '.join(left)})" if code != 0 and left else ""), seconds)
     problems = check_result(case, results)
+    stray = [str(p) for p in Path(work).rglob("*.partial*")]
+    for p in stray:
+        Path(p).unlink()
+    problems += [f"left temporary file {p}" for p in stray]
     problems += [f"changed input {p}" for p, d in before.items() if digest(p) != d]
     if code != 0 and (not message.strip() or len(message.splitlines()) > 2 or len(message) > 2000):
         problems.append(f"message of {len(message.splitlines())} lines, {len(message)} bytes")
@@ -150,7 +154,7 @@ def main():
         table, failures, results = {}, [], {}
         for case in cases:
             outcome, detail, seconds = run_case(args.simulate, case, args.timeout,
-                                                args.memory_mb << 20, results)
+                                                args.memory_mb << 20, results, work)
             row = table.setdefault(case["group"], dict.fromkeys(COLUMNS, 0))
             row[outcome] += 1
             if args.list:
