@@ -11,7 +11,7 @@ namespace ncube {
 namespace {
 
 TEST(Hypercube, HasTwoToTheDimensionNodesNamedByAddress) {
-  PlatformConfig config;
+  const PlatformConfig config = SimulatedMachine::ncube2();
   SimulatedMachine net(config);
   ASSERT_EQ(net.hosts.size(), 64u);
   EXPECT_EQ(net.hosts[37]->get_name(), "node-37");
@@ -19,7 +19,7 @@ TEST(Hypercube, HasTwoToTheDimensionNodesNamedByAddress) {
 }
 
 TEST(Hypercube, RoutesAreECubeWithOneLinkPerDifferingBit) {
-  PlatformConfig config;
+  const PlatformConfig config = SimulatedMachine::ncube2();
   SimulatedMachine net(config);
   for (int from = 0; from < 64; ++from)
     for (int to = 0; to < 64; ++to) {
@@ -36,7 +36,7 @@ TEST(Hypercube, RoutesAreECubeWithOneLinkPerDifferingBit) {
 }
 
 TEST(Hypercube, MessageTakesHopsTimesLatencyPlusSizeOverBandwidth) {
-  PlatformConfig config;
+  const PlatformConfig config = SimulatedMachine::ncube2();
   SimulatedMachine net(config);
   struct Case { int from, to; double bytes; double measured; };
   std::vector<Case> cases = {{0, 1, 1, 0},      {0, 63, 1, 0},       {5, 10, 4096, 0},

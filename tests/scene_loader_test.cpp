@@ -390,3 +390,122 @@ TEST(SceneLoaderError, NonConvexQuad) {
 
 }  // namespace
 }  // namespace ncube
+
+// ------------------------------------------------- robustness (issue 8: no crash, no nonsense)
+namespace ncube {
+namespace {
+
+std::string nested(int depth) { return std::string(depth, '[') + "1" + std::string(depth, ']'); }
+
+TEST(SceneLoaderLimits, DeepNestingIsRejectedWithAShortMessage) {
+  // nlohmann's dump() recursed once per level to show the value: 70,000 levels overflowed
+  // the stack (and 50,000 gave a 100 KB message).
+  std::string text = valid_scene().dump();
+  text.replace(text.find("[2,3]"), 5, nested(70000));
+  const std::string message = error_of_text(text);
+  EXPECT_EQ(message, "test.json: patch 0: nested deeper than 16 arrays and objects (a scene needs 5)");
+  EXPECT_EQ(error_of_text(nested(70000)).substr(0, 31), "test.json: nested deeper than 1");
+}
+
+TEST(SceneLoaderLimits, ValuesAndKeysInMessagesAreCutShort) {
+  const std::string long_key = error_of(with_patch_field(0, std::string(1000000, 'x'), 1));
+  EXPECT_LT(long_key.size(), 200u) << long_key.substr(0, 200);
+  const std::string long_value = error_of(with_patch_field(0, "elements", std::string(1000000, 'x')));
+  EXPECT_LT(long_value.size(), 200u) << long_value.substr(0, 200);
+  // A key with a newline stays on one line (escaped as in JSON).
+  const std::string newline = error_of(with_patch_field(0, "bad\nkey", 1));
+  EXPECT_EQ(newline.find('\n'), std::string::npos) << newline;
+  EXPECT_NE(newline.find("\"bad\\nkey\""), std::string::npos) << newline;
+}
+
+TEST(SceneLoaderLimits, EndlessFileIsRejectedAtTheSizeLimit) {
+  try {
+    load_scene("/dev/zero");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "/dev/zero: scene file is larger than 268435456 bytes (the limit)");
+  }
+}
+
+TEST(SceneLoaderLimits, EmissionOutsideItsRangeIsRejected) {
+  // 1e305 is finite, but the scene's emitted power overflowed and every radiosity came out
+  // as null with status ok.
+  EXPECT_EQ(error_of(with_patch_field(0, "emission", {1e305, 0, 0})),
+            "test.json: patch 0: field \"emission\": channel 0 is 1e+305, must be 0 or in "
+            "[1e-100, 1e100] (only ratios matter)");
+  EXPECT_NE(error_of(with_patch_field(0, "emission", {0, 1e-300, 0})).find("channel 1 is 1e-300"),
+            std::string::npos);
+}
+
+json scaled(json scene, double factor) {
+  for (auto& patch : scene["patches"])
+    for (auto& vertex : patch["vertices"])
+      for (auto& c : vertex) c = c.get<double>() * factor;
+  for (const char* key : {"eye", "look_at"})
+    for (auto& c : scene["camera"][key]) c = c.get<double>() * factor;
+  return scene;
+}
+
+TEST(SceneLoaderLimits, ScaledScenesAreAccepted) {
+  // docs/scene-format.md: scaling a scene does not change its acceptance. Scenes far from
+  // size 1 are brought to working units by a power of two; exact powers of two come out
+  // exactly as the unscaled scene times a power of two.
+  const Scene original = parse_scene(valid_scene().dump(), "test.json");
+  for (double factor : {1e75, 1e-100, 1e150, 1e-150, 0x1p250, 0x1p-250}) {
+    Scene scene;
+    ASSERT_NO_THROW(scene = parse_scene(scaled(valid_scene(), factor).dump(), "test.json"))
+        << factor;
+    ASSERT_EQ(scene.elements.size(), original.elements.size());
+    const double ratio = scene.patches[0].polygon[1].x / original.patches[0].polygon[1].x;
+    EXPECT_LT(ratio, 1e5) << factor;  // brought near the original size
+    EXPECT_GT(ratio, 1e-5) << factor;
+    for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+      EXPECT_NEAR(glm::length(scene.patches[p].normal - original.patches[p].normal), 0.0, 1e-12);
+      EXPECT_NEAR(scene.patches[p].area / original.patches[p].area, ratio * ratio, 1e-9 * ratio * ratio);
+    }
+    if (factor == 0x1p250 || factor == 0x1p-250)
+      for (std::size_t e = 0; e < scene.elements.size(); ++e)
+        EXPECT_EQ(scene.elements[e].centre, ratio * original.elements[e].centre);
+  }
+}
+
+TEST(SceneLoaderLimits, OrdinaryScenesAreNotRescaled) {
+  const Scene scene = parse_scene(scaled(valid_scene(), 1000.0).dump(), "test.json");
+  EXPECT_EQ(scene.patches[0].polygon[1], Vec3(1000, 2000, 0));
+}
+
+TEST(SceneLoaderLimits, PatchesAndCameraFarOutOfScaleAreRejected) {
+  json tiny = valid_scene();
+  tiny["patches"][1]["vertices"] = {{0, 0, 0}, {0, 0, 1e-200}, {1e-200, 0, 0}};
+  EXPECT_EQ(error_of(tiny), "test.json: patch 1: field \"vertices\": too small for the scene: its "
+                            "diameter is less than 1e-12 of the scene's size");
+  // An eye at 1e308 passed through a NaN comparison, and the renderer refused it only after
+  // the result file was written.
+  EXPECT_EQ(error_of(with_camera_field("eye", {1e308, 1e308, 1e308})),
+            "test.json: field \"camera.eye\": too far from the scene: more than 1e12 times its size");
+  json opposite = with_camera_field("eye", {1e308, 0, 0});
+  opposite["camera"]["look_at"] = {-1e308, 0, 0};
+  EXPECT_EQ(error_of(opposite),
+            "test.json: field \"camera.look_at\": too far from camera.eye: their difference "
+            "exceeds the largest double");
+}
+
+TEST(SceneLoaderLimits, ExtremeUpDirectionsAreDirections) {
+  for (double size : {1e308, 1e-300}) {
+    const Scene scene = parse_scene(with_camera_field("up", {0, size, 0}).dump(), "test.json");
+    EXPECT_NEAR(glm::length(glm::normalize(scene.camera.up) - Vec3(0, 1, 0)), 0.0, 1e-15) << size;
+  }
+}
+
+TEST(SceneLoaderLimits, ElementsCanBeBuiltLater) {
+  Scene scene = parse_scene(valid_scene().dump(), "test.json", SceneElements::kLater);
+  EXPECT_TRUE(scene.elements.empty());
+  EXPECT_EQ(scene.element_total(), 10);
+  EXPECT_DOUBLE_EQ(scene.patches[0].area, 1.0);
+  scene.build_elements();
+  EXPECT_EQ(scene.elements.size(), 10u);
+}
+
+}  // namespace
+}  // namespace ncube

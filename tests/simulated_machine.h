@@ -1,12 +1,15 @@
-// Test fixture: a SimGrid Engine with the nCube2 hypercube built from a platform config.
+// Test fixture: a SimGrid Engine with the nCube2 hypercube built from a platform config
+// (by default platforms/ncube2.json, the one source of the machine's values).
 // One per TEST (SimGrid allows one Engine per process; ctest runs each TEST on its own).
 #pragma once
 
 #include <simgrid/s4u/Engine.hpp>
+#include <string>
 #include <vector>
 
 #include "machine/hypercube.h"
 #include "machine/simgrid_session.h"
+#include "machine/platform_config.h"
 
 namespace ncube {
 
@@ -18,7 +21,10 @@ struct SimulatedMachine {
   PlatformConfig platform;
   std::vector<simgrid::s4u::Host*> hosts;
 
-  explicit SimulatedMachine(const PlatformConfig& config = PlatformConfig{}) : platform(config) {
+  static PlatformConfig ncube2() {
+    return load_platform_config(std::string(NCUBE_SOURCE_DIR) + "/platforms/ncube2.json");
+  }
+  explicit SimulatedMachine(const PlatformConfig& config = ncube2()) : platform(config) {
     apply_simgrid_defaults(platform.simgrid_config);
     hosts = build_hypercube(platform);
   }

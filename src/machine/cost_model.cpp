@@ -14,20 +14,23 @@ double CostModel::flops(const WorkCounts& c) const {
 }
 
 CostModel load_cost_model(const std::string& path) {
-  const auto v = read_parameter_file(path, {{"flops_per_shooter_candidate", 0, false},
-                                            {"flops_per_receiver", 0, false},
-                                            {"flops_per_ray", 0, false},
-                                            {"flops_per_ray_patch_test", 0, false},
-                                            {"flops_per_plane_crossing", 0, false},
-                                            {"flops_per_form_factor", 0, false},
-                                            {"flops_per_element_update", 0, false},
-                                            {"message_header_bytes", 0, true},
-                                            {"shooter_record_bytes", 1, true},
-                                            {"point_bytes", 1, true},
-                                            {"patch_geometry_bytes", 1, true},
-                                            {"patch_radiosity_bytes", 1, true},
-                                            {"element_bytes", 1, true},
-                                            {"node_reserve_bytes", 0, true}});
+  // Sanity bounds (a typo, not a model, beyond them): flops per operation up to 1e9, data
+  // sizes up to 1e9 bytes, the reserve up to 2^50 bytes.
+  constexpr double kFlops = 1e9, kBytes = 1e9;
+  const auto v = read_parameter_file(path, {{"flops_per_shooter_candidate", 0, false, kFlops},
+                                            {"flops_per_receiver", 0, false, kFlops},
+                                            {"flops_per_ray", 0, false, kFlops},
+                                            {"flops_per_ray_patch_test", 0, false, kFlops},
+                                            {"flops_per_plane_crossing", 0, false, kFlops},
+                                            {"flops_per_form_factor", 0, false, kFlops},
+                                            {"flops_per_element_update", 0, false, kFlops},
+                                            {"message_header_bytes", 0, true, kBytes},
+                                            {"shooter_record_bytes", 1, true, kBytes},
+                                            {"point_bytes", 1, true, kBytes},
+                                            {"patch_geometry_bytes", 1, true, kBytes},
+                                            {"patch_radiosity_bytes", 1, true, kBytes},
+                                            {"element_bytes", 1, true, kBytes},
+                                            {"node_reserve_bytes", 0, true, 0x1p50}});
   CostModel m;
   m.flops_per_shooter_candidate = v.at("flops_per_shooter_candidate");
   m.flops_per_receiver = v.at("flops_per_receiver");

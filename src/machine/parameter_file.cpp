@@ -2,24 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "util/input_error.h"
+#include "util/text_file.h"
 
 namespace ncube {
 
 std::map<std::string, double> read_parameter_file(const std::string& path,
                                                   const std::vector<ParameterSpec>& specs,
                                                   const std::vector<std::string>& sections) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  // A parameter file is a few kilobytes; the limit stops a wrong path such as /dev/zero.
+  const std::string text = read_text_file(path, kMaxParameterFileBytes, "file");
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(buffer.str());
+    doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path + ": malformed JSON at byte " + std::to_string(e.byte));
   }

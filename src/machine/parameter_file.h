@@ -4,6 +4,7 @@
 // so that every number carries its meaning and origin next to it.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,6 +17,9 @@ struct ParameterSpec {
   bool integer;       // must be a whole number
   double max_value = 1e300;  // inclusive upper bound
 };
+
+// Largest parameter file read, in bytes.
+constexpr std::size_t kMaxParameterFileBytes = std::size_t(1) << 20;
 
 // Reads `path` and returns the value of every parameter in `specs`. Throws InputError naming
 // the file and the parameter when one is missing, unknown, not a finite number, out of range

@@ -31,13 +31,16 @@ PlatformConfig load_platform_config(const std::string& path,
                                     const std::vector<std::string>& simgrid_arguments) {
   if (is_simgrid_platform_file(path)) return read_simgrid_platform_file(path, simgrid_arguments);
   const auto v = read_parameter_file(path,
+                                     // Sanity bounds, far around the nCube2's values: within
+                                     // them every simulated time stays finite and well inside
+                                     // the range SimGrid computes with (docs/model.md, "Machine").
                                      {{"dimension", 0, true, 13},
-                                      {"node_speed", 1e-300, false},
-                                      {"node_memory", 1, true},
-                                      {"link_bandwidth", 1e-300, false},
-                                      {"hop_latency", 0, false},
-                                      {"send_overhead", 0, false},
-                                      {"receive_overhead", 0, false}},
+                                      {"node_speed", 1e3, false, 1e15},
+                                      {"node_memory", 1, true, 0x1p50},
+                                      {"link_bandwidth", 1e3, false, 1e15},
+                                      {"hop_latency", 0, false, 1},
+                                      {"send_overhead", 0, false, 1},
+                                      {"receive_overhead", 0, false, 1}},
                                      {"simgrid_config"});
   PlatformConfig c;
   c.dimension = int(v.at("dimension"));

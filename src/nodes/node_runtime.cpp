@@ -28,7 +28,10 @@ NodeRuntime::NodeRuntime(int node, std::string role, int rank, const PlatformCon
 
 void NodeRuntime::start() { mailbox_of(stats_.node)->set_receiver(simgrid::s4u::Actor::self()); }
 
-void NodeRuntime::finish() { mailbox_of(stats_.node)->set_receiver(nullptr); }
+void NodeRuntime::finish() {
+  mailbox_of(stats_.node)->set_receiver(nullptr);
+  finished_ = true;
+}
 
 double NodeRuntime::now() const { return simgrid::s4u::Engine::get_clock(); }
 

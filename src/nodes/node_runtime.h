@@ -47,6 +47,9 @@ class NodeRuntime {
   // delivered as soon as they are sent (the nCube2's DMA into receive buffers).
   void start();
   void finish();
+  // Whether the node program reached its end (finish() was called): a node that did not
+  // was left blocked when the simulation ended (a deadlock).
+  bool finished() const { return finished_; }
 
   // Runs the counted work on this node's CPU: one execute() for the whole batch.
   void compute(const WorkCounts& counts);
@@ -71,6 +74,7 @@ class NodeRuntime {
   std::vector<TraceEvent>* trace_;
   NodeStats stats_;
   std::deque<std::unique_ptr<Message>> deferred_;
+  bool finished_ = false;
 };
 
 }  // namespace ncube

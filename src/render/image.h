@@ -20,6 +20,9 @@ struct Image {
   const glm::vec3& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
 };
 
+// The image as an 8-bit RGB PNG file's bytes (values clamped to [0, 1], rounded to 0..255).
+std::string encode_png(const Image& image);
+
 // Writes an 8-bit RGB PNG (values clamped to [0, 1], rounded to 0..255). The file is
 // written under a temporary name next to `path` and renamed, so a failure leaves neither
 // a partial file nor a changed target. Throws InputError naming the file on failure.

@@ -5,16 +5,22 @@
 
 namespace ncube {
 
-void Scene::build_elements() {
-  elements.clear();
-  std::size_t total = 0;
-  for (const Patch& p : patches) total += std::size_t(p.element_count());
-  elements.reserve(total);
-  for (int index = 0; index < int(patches.size()); ++index) {
-    Patch& patch = patches[index];
+void Scene::derive_patch_fields() {
+  int first = 0;
+  for (Patch& patch : patches) {
     patch.normal = patch.polygon.normal();
     patch.area = patch.polygon.area();
-    patch.first_element = int(elements.size());
+    patch.first_element = first;
+    first += patch.element_count();
+  }
+}
+
+void Scene::build_elements() {
+  derive_patch_fields();
+  elements.clear();
+  elements.reserve(std::size_t(element_total()));
+  for (int index = 0; index < int(patches.size()); ++index) {
+    const Patch& patch = patches[index];
     for (int j = 0; j < patch.nv; ++j)
       for (int i = 0; i < patch.nu; ++i) {
         Element e;
@@ -25,6 +31,12 @@ void Scene::build_elements() {
         elements.push_back(e);
       }
   }
+}
+
+long Scene::element_total() const {
+  long total = 0;
+  for (const Patch& p : patches) total += p.element_count();
+  return total;
 }
 
 double Scene::emitted_power() const {

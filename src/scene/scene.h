@@ -45,9 +45,13 @@ struct Scene {
   std::vector<Patch> patches;
   std::vector<Element> elements;
 
-  // Fills each patch's derived fields and the element list from patches' polygons and
-  // subdivisions; call after the patches are set.
+  // Fills each patch's derived fields (normal, area, first element) from its polygon and
+  // subdivision; call after the patches are set.
+  void derive_patch_fields();
+  // The same, and the element list.
   void build_elements();
+  // Number of elements of all patches (also before build_elements).
+  long element_total() const;
   // Total emitted power, sum over patches of (r+g+b) * area.
   double emitted_power() const;
 };

@@ -28,7 +28,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   j["schema_version"] = kResultSchemaVersion;
   j["scene"] = {{"name", scene.name},
                 {"patches", scene.patches.size()},
-                {"elements", scene.elements.size()}};
+                {"elements", scene.element_total()}};
   j["config"] = {{"R", config.radiosity_processors},
                  {"V", config.visibility_processors},
                  {"nodes", config.node_count()},
@@ -46,6 +46,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                           {"role", result.out_of_memory.role},
                           {"needed_bytes", result.out_of_memory.needed_bytes},
                           {"available_bytes", result.out_of_memory.available_bytes}};
+  if (result.status == "failed") j["failure"] = result.failure;
   j["iterations"] = result.iterations;
   j["converged"] = result.converged;
   j["simulated_seconds"] = result.simulated_seconds;

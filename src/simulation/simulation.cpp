@@ -1,6 +1,8 @@
 #include "simulation/simulation.h"
 
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <deque>
 #include <memory>
 #include <numeric>
@@ -24,8 +26,9 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
   const std::string rv = "R=" + std::to_string(r) + ", V=" + std::to_string(v);
   if (r < 1) throw InputError("--R " + std::to_string(r) + ": at least one radiosity processor is needed");
   if (v < 0) throw InputError("--V " + std::to_string(v) + ": must be 0 or more");
-  if (long(r) * (v + 1) > platform.node_count())
-    throw InputError(rv + " needs R x (V + 1) = " + std::to_string(long(r) * (v + 1)) +
+  // In 64 bits: R and V are up to 2^31 - 1 each.
+  if (long(r) * (long(v) + 1) > platform.node_count())
+    throw InputError(rv + " needs R x (V + 1) = " + std::to_string(long(r) * (long(v) + 1)) +
                      " nodes; the platform has " + std::to_string(platform.node_count()));
   if (r > int(scene.patches.size()))
     throw InputError(rv + ": more radiosity processors than the scene's " +
@@ -48,6 +51,34 @@ struct Programs {
   std::deque<VisibilityProcessor> visibility;
 };
 
+std::vector<NodeMemory> memory_plan(const Scene& scene, const SimulationConfig& config,
+                                    const CostModel& costs) {
+  const ProgramSetup setup{scene, Placement{config.radiosity_processors, config.visibility_processors},
+                           config.options, 0.0, config.block_size, config.pipelined};
+  return plan_memory(setup, partition_patches_by_elements(scene, config.radiosity_processors), costs);
+}
+
+// Why a finished run cannot be reported as ok ("" if it can): a node program that did not
+// reach its end, or a number that is not finite.
+std::string failure_of(const SimulationResult& result, const std::deque<NodeRuntime>& runtimes) {
+  for (const NodeRuntime& runtime : runtimes)
+    if (!runtime.finished())
+      return "node " + std::to_string(runtime.stats().node) + " (" + runtime.stats().role +
+             " processor) did not finish: the simulation stopped at " +
+             std::to_string(result.simulated_seconds) + " simulated seconds with it blocked";
+  const auto finite = [](double x) { return std::isfinite(x); };
+  if (!finite(result.simulated_seconds)) return "the simulated time is not finite";
+  for (double s : result.iteration_seconds)
+    if (!finite(s)) return "an iteration's simulated time is not finite";
+  for (const Rgb& b : result.patch_radiosity)
+    if (!finite(b.r) || !finite(b.g) || !finite(b.b)) return "a patch radiosity is not finite";
+  for (const NodeStats& n : result.nodes)
+    if (!finite(n.compute_seconds) || !finite(n.overhead_seconds) || !finite(n.waiting_seconds) ||
+        !finite(n.bytes_sent) || !finite(n.peak_memory_bytes))
+      return "a statistic of node " + std::to_string(n.node) + " is not finite";
+  return "";
+}
+
 void collect_solution(const Scene& scene, const Programs& programs, SimulationResult& result) {
   // Every element and patch is owned by exactly one radiosity processor.
   result.element_radiosity.assign(scene.elements.size(), Rgb(0.0));
@@ -59,6 +90,13 @@ void collect_solution(const Scene& scene, const Programs& programs, SimulationRe
 }
 
 }  // namespace
+
+OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig& config,
+                                     const PlatformConfig& platform, const CostModel& costs) {
+  for (const NodeMemory& m : memory_plan(scene, config, costs))
+    if (m.bytes > platform.node_memory) return {m.node, m.role, m.bytes, platform.node_memory};
+  return {};
+}
 
 SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
                                 const PlatformConfig& platform, const CostModel& costs) {
@@ -72,11 +110,10 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
 
   // Memory: every node's modeled bytes against its capacity, before anything runs.
   const std::vector<NodeMemory> memory = plan_memory(setup, owned, costs);
-  for (const NodeMemory& m : memory)
-    if (config.memory_cap && m.bytes > platform.node_memory && result.status == "ok") {
-      result.status = "out_of_memory";
-      result.out_of_memory = {m.node, m.role, m.bytes, platform.node_memory};
-    }
+  if (config.memory_cap) {
+    result.out_of_memory = first_node_out_of_memory(scene, config, platform, costs);
+    if (result.out_of_memory.node >= 0) result.status = "out_of_memory";
+  }
 
   Programs programs;
   std::vector<int> all_patches(scene.patches.size());
@@ -87,6 +124,8 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     programs.runtimes.back().set_memory(m.bytes);
   }
   if (result.status == "ok") {  // a node out of memory stops the run before it starts
+    if (long(scene.elements.size()) != scene.element_total())
+      throw std::logic_error("run_simulation: the scene's elements are not built");
     simgrid::s4u::Engine& engine = simgrid_engine(config.simgrid_arguments);
     std::vector<simgrid::s4u::Host*> hosts;
     if (platform.format == "simgrid-xml") {
@@ -145,6 +184,10 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   for (const NodeRuntime& runtime : programs.runtimes) {
     result.nodes.push_back(runtime.stats());
     result.counts += runtime.stats().counts;
+  }
+  if (result.status == "ok") {
+    result.failure = failure_of(result, programs.runtimes);
+    if (!result.failure.empty()) result.status = "failed";
   }
   result.host_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - host_start).count();

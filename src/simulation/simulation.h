@@ -49,8 +49,9 @@ struct OutOfMemory {
 };
 
 struct SimulationResult {
-  std::string status = "ok";  // or "out_of_memory"
+  std::string status = "ok";  // or "out_of_memory", or "failed"
   OutOfMemory out_of_memory;  // when status is "out_of_memory"
+  std::string failure;        // when status is "failed": why
   int iterations = 0;
   bool converged = false;
   double simulated_seconds = 0.0;
@@ -70,6 +71,15 @@ struct SimulationResult {
 void check_configuration(const Scene& scene, const SimulationConfig& config,
                          const PlatformConfig& platform);
 
+// The first node (in node order) whose modeled memory exceeds the platform's node memory;
+// node -1 when every node fits. Needs the patches' element counts only, not the elements,
+// so it can run before the host allocates them.
+OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig& config,
+                                     const PlatformConfig& platform, const CostModel& costs);
+
+// Runs the simulation. Unless a node is out of memory (config.memory_cap), the scene's
+// elements must be built. Status "failed" when a node program did not reach its end (the
+// simulation deadlocked) or a reported number is not finite; then `failure` says which.
 SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
                                 const PlatformConfig& platform, const CostModel& costs);
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <new>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
@@ -13,6 +14,7 @@
 #include "simulation/provenance.h"
 #include "simulation/result_file.h"
 #include "simulation/trace_file.h"
+#include "tools/output_files.h"
 #include "tools/progress.h"
 #include "tools/simulate_options.h"
 #include "util/input_error.h"
@@ -22,7 +24,7 @@ namespace {
 void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& config,
                    const ncube::SimulationResult& r) {
   std::printf("scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
-              scene.patches.size(), scene.elements.size());
+              scene.patches.size(), std::size_t(scene.element_total()));
   std::printf("configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
               config.radiosity_processors, config.visibility_processors, config.node_count(),
               config.options.samples);
@@ -44,50 +46,82 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
   std::printf("host seconds          %.3f\n", r.host_seconds);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// One run; returns the exit code or throws (main turns exceptions into exit codes).
+int simulate(int argc, char** argv) {
   ncube::SimulateOptions options;
   const int parse_status = ncube::parse_simulate_options(argc, argv, options);
   if (parse_status >= 0) return parse_status;
-  try {
-    const ncube::Scene scene = ncube::load_scene(options.scene_file);
-    const ncube::PlatformConfig platform =
-        ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
-    const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
-    ncube::check_configuration(scene, options.config, platform);
+  // Elements are built only after the memory check: a scene far too large for the modeled
+  // machine is refused (exit 3) before the host allocates it.
+  ncube::Scene scene = ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
+  const ncube::PlatformConfig platform =
+      ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
+  const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
+  ncube::check_configuration(scene, options.config, platform);
+  ncube::OutputFiles outputs({{"--json", options.json_file},
+                              {"--trace", options.trace_file},
+                              {"--image", options.image_file}},
+                             {options.scene_file, options.config.platform_file,
+                              options.config.cost_model_file});
+  if (!options.config.memory_cap ||
+      ncube::first_node_out_of_memory(scene, options.config, platform, costs).node < 0)
+    scene.build_elements();
 
-    std::optional<ncube::Progress> progress;
-    if (!options.quiet && ncube::stderr_is_terminal()) {
-      progress.emplace(stderr, options.config.options.max_iterations);
-      options.config.on_iteration = [&progress](const ncube::IterationReport& r) { progress->report(r); };
-    }
-    const ncube::SimulationResult result =
-        ncube::run_simulation(scene, options.config, platform, costs);
-    progress.reset();
-    nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
-    result_json["provenance"] = ncube::provenance_to_json(
-        {options.command_line, options.scene_file, options.config.platform_file,
-         options.config.cost_model_file},
-        scene, platform, costs, result);
-    if (!options.quiet) print_summary(scene, options.config, result);
-    if (!options.json_file.empty())
-      ncube::write_file_atomically(options.json_file, result_json.dump(1) + "\n");
-    if (!options.trace_file.empty())
-      ncube::write_file_atomically(options.trace_file, ncube::trace_to_json(result));
-    if (result.status == "out_of_memory") {
-      std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
-                   result.out_of_memory.node, result.out_of_memory.role.c_str(),
-                   result.out_of_memory.needed_bytes, result.out_of_memory.available_bytes);
-      return ncube::kExitOutOfMemory;
-    }
-    if (!options.image_file.empty())
-      ncube::write_png(ncube::render_solution(scene, scene.camera, result.element_radiosity,
-                                              options.image_width, options.image_height),
-                       options.image_file);
-    return ncube::kExitOk;
+  std::optional<ncube::Progress> progress;
+  if (!options.quiet && ncube::stderr_is_terminal()) {
+    progress.emplace(stderr, options.config.options.max_iterations);
+    options.config.on_iteration = [&progress](const ncube::IterationReport& r) { progress->report(r); };
+  }
+  const ncube::SimulationResult result =
+      ncube::run_simulation(scene, options.config, platform, costs);
+  progress.reset();
+  nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
+  result_json["provenance"] = ncube::provenance_to_json(
+      {options.command_line, options.scene_file, options.config.platform_file,
+       options.config.cost_model_file},
+      scene, platform, costs, result);
+  if (!options.quiet) print_summary(scene, options.config, result);
+  if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
+  if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result));
+  if (!options.image_file.empty() && result.status == "ok")
+    outputs.write("--image", ncube::encode_png(ncube::render_solution(
+                                 scene, scene.camera, result.element_radiosity,
+                                 options.image_width, options.image_height)));
+  outputs.commit();
+  if (result.status == "out_of_memory") {
+    std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
+                 result.out_of_memory.node, result.out_of_memory.role.c_str(),
+                 result.out_of_memory.needed_bytes, result.out_of_memory.available_bytes);
+    return ncube::kExitOutOfMemory;
+  }
+  if (result.status == "failed") {
+    std::fprintf(stderr, "simulate: the simulation failed: %s\n", result.failure.c_str());
+    return ncube::kExitSimulationFailed;
+  }
+  return ncube::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Every exception ends in one message and its own exit code (docs/cli.md); the output
+  // files are removed as the stack unwinds.
+  try {
+    return simulate(argc, argv);
   } catch (const ncube::InputError& e) {
     std::cerr << "simulate: " << e.what() << "\n";
     return ncube::kExitBadInput;
+  } catch (const ncube::OutputError& e) {
+    std::cerr << "simulate: " << e.what() << " (no output file was written)\n";
+    return ncube::kExitCannotWrite;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "simulate: the host ran out of memory (no output file was written)\n";
+    return ncube::kExitHostOutOfMemory;
+  } catch (const std::exception& e) {
+    std::cerr << "simulate: internal error: " << e.what() << "\n";
+    return ncube::kExitInternalError;
+  } catch (...) {
+    std::cerr << "simulate: internal error: an unknown exception\n";
+    return ncube::kExitInternalError;
   }
 }

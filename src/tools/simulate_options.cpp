@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <regex>
 
 #include "util/input_error.h"
 #include "util/version.h"
@@ -22,6 +24,33 @@ std::string resolve_scene_path(const std::string& name) {
   return fs::exists(in_scenes) ? in_scenes.string() : name;
 }
 
+namespace {
+
+// Counts are written in decimal: CLI11 would read "010" as 8 (octal) and accept "0x10";
+// both are almost surely typos in a command line of this program.
+const CLI::Validator kDecimalInteger(
+    [](std::string& text) -> std::string {
+      static const std::regex decimal("-?(0|[1-9][0-9]{0,9})");
+      if (std::regex_match(text, decimal)) return "";
+      return "'" + text + "' is not a decimal integer (digits without leading zeros or prefixes)";
+    },
+    "INT");
+
+// --convergence: a finite fraction in [kMinConvergence, 1]. The run stops when the largest
+// unshot power falls below this fraction of the emitted power; each round of shots lowers
+// it by about the mean reflectance, so far smaller fractions (or 0, NaN) would not stop.
+constexpr double kMinConvergence = 1e-10;
+const CLI::Validator kConvergenceFraction(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (!text.empty() && *end == '\0' && value >= kMinConvergence && value <= 1.0) return "";
+      return "'" + text + "' is not a number from 1e-10 to 1";
+    },
+    "FRACTION");
+
+}  // namespace
+
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   const std::string root = repository_root();
   SimulationConfig& config = options.config;
@@ -39,21 +68,25 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "scene file (JSON); a bare name is also looked up in scenes/")
       ->required();
   app.add_option("--R", config.radiosity_processors, "radiosity processors")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kDecimalInteger);
   app.add_option("--V", config.visibility_processors,
                  "visibility processors per radiosity processor")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kDecimalInteger);
   app.add_option("--samples", config.options.samples,
                  "M, parts of the shooter (one ray each): a perfect square from 1 to 64")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kDecimalInteger);
   app.add_option("--iterations", config.options.max_iterations,
                  "stop after N shots (-1: until converged)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kDecimalInteger & CLI::Range(-1, std::numeric_limits<int>::max()));
   app.add_option("--convergence", config.options.convergence_fraction,
                  "converged when the largest unshot power is below this fraction of the "
-                 "emitted power")
+                 "emitted power (1e-10 to 1)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(kConvergenceFraction);
   app.add_option("--ray-test", ray_test,
                  "how far the brute-force loop runs per ray: all (every other patch, "
                  "section 2.2) or first-blocker")
@@ -65,7 +98,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--block-size", config.block_size,
                  "visibility points per message to a visibility processor (section 3)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000000));
+      ->check(kDecimalInteger & CLI::Range(1, 1000000));
   app.add_flag("--pipelined", config.pipelined,
                "send the next block of points before using the answers of this one");
   bool unlimited_memory = false;
@@ -75,16 +108,22 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       ->capture_default_str();
   app.add_option("--cost-model", config.cost_model_file, "flops per counted operation")
       ->capture_default_str();
-  app.add_option("--json", options.json_file, "write the result file here");
-  app.add_option("--image", options.image_file, "render the solution to this PNG file");
+  // An output option given an empty file name is an error, not "no output".
+  const CLI::Validator kFileName(
+      [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : ""; },
+      "FILE");
+  app.add_option("--json", options.json_file, "write the result file here")->check(kFileName);
+  app.add_option("--image", options.image_file, "render the solution to this PNG file")
+      ->check(kFileName);
   app.add_option("--trace", options.trace_file,
-                 "write every node's timeline as a Chrome trace-event file (Perfetto)");
+                 "write every node's timeline as a Chrome trace-event file (Perfetto)")
+      ->check(kFileName);
   app.add_option("--image-width", options.image_width, "picture width in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
+      ->check(kDecimalInteger & CLI::Range(16, 8192));
   app.add_option("--image-height", options.image_height, "picture height in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
+      ->check(kDecimalInteger & CLI::Range(16, 8192));
   app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
   std::vector<std::string> cfg, log;
   app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "

@@ -13,9 +13,20 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An output file that could not be written after the run (disk full, file-size limit, I/O
+// error); the command-line tools turn it into exit code 5 and leave no output file.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Exit codes of the command-line tools (documented in docs/cli.md).
 constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;
-constexpr int kExitOutOfMemory = 3;
+constexpr int kExitOutOfMemory = 3;       // a simulated node's memory (the model)
+constexpr int kExitSimulationFailed = 4;  // a node did not finish, or a result is not finite
+constexpr int kExitCannotWrite = 5;       // an output file could not be written
+constexpr int kExitHostOutOfMemory = 6;   // the host running the simulator (std::bad_alloc)
+constexpr int kExitInternalError = 7;     // any other exception: a bug of the simulator
 
 }  // namespace ncube

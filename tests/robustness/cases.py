@@ -1,0 +1,360 @@
+"""The inputs that tests/robustness/run.py tries on ./simulate: malformed scenes, bad option
+sets, output-path cases and bad machine files, each with the outcome it must have.
+
+Every case is a dict:
+  group     "scene", "options", "outputs" or "machine" (the rows of the table)
+  name      short description, unique
+  args      the command line after the simulate binary (paths already in the work folder)
+  expect    "error" (exit 2), "ok" (exit 0), "oom" (exit 3), "write" (exit 5: an output
+            could not be written), "help" (exit 0, no simulation)
+  outputs   output files the command names: none may exist after a failure
+  inputs    input files that must not change
+  fsize     optional file-size limit in bytes for the run (a "full disk")
+  same_as   optional name of an "ok" case whose patch radiosities the result must equal
+  memory_mb optional address-space limit of this case, instead of the script's
+"""
+import copy
+import json
+import os
+from pathlib import Path
+
+# A light square at y = 2 facing down, a floor facing up and a wall: small enough that a
+# simulation takes milliseconds.
+ROOM = {
+    "name": "room",
+    "camera": {"eye": [0.5, 1, 3], "look_at": [0.5, 1, 0], "up": [0, 1, 0], "fov_deg": 55},
+    "patches": [
+        {"vertices": [[0, 2, 0], [1, 2, 0], [1, 2, 1], [0, 2, 1]],
+         "reflectance": [0.5, 0.5, 0.5], "emission": [10, 8, 6], "elements": [2, 2]},
+        {"vertices": [[0, 0, 0], [0, 0, 1], [1, 0, 1], [1, 0, 0]],
+         "reflectance": [0.6, 0.5, 0.4], "elements": [3, 3]},
+        {"vertices": [[0, 0, 0], [1, 0, 0], [1, 2, 0], [0, 2, 0]],
+         "reflectance": [0.7, 0.7, 0.7], "elements": [2, 3]},
+    ],
+}
+
+QUICK = ["--iterations", "3"]
+
+
+def room(**changes):
+    """ROOM with top-level keys replaced; patch fields as patch<i>_<key>; None deletes."""
+    scene = copy.deepcopy(ROOM)
+    for key, value in changes.items():
+        target, field = scene, key
+        if key.startswith("patch") and "_" in key:
+            index, field = key[5:].split("_", 1)
+            target = scene["patches"][int(index)]
+        elif key.startswith("camera_"):
+            target, field = scene["camera"], key[7:]
+        if value is None:
+            target.pop(field, None)
+        else:
+            target[field] = value
+    return scene
+
+
+def scaled(scene, factor):
+    scene = copy.deepcopy(scene)
+    for patch in scene["patches"]:
+        patch["vertices"] = [[c * factor for c in v] for v in patch["vertices"]]
+    if "camera" in scene:
+        for key in ("eye", "look_at"):
+            scene["camera"][key] = [c * factor for c in scene["camera"][key]]
+    return scene
+
+
+def nested(depth, inner="1"):
+    return "[" * depth + inner + "]" * depth
+
+
+def scene_texts(root):
+    """(name, text, expect, extra args) of the scene cases."""
+    light = ROOM["patches"][0]
+    cases = [
+        ("empty file", "", "error"),
+        ("only whitespace", " \n\t ", "error"),
+        ("unterminated object", '{"name": "x", "patches": [', "error"),
+        ("top-level array", "[]", "error"),
+        ("top-level null", "null", "error"),
+        ("top-level number", "1", "error"),
+        ("top-level string", '"scene"', "error"),
+        ("trailing comma", json.dumps(ROOM)[:-1] + ",}", "error"),
+        ("NaN literal", json.dumps(ROOM).replace("0.5, 0.5, 0.5", "NaN, 0.5, 0.5", 1), "error"),
+        ("Infinity literal", json.dumps(ROOM).replace("[10, 8, 6]", "[Infinity, 8, 6]"), "error"),
+        ("number 1e999", json.dumps(ROOM).replace("[10, 8, 6]", "[1e999, 8, 6]"), "error"),
+        ("invalid UTF-8", json.dumps(ROOM).replace('"room"', '"ro\xffm"').encode("latin-1"), "error"),
+        ("control character in string", json.dumps(ROOM).replace('"room"', '"ro\x01m"'), "error"),
+        ("trailing garbage", json.dumps(ROOM) + " x", "error"),
+        ("two documents", json.dumps(ROOM) + json.dumps(ROOM), "error"),
+        ("missing name", room(name=None), "error"),
+        ("name is a number", room(name=3), "error"),
+        ("empty name", room(name=""), "error"),
+        ("unknown top-level key", room(patchs=[]), "error"),
+        ("duplicate top-level key", json.dumps(ROOM)[:-1] + ', "name": "again"}', "error"),
+        ("duplicate patch key", json.dumps(ROOM).replace('"elements": [2, 2]',
+                                                         '"elements": [2, 2], "elements": [1, 1]'),
+         "error"),
+        ("duplicate camera key", json.dumps(ROOM).replace('"fov_deg": 55', '"fov_deg": 55, "up": [0, 1, 0]'),
+         "error"),
+        ("patches missing", room(patches=None), "error"),
+        ("patches an object", room(patches={}), "error"),
+        ("patches empty", room(patches=[]), "error"),
+        ("patch a string", room(patches=[light, "wall"]), "error"),
+        ("no light", room(patch0_emission=None), "error"),
+        ("camera a string", room(camera="front"), "error"),
+        ("camera unknown key", room(camera_fov=40), "error"),
+        ("camera up missing", room(camera_up=None), "error"),
+        ("camera eye 2 coordinates", room(camera_eye=[0, 1]), "error"),
+        ("camera coordinate a string", room(camera_look_at=[0, "1", 0]), "error"),
+        ("camera fov 0", room(camera_fov_deg=0), "error"),
+        ("camera fov 180", room(camera_fov_deg=180), "error"),
+        ("camera look_at equals eye", room(camera_look_at=[0.5, 1, 3]), "error"),
+        ("camera up zero", room(camera_up=[0, 0, 0]), "error"),
+        ("camera up along view", room(camera_up=[0, 0, 1]), "error"),
+        ("camera eye at 1e308", room(camera_eye=[1e308, 1e308, 1e308]), "error"),
+        ("camera eye and look_at at +-1e308", room(camera_eye=[1e308, 0, 0],
+                                                   camera_look_at=[-1e308, 0, 0]), "error"),
+        ("camera up 1e308", room(camera_up=[1e308, 1e308, 0]), "ok"),
+        ("camera up 1e-300", room(camera_up=[0, 1e-300, 0]), "ok"),
+        ("vertices 2 points", room(patch1_vertices=[[0, 0, 0], [1, 0, 0]]), "error"),
+        ("vertices 5 points", room(patch1_vertices=[[0, 0, 0], [0, 0, 1], [1, 0, 1], [1, 0, 0], [0.5, 0, 0]]),
+         "error"),
+        ("vertex 2 coordinates", room(patch1_vertices=[[0, 0], [0, 0, 1], [1, 0, 0]]), "error"),
+        ("vertex coordinate a string", room(patch1_vertices=[[0, 0, "0"], [0, 0, 1], [1, 0, 0]]), "error"),
+        ("vertices an object", room(patch1_vertices={"a": 1}), "error"),
+        ("coincident vertices", room(patch1_vertices=[[0, 0, 0], [0, 0, 0], [1, 0, 0]]), "error"),
+        ("collinear triangle", room(patch1_vertices=[[0, 0, 0], [0, 0, 1], [0, 0, 2]]), "error"),
+        ("non-planar quad", room(patch1_vertices=[[0, 0, 0], [0, 0, 1], [1, 0.5, 1], [1, 0, 0]]), "error"),
+        ("bow-tie quad", room(patch1_vertices=[[0, 0, 0], [1, 0, 1], [0, 0, 1], [1, 0, 0]]), "error"),
+        ("reflex quad", room(patch1_vertices=[[0, 0, 0], [0, 0, 1], [0.2, 0, 0.2], [1, 0, 0]]), "error"),
+        ("straight corner", room(patch1_vertices=[[0, 0, 0], [0, 0, 1], [0, 0, 2], [1, 0, 0]]), "error"),
+        ("vertex at 1e308", room(patch1_vertices=[[0, 0, 0], [0, 0, 1e308], [1e308, 0, 0]]), "error"),
+        ("vertices 1e-320 apart", room(patch1_vertices=[[0, 0, 0], [0, 0, 1e-320], [1e-320, 0, 0]]), "error"),
+        ("patch 1e-200 in a room of size 1", room(patch1_vertices=[[0, 0, 0], [0, 0, 1e-200], [1e-200, 0, 0]]),
+         "error"),
+        ("reflectance 1", room(patch1_reflectance=[1, 0.5, 0.5]), "error"),
+        ("reflectance negative", room(patch1_reflectance=[-0.1, 0.5, 0.5]), "error"),
+        ("reflectance a string", room(patch1_reflectance="grey"), "error"),
+        ("reflectance 2 channels", room(patch1_reflectance=[0.5, 0.5]), "error"),
+        ("reflectance null channel", room(patch1_reflectance=[0.5, None, 0.5]), "error"),
+        ("reflectance missing", room(patch1_reflectance=None), "error"),
+        ("emission negative", room(patch0_emission=[-1, 8, 6]), "error"),
+        ("emission 1e305", room(patch0_emission=[1e305, 1e305, 1e305]), "error"),
+        ("emission 1e308", room(patch0_emission=[1e308, 0, 0]), "error"),
+        ("emission 1e-300", room(patch0_emission=[1e-300, 0, 0]), "error"),
+        ("elements 1 number", room(patch1_elements=[4]), "error"),
+        ("elements fraction", room(patch1_elements=[2.5, 2]), "error"),
+        ("elements 2.0", room(patch1_elements=[2.0, 2]), "error"),
+        ("elements zero", room(patch1_elements=[0, 2]), "error"),
+        ("elements negative", room(patch1_elements=[-1, 2]), "error"),
+        ("elements a string", room(patch1_elements=["2", 2]), "error"),
+        ("elements 2000 x 2000", room(patch1_elements=[2000, 2000]), "error"),
+        ("elements 2^64 - 1", room(patch1_elements=[18446744073709551615, 1]), "error"),
+        ("elements -2^63", room(patch1_elements=[-9223372036854775808, 1]), "error"),
+        ("elements nested 100 deep", json.dumps(ROOM).replace('"elements": [3, 3]',
+                                                              '"elements": ' + nested(100)), "error"),
+        ("elements nested 70000 deep", json.dumps(ROOM).replace('"elements": [3, 3]',
+                                                                '"elements": ' + nested(70000)), "error"),
+        ("vertices nested 70000 deep", json.dumps(ROOM).replace('"elements": [3, 3]',
+                                                                '"vertices": ' + nested(70000)), "error"),
+        ("top level nested 70000 deep", nested(70000), "error"),
+        ("object nested 70000 deep", '{"a":' * 70000 + "1" + "}" * 70000, "error"),
+        ("unknown key of 1 MB", room(**{"x" * 1000000: 1}), "error"),
+        ("unknown key with a newline", room(**{"bad\nkey": 1}), "error"),
+        ("elements a 1 MB string", room(patch1_elements="x" * 1000000), "error"),
+        ("17 patches of 1024 x 1024 elements",
+         room(patches=[light] + [ROOM["patches"][1] | {"elements": [1024, 1024]}] * 17), "error"),
+    ]
+    # Within the documented limits, but far beyond the 4 MB of a node: exit 3, fast.
+    cases.append(("16 patches of 1024 x 1024 elements",
+                  room(patches=[light] + [ROOM["patches"][1] | {"elements": [1024, 1024]}] * 15), "oom"))
+    # Many patches (34 MB): loading must be linear (the memory plan then refuses them).
+    # Linear loading takes about 2.5 s of CPU here, the quadratic one of main c39b79f
+    # about 70 s: the timeout tells them apart.
+    many = room(patches=[light] + [ROOM["patches"][1]] * 300000)
+    cases.append(("300000 patches", many, "oom"))
+    scene0 = json.loads((root / "scenes" / "scene0.json").read_text())
+    cases.append(("scene0", scene0, "ok"))
+    for factor in (1e75, 1e-100, 1e150, 1e-150):
+        cases.append((f"scene0 scaled by {factor:g}", scaled(scene0, factor), "ok"))
+    # Scaling by a power of two is exact: the radiosities must be the same.
+    for exponent in (250, -250):
+        cases.append((f"scene0 scaled by 2^{exponent}", scaled(scene0, 2.0 ** exponent), "ok"))
+    return cases
+
+
+def scene_cases(root, work):
+    cases = []
+    for index, (name, content, expect) in enumerate(scene_texts(root)):
+        path = work / f"scene{index:03d}.json"
+        if isinstance(content, dict):
+            content = json.dumps(content)
+        path.write_bytes(content if isinstance(content, bytes) else content.encode())
+        out = work / f"scene{index:03d}.out.json"
+        case = {"group": "scene", "name": name, "args": [str(path), *QUICK, "--json", str(out)],
+                "expect": expect, "outputs": [out], "inputs": [path]}
+        if name.startswith("scene0 scaled by 2^"):
+            case["same_as"] = "scene0"
+        if name == "300000 patches":
+            case["memory_mb"] = 2048  # the JSON document of 34 MB takes about 500 MB
+        cases.append(case)
+    cases += [
+        {"group": "scene", "name": "scene is /dev/zero", "args": ["/dev/zero", "--json", str(work / "z.json")],
+         "expect": "error", "outputs": [work / "z.json"]},
+        {"group": "scene", "name": "scene is a directory", "args": [str(work), "--json", str(work / "d.json")],
+         "expect": "error", "outputs": [work / "d.json"]},
+        {"group": "scene", "name": "scene missing", "args": [str(work / "missing.json")], "expect": "error"},
+        {"group": "scene", "name": "scene path empty", "args": [""], "expect": "error"},
+    ]
+    return cases
+
+
+def option_cases(root, work):
+    scene = "scene0.json"
+    out = work / "options.out.json"
+    sets = [
+        (["--bogus"], "error"), (["--R", "2.5"], "error"), (["--R", "0"], "error"),
+        (["--R", "-1"], "error"), (["--R", "010"], "error"), (["--R", "0x10"], "error"),
+        (["--R", "0b11"], "error"), (["--R", "1e3"], "error"), (["--R", ""], "error"),
+        (["--R", "99999999999"], "error"), (["--R", "2147483647"], "error"), (["--R", " 4"], "error"),
+        (["--R"], "error"), (["--V", "-1"], "error"), (["--V", "1.5"], "error"),
+        (["--R", "2", "--V", "2147483647"], "error"), (["--R", "2147483647", "--V", "2147483647"], "error"),
+        (["--V", "64"], "error"), (["--R", "8", "--V", "8"], "error"), (["--R", "53"], "error"),
+        (["--samples", "20"], "error"), (["--samples", "0"], "error"), (["--samples", "65"], "error"),
+        (["--samples", "-4"], "error"), (["--samples", "100"], "error"), (["--samples", "016"], "error"),
+        (["--iterations", "-5"], "error"), (["--iterations", "-2"], "error"),
+        (["--iterations", "abc"], "error"), (["--iterations", "1.5"], "error"),
+        (["--convergence", "0"], "error"), (["--convergence", "nan"], "error"),
+        (["--convergence", "1e-300"], "error"), (["--convergence", "-1"], "error"),
+        (["--convergence", "2"], "error"), (["--convergence", "inf"], "error"),
+        (["--convergence", "abc"], "error"), (["--convergence", "1e-400"], "error"),
+        (["--block-size", "0"], "error"), (["--block-size", "-1"], "error"),
+        (["--block-size", "1000001"], "error"), (["--block-size", "abc"], "error"),
+        (["--ray-test", "some"], "error"), (["--image-width", "15", "--image", str(work / "w.png")], "error"),
+        (["--image-height", "8193", "--image", str(work / "h.png")], "error"),
+        (["--platform", str(work / "none.json")], "error"),
+        (["--cost-model", str(work / "none.json")], "error"),
+        (["scene1.json"], "error"),  # a second scene
+        (["--R", "4", "--V", "3"], "ok"), (["--R", "5", "--V", "2", "--pipelined", "--block-size", "7"], "ok"),
+        (["--iterations", "0"], "ok"), (["--convergence", "1"], "ok"),
+    ]
+    cases = [{"group": "options", "name": " ".join(a) or "(none)",
+              "args": [scene, *([] if "--iterations" in a else QUICK), *a, "--json", str(out)],
+              "expect": expect, "outputs": [out] + [Path(x) for x in a if x.endswith(".png")]}
+             for a, expect in sets]
+    cases.append({"group": "options", "name": "no scene", "args": ["--R", "2"], "expect": "error"})
+    cases.append({"group": "options", "name": "--help", "args": ["--help"], "expect": "help"})
+    cases.append({"group": "options", "name": "--iterations -1 converges", "expect": "ok",
+                  "args": [str(work / "conv.json"), "--iterations", "-1", "--json", str(out)],
+                  "outputs": [out]})
+    (work / "conv.json").write_text(json.dumps(ROOM))
+    return cases
+
+
+def output_cases(root, work):
+    scene, platform, costs = work / "input.json", work / "platform.json", work / "costs.json"
+    # Written again before every case, in case an earlier one overwrote them.
+    files = {scene: json.dumps(ROOM).encode(),
+             platform: (root / "platforms" / "ncube2.json").read_bytes(),
+             costs: (root / "platforms" / "cost_model.json").read_bytes()}
+    for path, content in files.items():
+        path.write_bytes(content)
+    (work / "a-file").write_text("")
+    (work / "link.json").symlink_to(scene)
+    base = [str(scene), *QUICK, "--platform", str(platform), "--cost-model", str(costs)]
+    j, t, i = work / "o.json", work / "o.trace.json", work / "o.png"
+    inputs = [scene, platform, costs]
+    sets = [
+        ("--json empty", ["--json", ""], "error", []),
+        ("--image empty", ["--json", str(j), "--image", ""], "error", [j]),
+        ("--trace empty", ["--json", str(j), "--trace", ""], "error", [j]),
+        ("--json in a missing folder", ["--json", str(work / "nowhere" / "o.json")], "error", []),
+        ("--image in a missing folder", ["--json", str(j), "--image", str(work / "nowhere" / "o.png")],
+         "error", [j]),
+        ("--trace in a missing folder", ["--json", str(j), "--trace", str(work / "nowhere" / "t.json")],
+         "error", [j]),
+        ("--image under a file", ["--json", str(j), "--image", str(work / "a-file" / "o.png")], "error", [j]),
+        ("--json is a folder", ["--json", str(work)], "error", []),
+        ("--json ends with /", ["--json", str(work / "o.json") + "/"], "error", []),
+        ("--json is the scene", ["--json", str(scene)], "error", []),
+        ("--image is the scene", ["--image", str(scene)], "error", []),
+        ("--trace is the scene", ["--trace", str(scene)], "error", []),
+        ("--json is the scene through a symlink", ["--json", str(work / "link.json")], "error", []),
+        ("--json is the scene by another spelling", ["--json", str(work / "." / "input.json")], "error", []),
+        ("--json is the platform", ["--json", str(platform)], "error", []),
+        ("--trace is the cost model", ["--trace", str(costs)], "error", []),
+        ("--json and --trace the same", ["--json", str(j), "--trace", str(j)], "error", [j]),
+        ("--json and --image the same", ["--json", str(j), "--image", str(j)], "error", [j]),
+        ("--trace and --image the same", ["--trace", str(t), "--image", str(t)], "error", [t]),
+        ("all three outputs", ["--json", str(j), "--trace", str(t), "--image", str(i)], "ok", [j, t, i]),
+    ]
+    cases = [{"group": "outputs", "name": name, "args": base + a, "expect": expect,
+              "outputs": outputs, "inputs": inputs, "files": files} for name, a, expect, outputs in sets]
+    # A full disk: the result file fits, the trace does not. Nothing may remain.
+    cases.append({"group": "outputs", "name": "disk full while writing the trace", "expect": "write",
+                  "args": [str(root / "scenes" / "scene0.json"), "--R", "4", "--V", "3", "--iterations", "3",
+                           "--json", str(j), "--trace", str(t)], "outputs": [j, t], "fsize": 32 * 1024})
+    cases.append({"group": "outputs", "name": "disk full while writing the picture", "expect": "write",
+                  "args": base + ["--json", str(j), "--image", str(i)], "outputs": [j, i],
+                  "fsize": 4 * 1024, "files": files})
+    return cases
+
+
+def machine_cases(root, work):
+    ncube2 = json.loads((root / "platforms" / "ncube2.json").read_text())
+    model = json.loads((root / "platforms" / "cost_model.json").read_text())
+    scene = work / "machine-scene.json"
+    scene.write_text(json.dumps(ROOM))
+    out = work / "m.json"
+    cases = []
+
+    def platform_with(name, value, expect="error"):
+        p = copy.deepcopy(ncube2)
+        p["parameters"][name]["value"] = value
+        path = work / f"platform-{len(cases)}.json"
+        path.write_text(json.dumps(p))
+        cases.append({"group": "machine", "name": f"platform {name} {value}", "expect": expect,
+                      "args": [str(scene), *QUICK, "--platform", str(path), "--json", str(out)],
+                      "outputs": [out]})
+
+    def costs_with(name, value, expect="error"):
+        m = copy.deepcopy(model)
+        m["parameters"][name]["value"] = value
+        path = work / f"costs-{len(cases)}.json"
+        path.write_text(json.dumps(m))
+        cases.append({"group": "machine", "name": f"cost model {name} {value}", "expect": expect,
+                      "args": [str(scene), *QUICK, "--cost-model", str(path), "--json", str(out)],
+                      "outputs": [out]})
+
+    platform_with("node_speed", 1e-300)
+    platform_with("node_speed", 0)
+    platform_with("link_bandwidth", 1e-300)
+    platform_with("hop_latency", 1e300)
+    platform_with("send_overhead", -1)
+    platform_with("send_overhead", 1e300)
+    platform_with("dimension", 14)
+    platform_with("dimension", 2.5)
+    platform_with("node_memory", 0)
+    costs_with("flops_per_ray", 1e300)
+    costs_with("flops_per_ray", -1)
+    costs_with("element_bytes", 1e300)
+    for name, text in [("platform /dev/zero", None), ("platform nested 70000 deep", nested(70000)),
+                       ("platform empty", ""), ("platform with a duplicate key", None)]:
+        path = work / f"platform-text-{len(cases)}.json"
+        if text is None and "duplicate" in name:
+            raw = json.dumps(ncube2)
+            text = raw[:-1] + ', "parameters": {}}'
+        if text is None:
+            path = Path("/dev/zero")
+        else:
+            path.write_text(text)
+        cases.append({"group": "machine", "name": name, "expect": "error",
+                      "args": [str(scene), *QUICK, "--platform", str(path), "--json", str(out)],
+                      "outputs": [out]})
+    return cases
+
+
+def all_cases(root, work):
+    root, work = Path(root), Path(work)
+    return (scene_cases(root, work) + option_cases(root, work) + output_cases(root, work) +
+            machine_cases(root, work))

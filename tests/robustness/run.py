@@ -1,0 +1,183 @@
+#!/usr/bin/python3
+"""Tries ./simulate on malformed scenes, bad option sets, output-path cases and bad machine
+files (tests/robustness/cases.py) and tabulates the outcomes.
+
+Usage: run.py SIMULATE [--root REPO] [--timeout S] [--memory-mb MB] [--list]
+
+Each run gets a wall-clock timeout and an address-space limit (ulimit -v), so no input can
+hang or exhaust the machine running the script. Outcomes:
+  clean error     exit 2 as expected: a message on stderr of at most 2 lines and 2000 bytes,
+                  no output file left, inputs unchanged
+  clean other     the expected exit 0 (sane result file), 3 (out of memory) or 5 (an output
+                  could not be written), with the same checks
+  crash/signal    killed by a signal (abort, segmentation fault, ...)
+  hang/timeout    still running at the timeout
+  wrong exit      any other exit code than expected
+  bad output      the expected exit code, but an output or temporary file left behind, an input changed, a
+                  message too long, or a result file with status other than expected,
+                  null or non-finite numbers, or radiosities that differ from the reference
+Exit status: 0 when every case is clean, 1 otherwise (ctest runs it).
+"""
+import argparse
+import hashlib
+import json
+import math
+import os
+import resource
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import cases as case_list  # noqa: E402
+
+EXIT = {"error": 2, "ok": 0, "help": 0, "oom": 3, "write": 5}
+COLUMNS = ["clean error", "clean other", "crash/signal", "hang/timeout", "wrong exit", "bad output"]
+
+
+def digest(path):
+    try:
+        return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    except OSError:
+        return None
+
+
+def numbers_finite(value):
+    if value is None:
+        return False
+    if isinstance(value, float):
+        return math.isfinite(value)
+    if isinstance(value, dict):
+        return all(numbers_finite(v) for v in value.values())
+    if isinstance(value, list):
+        return all(numbers_finite(v) for v in value)
+    return True
+
+
+def check_result(case, results):
+    """Problems with the result file of a run that exited as expected."""
+    outputs = case.get("outputs", [])
+    json_out = next((p for a, p in zip(case["args"], case["args"][1:]) if a == "--json"), None)
+    if case["expect"] not in ("ok", "oom"):
+        return [f"left {p}" for p in outputs if Path(p).exists()]
+    if case["expect"] == "ok":
+        missing = [f"missing {p}" for p in outputs if not Path(p).exists()]
+        if missing:
+            return missing
+    if not json_out:
+        return []
+    try:
+        result = json.loads(Path(json_out).read_text())
+    except (OSError, ValueError) as error:
+        return [f"result file unreadable: {error}"]
+    problems = []
+    want = "ok" if case["expect"] == "ok" else "out_of_memory"
+    if result.get("status") != want:
+        problems.append(f"status {result.get('status')}")
+    # The one documented null of a sound result: no mean seconds per iteration without
+    # iterations (docs/result-format.md).
+    checked = dict(result)
+    if checked.get("iterations") == 0 and checked.get("seconds_per_iteration") is None:
+        checked.pop("seconds_per_iteration")
+    if not numbers_finite(checked):
+        problems.append("null or non-finite numbers in the result file")
+    reference = results.get(case.get("same_as"))
+    if reference and case["expect"] == "ok":
+        for a, b in zip(reference.get("patch_radiosity", []), result.get("patch_radiosity", [])):
+            if any(x is None or y is None or abs(x - y) > 1e-6 * (1 + abs(x)) for x, y in zip(a, b)):
+                problems.append("radiosities differ from " + case["same_as"])
+                break
+    if case["expect"] == "ok":
+        results[case["name"]] = result
+    return problems
+
+
+def run_case(simulate, case, timeout, memory_bytes, results, work):
+    for p in case.get("outputs", []):
+        if Path(p).is_file():
+            Path(p).unlink()
+    for path, content in case.get("files", {}).items():
+        Path(path).write_bytes(content)
+    before = {str(p): digest(p) for p in case.get("inputs", [])}
+
+    if case.get("memory_mb"):
+        memory_bytes = case["memory_mb"] << 20
+
+    def limits():
+        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
+        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+        if case.get("fsize"):
+            resource.setrlimit(resource.RLIMIT_FSIZE, (case["fsize"], case["fsize"]))
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # writes fail with EFBIG instead
+        os.setsid()
+
+    start = time.monotonic()
+    process = subprocess.Popen([simulate, *case["args"]], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, preexec_fn=limits)
+    try:
+        _, stderr = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        return "hang/timeout", f"still running after {timeout} s", time.monotonic() - start
+    seconds = time.monotonic() - start
+    code = process.returncode
+    message = stderr.decode(errors="replace")
+    if code < 0:
+        return "crash/signal", f"signal {-code}: {message[:200]!r}", seconds
+    if code != EXIT[case["expect"]]:
+        left = [str(p) for p in case.get("outputs", []) if Path(p).exists()]
+        return ("wrong exit", f"exit {code}, expected {EXIT[case['expect']]}: {message[:200]!r}" +
+                (f" (left {', '.join(left)})" if code != 0 and left else ""), seconds)
+    problems = check_result(case, results)
+    stray = [str(p) for p in Path(work).rglob("*.partial*")]
+    for p in stray:
+        Path(p).unlink()
+    problems += [f"left temporary file {p}" for p in stray]
+    problems += [f"changed input {p}" for p, d in before.items() if digest(p) != d]
+    if code != 0 and (not message.strip() or len(message.splitlines()) > 2 or len(message) > 2000):
+        problems.append(f"message of {len(message.splitlines())} lines, {len(message)} bytes")
+    if problems:
+        return "bad output", "; ".join(problems), seconds
+    return ("clean error" if case["expect"] == "error" else "clean other"), message.strip()[:200], seconds
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("simulate")
+    parser.add_argument("--root", default=str(Path(__file__).resolve().parents[2]))
+    parser.add_argument("--timeout", type=float, default=10.0, help="seconds per run")
+    parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per run")
+    parser.add_argument("--list", action="store_true", help="print every case and its outcome")
+    args = parser.parse_args()
+    os.environ["NCUBE_ROOT"] = args.root
+    with tempfile.TemporaryDirectory() as work:
+        cases = case_list.all_cases(args.root, work)
+        table, failures, results = {}, [], {}
+        for case in cases:
+            outcome, detail, seconds = run_case(args.simulate, case, args.timeout,
+                                                args.memory_mb << 20, results, work)
+            row = table.setdefault(case["group"], dict.fromkeys(COLUMNS, 0))
+            row[outcome] += 1
+            if args.list:
+                print(f"{case['group']:8} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} {detail[:150]}")
+            if outcome not in ("clean error", "clean other"):
+                failures.append((case, outcome, detail))
+    print("| inputs | tried | " + " | ".join(COLUMNS) + " |")
+    print("|---|---|" + "---|" * len(COLUMNS))
+    totals = dict.fromkeys(COLUMNS, 0)
+    for group, row in table.items():
+        print(f"| {group} | {sum(row.values())} | " + " | ".join(str(row[c]) for c in COLUMNS) + " |")
+        for c in COLUMNS:
+            totals[c] += row[c]
+    print(f"| all | {sum(totals.values())} | " + " | ".join(str(totals[c]) for c in COLUMNS) + " |")
+    for case, outcome, detail in failures:
+        print(f"FAIL [{case['group']}] {case['name'][:80]}: {outcome}: {detail[:300]}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,67 @@
+// The command-line options of simulate: counts are decimal, the iteration count and the
+// convergence fraction are in range, output file names are not empty.
+#include "tools/simulate_options.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+// The exit status parse_simulate_options returns for `simulate scene0.json <args>`
+// (-1: go on and simulate).
+int parse(std::vector<std::string> args, SimulateOptions* parsed = nullptr) {
+  args.insert(args.begin(), {"simulate", "scene0.json"});
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  SimulateOptions options;
+  testing::internal::CaptureStderr();
+  const int status = parse_simulate_options(int(argv.size()), argv.data(), options);
+  testing::internal::GetCapturedStderr();
+  if (parsed) *parsed = options;
+  return status;
+}
+
+TEST(SimulateOptions, CountsAreDecimal) {
+  SimulateOptions options;
+  ASSERT_EQ(parse({"--R", "10"}, &options), -1);
+  EXPECT_EQ(options.config.radiosity_processors, 10);
+  // CLI11 reads "010" as 8 (octal) and "0x10" as 16.
+  for (const char* bad : {"010", "0x10", "0b11", "1e3", " 4", "+4", ""})
+    EXPECT_EQ(parse({"--R", bad}), kExitBadInput) << bad;
+  EXPECT_EQ(parse({"--samples", "016"}), kExitBadInput);
+  EXPECT_EQ(parse({"--block-size", "010"}), kExitBadInput);
+}
+
+TEST(SimulateOptions, IterationsAreMinusOneOrACount) {
+  SimulateOptions options;
+  ASSERT_EQ(parse({"--iterations", "-1"}, &options), -1);
+  EXPECT_EQ(options.config.options.max_iterations, -1);
+  ASSERT_EQ(parse({"--iterations", "0"}, &options), -1);
+  EXPECT_EQ(options.config.options.max_iterations, 0);
+  // -5 used to mean "until converged" silently.
+  EXPECT_EQ(parse({"--iterations", "-5"}), kExitBadInput);
+  EXPECT_EQ(parse({"--iterations", "-2"}), kExitBadInput);
+}
+
+TEST(SimulateOptions, ConvergenceFractionIsReachable) {
+  SimulateOptions options;
+  ASSERT_EQ(parse({"--convergence", "1e-10"}, &options), -1);
+  EXPECT_EQ(options.config.options.convergence_fraction, 1e-10);
+  ASSERT_EQ(parse({"--convergence", "1"}, &options), -1);
+  // 0, NaN and 1e-300 passed the old range check, and the run never stopped.
+  for (const char* bad : {"0", "nan", "1e-300", "1e-400", "-1", "2", "inf", "abc", ""})
+    EXPECT_EQ(parse({"--convergence", bad}), kExitBadInput) << bad;
+}
+
+TEST(SimulateOptions, OutputFileNamesAreNotEmpty) {
+  // --json "" was silently "no result file".
+  for (const char* option : {"--json", "--trace", "--image"})
+    EXPECT_EQ(parse({option, ""}), kExitBadInput) << option;
+}
+
+}  // namespace
+}  // namespace ncube
