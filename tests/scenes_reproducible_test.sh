@@ -6,7 +6,7 @@ set -euo pipefail
 
 root="${2:-$(cd "$(dirname "$0")/.." && pwd)}"
 python="${PYTHON:-python3}"
-files=(scene0.json scene1.json scene2.json scene3.json cornell-box.json)
+files=(scene0.json scene1.json scene2.json scene3.json scene4.json cornell-box.json)
 
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT

@@ -137,6 +137,43 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PaperScenes,
                            return name.substr(0, name.find('.'));
                          });
 
+// scene4 (not in the paper): a floor of 48 rooms built from copies of scenes 1-3 with
+// 51,200 patches, beyond the 15,000 of the paper's section 6, and 76,800 elements
+// (docs/scenes.md). It is meant for up to 512 radiosity processors (8,192 nodes with V = 15),
+// so no patch holds more than 1/512 of the elements; one load for all checks (about 2 s).
+TEST(Scene4, HasItsCountsLightsCapAndBalance) {
+  const Scene scene = load_scene(scene_path("scene4.json"));
+  // 8 study halls (scene3, 3,328 patches), 24 classrooms (scene2, 832), 16 living rooms
+  // (scene1, 288).
+  EXPECT_EQ(scene.patches.size(), 8u * 3328 + 24u * 832 + 16u * 288);
+  EXPECT_EQ(scene.patches.size(), 51200u);
+  EXPECT_EQ(scene.elements.size(), 76800u);
+  int emitters = 0;
+  for (std::size_t index = 0; index < scene.patches.size(); ++index) {
+    const Patch& p = scene.patches[index];
+    EXPECT_GT(p.area, 0.0) << "patch " << index;
+    EXPECT_LE(p.element_count(), 76800 / 512) << "patch " << index;
+    if (!is_emitter(p)) continue;
+    ++emitters;
+    EXPECT_LT(p.normal.y, -0.99) << "light " << index << " should face down";
+  }
+  EXPECT_EQ(emitters, 8 * 24 + 24 * 12 + 16 * 4);  // the rooms' ceiling lights
+  const auto [lo, hi] = scene_bounds(scene);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_GT(scene.camera.eye[axis], lo[axis]);
+    EXPECT_LT(scene.camera.eye[axis], hi[axis]);
+  }
+  for (int R : {8, 64, 512}) {
+    long most = 0;
+    for (const auto& owned : partition_patches_by_elements(scene, R)) {
+      long elements = 0;
+      for (int patch : owned) elements += scene.patches[std::size_t(patch)].element_count();
+      most = std::max(most, elements);
+    }
+    EXPECT_LE(double(most), 1.10 * 76800.0 / R) << "R=" << R;
+  }
+}
+
 TEST(CornellBox, Loads) {
   const Scene scene = load_scene(scene_path("cornell-box.json"));
   EXPECT_EQ(scene.name, "cornell-box");

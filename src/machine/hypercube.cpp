@@ -11,13 +11,13 @@ std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
   namespace s4u = simgrid::s4u;
   std::vector<s4u::Host*> hosts(std::size_t(config.node_count()), nullptr);
   const double speed = config.node_speed;
-  auto make_node = [&hosts, speed](s4u::NetZone* zone, const std::vector<unsigned long>& coord,
-                                   unsigned long id) {
-    // A torus of extent 2 in every dimension is a hypercube; the zone routes dimension by
-    // dimension from dimension 0 upward, which is e-cube routing with node bit k = dimension k.
-    unsigned long address = 0;
-    for (std::size_t k = 0; k < coord.size(); ++k) address |= coord[k] << k;
-    (void)id;
+  auto make_node = [&hosts, speed](s4u::NetZone* zone, const std::vector<unsigned long>&,
+                                   unsigned long rank) {
+    // A torus of extent 2 in every dimension is a hypercube. The zone routes on the rank,
+    // dimension by dimension from its bit 0 upward, so with address = rank this is e-cube
+    // routing from address bit 0 upward. (The coordinate vector the zone passes lists the
+    // rank's bits from the top one down, so it must not be read as bit k = coord[k].)
+    const unsigned long address = rank;
     s4u::Host* host = zone->create_host("node-" + std::to_string(address), speed);
     hosts[address] = host;
     return std::make_pair(host->get_netpoint(), nullptr);
