@@ -6,6 +6,7 @@ import numpy as np
 
 from .. import findings as f
 from .. import results
+from ..paths import ANALYSIS
 from .cells import unique_cells
 from .figures import figure_scatter
 from .text import markdown_table, megabytes, out_of_memory_text, percent, relative, seconds
@@ -73,6 +74,22 @@ def header_section(inputs):
     return out
 
 
+def model_choices_section():
+    """The choices made after looking at the paper (analysis/model_choices.json): with the
+    fitted parameters, every degree of freedom the comparison used."""
+    path = ANALYSIS / "model_choices.json"
+    if not path.exists():
+        return []
+    choices = json.loads(path.read_text())["choices"]
+    out = [f"**Choices made after looking at the paper** ({len(choices)}, besides the fitted "
+           "parameters; `analysis/model_choices.json`). How far the conclusions depend on "
+           "them: `analysis/memory-sensitivity.md` (record sizes), `analysis/patch-order.md` "
+           "(patch order).", ""]
+    out.append(markdown_table(["choice", "compared with", "evidence"],
+                              [[c["choice"], c["looked_at"], c["evidence"]] for c in choices]))
+    return out + [""]
+
+
 def fitted_parameters_section(inputs):
     out = ["**Fitted parameters** (platform parameters whose source starts with \"fitted\"):", ""]
     fitted = fitted_parameters(inputs)
@@ -100,7 +117,7 @@ def fitted_parameters_section(inputs):
     else:
         out += ["**Calibration cells**: none (`analysis/calibration.json` does not exist); "
                 "every cell is a prediction.", ""]
-    return out
+    return out + model_choices_section()
 
 
 def paper_text(cell):
