@@ -11,6 +11,10 @@
 #include "scene/scene.h"
 
 namespace ncube {
+class FrameShare;
+}
+
+namespace ncube {
 
 // Where a world point lands in a width x height picture seen by `camera`, in continuous
 // pixel coordinates (x right, y down; pixel (i, j) covers [i, i+1) x [j, j+1)), or nothing
@@ -24,5 +28,8 @@ std::optional<glm::dvec2> project(const Camera& camera, int width, int height, c
 // and sRGB encode. The output is a deterministic function of the inputs.
 Image render_solution(const Scene& scene, const Camera& camera,
                       const std::vector<Rgb>& element_radiosity, int width, int height);
+
+// The exposure scale of a frame that holds the whole picture (the tone mapping above).
+double frame_exposure(const FrameShare& frame);
 
 }  // namespace ncube

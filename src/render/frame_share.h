@@ -1,0 +1,91 @@
+// The z-buffered, 3 x 3 supersampled frame of the rows one renderer owns (paper section
+// 2.3: each processor renders its part of the picture). The sequential render is the
+// special case of one part holding every row; both draw with the same code, so a picture
+// assembled from parts is the sequential picture pixel for pixel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "render/image.h"
+#include "render/render_counts.h"
+#include "render/row_share.h"
+#include "scene/scene.h"
+
+namespace ncube {
+
+constexpr int kSamplesPerAxis = 3;  // supersampling per axis, for smooth edges
+
+// World -> camera space (x right, y up, z depth along the view) -> pixels.
+struct CameraView {
+  Vec3 eye, right, up, forward;
+  double focal = 0.0;  // pixels per unit of x/z
+  double cx = 0.0, cy = 0.0;
+
+  // Throws InputError for a bad picture size or a degenerate camera.
+  CameraView(const Camera& camera, int width, int height);
+  Vec3 to_camera(const Vec3& p) const;
+  glm::dvec2 to_screen(const Vec3& c) const;
+};
+
+// One element as the renderer needs it: its corners with the Gouraud radiosities there.
+struct RenderElement {
+  int element = 0;  // scene element index; a depth tie goes to the lower index (drawing order)
+  int corners = 4;  // 3 for the last row of a triangle's grid
+  Vec3 position[4];
+  Rgb radiosity[4];
+  bool emitter = false;
+};
+
+// The records of the given patches' elements, in scene order. A corner's radiosity is the
+// mean of the patch's elements sharing that grid vertex (the apex of a triangle is shared by
+// its whole last row).
+std::vector<RenderElement> render_elements(const Scene& scene,
+                                           const std::vector<Rgb>& element_radiosity,
+                                           const std::vector<int>& patches);
+
+class FrameShare {
+ public:
+  // Throws InputError for a bad picture size or a degenerate camera.
+  FrameShare(const Scene& scene, const Camera& camera, int width, int height, RowShare rows);
+
+  // Draws one element into the owned rows, in any order: the nearest surface wins, a depth
+  // tie the lower (element, triangle) drawing key, as when drawn in scene order.
+  void draw(const RenderElement& element, RenderCounts& counts);
+
+  // Calls f(radiosity, emitter) for every sample that shows a surface.
+  template <class F>
+  void for_each_visible(F f) const;
+  std::uint64_t visible_samples() const;
+
+  // Tone maps the owned rows (clamp per sample, average 3 x 3, sRGB encode) into `image`
+  // (width x height; the other rows are left as they are).
+  void resolve(double scale, Image& image, RenderCounts& counts) const;
+
+  const RowShare& rows() const { return rows_; }
+  std::size_t samples() const { return inv_depth_.size(); }
+
+ private:
+  struct ScreenVertex;
+  void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, std::int64_t key,
+                     bool emitter, RenderCounts& counts);
+
+  CameraView view_;
+  double near_ = 0.0;
+  int width_ = 0, height_ = 0;  // in samples
+  RowShare rows_;               // in picture rows
+  std::vector<double> inv_depth_;  // 0 = background
+  std::vector<Rgb> radiosity_;
+  std::vector<std::int64_t> key_;  // drawing key of the nearest surface
+  std::vector<char> emitter_;
+};
+
+template <class F>
+void FrameShare::for_each_visible(F f) const {
+  for (std::size_t k = 0; k < inv_depth_.size(); ++k)
+    if (inv_depth_[k] != 0.0) f(radiosity_[k], emitter_[k] != 0);
+}
+
+}  // namespace ncube
