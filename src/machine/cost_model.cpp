@@ -13,6 +13,19 @@ double CostModel::flops(const WorkCounts& c) const {
          flops_per_element_update * double(c.element_updates);
 }
 
+double CostModel::flops(const RenderCounts& c) const {
+  return flops_per_render_vertex * double(c.vertices) +
+         flops_per_clip_vertex * double(c.clip_vertices) +
+         flops_per_projected_vertex * double(c.projected_vertices) +
+         flops_per_triangle * double(c.triangles) +
+         flops_per_sample_tested * double(c.samples_tested) +
+         flops_per_sample_inside * double(c.samples_inside) +
+         flops_per_sample_written * double(c.samples_written) +
+         flops_per_exposure_sample * double(c.exposure_samples) +
+         flops_per_histogram_bucket * double(c.histogram_buckets) +
+         flops_per_pixel_resolved * double(c.pixels_resolved);
+}
+
 CostModel load_cost_model(const std::string& path) {
   // Sanity bounds (a typo, not a model, beyond them): flops per operation up to 1e9, data
   // sizes up to 1e9 bytes, the reserve up to 2^50 bytes.
@@ -30,6 +43,21 @@ CostModel load_cost_model(const std::string& path) {
                                             {"patch_geometry_bytes", 1, true, kBytes},
                                             {"patch_radiosity_bytes", 1, true, kBytes},
                                             {"element_bytes", 1, true, kBytes},
+                                            {"flops_per_render_vertex", 0, false, kFlops},
+                                            {"flops_per_clip_vertex", 0, false, kFlops},
+                                            {"flops_per_projected_vertex", 0, false, kFlops},
+                                            {"flops_per_triangle", 0, false, kFlops},
+                                            {"flops_per_sample_tested", 0, false, kFlops},
+                                            {"flops_per_sample_inside", 0, false, kFlops},
+                                            {"flops_per_sample_written", 0, false, kFlops},
+                                            {"flops_per_exposure_sample", 0, false, kFlops},
+                                            {"flops_per_histogram_bucket", 0, false, kFlops},
+                                            {"flops_per_pixel_resolved", 0, false, kFlops},
+                                            {"render_element_bytes", 1, true, kBytes},
+                                            {"frame_sample_bytes", 1, true, kBytes},
+                                            {"pixel_bytes", 1, true, kBytes},
+                                            {"exposure_histogram_bytes", 1, true, kBytes},
+                                            {"exposure_selection_bytes", 1, true, kBytes},
                                             {"node_reserve_bytes", 0, true, 0x1p50}});
   CostModel m;
   m.flops_per_shooter_candidate = v.at("flops_per_shooter_candidate");
@@ -46,6 +74,21 @@ CostModel load_cost_model(const std::string& path) {
   m.patch_radiosity_bytes = v.at("patch_radiosity_bytes");
   m.element_bytes = v.at("element_bytes");
   m.node_reserve_bytes = v.at("node_reserve_bytes");
+  m.flops_per_render_vertex = v.at("flops_per_render_vertex");
+  m.flops_per_clip_vertex = v.at("flops_per_clip_vertex");
+  m.flops_per_projected_vertex = v.at("flops_per_projected_vertex");
+  m.flops_per_triangle = v.at("flops_per_triangle");
+  m.flops_per_sample_tested = v.at("flops_per_sample_tested");
+  m.flops_per_sample_inside = v.at("flops_per_sample_inside");
+  m.flops_per_sample_written = v.at("flops_per_sample_written");
+  m.flops_per_exposure_sample = v.at("flops_per_exposure_sample");
+  m.flops_per_histogram_bucket = v.at("flops_per_histogram_bucket");
+  m.flops_per_pixel_resolved = v.at("flops_per_pixel_resolved");
+  m.render_element_bytes = v.at("render_element_bytes");
+  m.frame_sample_bytes = v.at("frame_sample_bytes");
+  m.pixel_bytes = v.at("pixel_bytes");
+  m.exposure_histogram_bytes = v.at("exposure_histogram_bytes");
+  m.exposure_selection_bytes = v.at("exposure_selection_bytes");
   return m;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "radiosity/work_counts.h"
+#include "render/render_counts.h"
 
 namespace ncube {
 
@@ -16,6 +17,17 @@ struct CostModel {
   double flops_per_plane_crossing = 0;     // the rest of a test whose ray crosses the plane
   double flops_per_form_factor = 0;        // one point-to-part contour integral
   double flops_per_element_update = 0;     // adding the shot light to one element
+  // The rendering phase (section 2.3), per counted operation of render/render_counts.h.
+  double flops_per_render_vertex = 0;      // an element corner to camera space, near test
+  double flops_per_clip_vertex = 0;        // a vertex where an edge crosses the near plane
+  double flops_per_projected_vertex = 0;   // a vertex projected (1/z, screen, radiosity/z)
+  double flops_per_triangle = 0;           // triangle setup: area, bounding box, row range
+  double flops_per_sample_tested = 0;      // three edge functions at one sample
+  double flops_per_sample_inside = 0;      // depth interpolation and z test
+  double flops_per_sample_written = 0;     // Gouraud radiosity of a sample that is nearest
+  double flops_per_exposure_sample = 0;    // luminance and key of a visible sample, per round
+  double flops_per_histogram_bucket = 0;   // adding one bucket of a child's histogram
+  double flops_per_pixel_resolved = 0;     // tone mapping of a pixel from its 3 x 3 samples
 
   // Modeled sizes of the program's data, as laid out by a 1990s 32-bit C implementation
   // (4-byte floats, ints and pointers); docs/model.md gives each layout.
@@ -26,8 +38,14 @@ struct CostModel {
   double patch_radiosity_bytes = 0;    // an owned patch's radiosity data (besides geometry)
   double element_bytes = 0;            // one element with its radiosity
   double node_reserve_bytes = 0;       // program, operating system and stack on every node
+  double render_element_bytes = 0;     // one element as the renderer sends and holds it
+  double frame_sample_bytes = 0;       // one sample of the frame and z-buffer
+  double pixel_bytes = 0;              // one finished pixel, as collected at node 0
+  double exposure_histogram_bytes = 0; // a round's luminance histograms and maxima
+  double exposure_selection_bytes = 0; // a round's chosen digits and remaining ranks
 
   double flops(const WorkCounts& counts) const;
+  double flops(const RenderCounts& counts) const;
 };
 
 CostModel load_cost_model(const std::string& path);

@@ -48,6 +48,11 @@ void NodeRuntime::compute(const WorkCounts& counts) {
   busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
 }
 
+void NodeRuntime::compute(const RenderCounts& counts) {
+  render_counts_ += counts;
+  busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
+}
+
 void NodeRuntime::send(int to, std::unique_ptr<Message> message, double payload_bytes) {
   busy(platform_.send_overhead, "overhead", stats_.overhead_seconds);
   const double bytes = payload_bytes + costs_.message_header_bytes;

@@ -53,6 +53,9 @@ class NodeRuntime {
 
   // Runs the counted work on this node's CPU: one execute() for the whole batch.
   void compute(const WorkCounts& counts);
+  // The same for the rendering phase's work (kept in render_counts()).
+  void compute(const RenderCounts& counts);
+  const RenderCounts& render_counts() const { return render_counts_; }
   // Sends `message` to node `to`: the sender's overhead, then `payload_bytes` plus the
   // header over the e-cube route (asynchronously: the sender goes on).
   void send(int to, std::unique_ptr<Message> message, double payload_bytes);
@@ -74,6 +77,7 @@ class NodeRuntime {
   std::vector<TraceEvent>* trace_;
   NodeStats stats_;
   std::deque<std::unique_ptr<Message>> deferred_;
+  RenderCounts render_counts_;
   bool finished_ = false;
 };
 

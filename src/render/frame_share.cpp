@@ -233,10 +233,10 @@ std::uint64_t FrameShare::visible_samples() const {
 }
 
 // Clamp per sample before averaging so edges of over-exposed emitters stay smooth.
-void FrameShare::resolve(double scale, Image& image, RenderCounts& counts) const {
+Image FrameShare::resolve(double scale, RenderCounts& counts) const {
   const int width = width_ / kSamplesPerAxis;
+  Image image(width, rows_.count());
   for (int local = 0; local < rows_.count(); ++local) {
-    const int y = rows_.row_at(local);
     for (int x = 0; x < width; ++x) {
       Rgb sum(0.0);
       for (int sy = 0; sy < kSamplesPerAxis; ++sy)
@@ -246,11 +246,12 @@ void FrameShare::resolve(double scale, Image& image, RenderCounts& counts) const
           sum += glm::clamp(radiosity_[k] * scale, 0.0, 1.0);
         }
       sum /= double(kSamplesPerAxis * kSamplesPerAxis);
-      image.at(x, y) = glm::vec3(float(srgb_encode(sum.r)), float(srgb_encode(sum.g)),
+      image.at(x, local) = glm::vec3(float(srgb_encode(sum.r)), float(srgb_encode(sum.g)),
                                  float(srgb_encode(sum.b)));
     }
     counts.pixels_resolved += std::uint64_t(width);
   }
+  return image;
 }
 
 }  // namespace ncube

@@ -60,9 +60,9 @@ class FrameShare {
   void for_each_visible(F f) const;
   std::uint64_t visible_samples() const;
 
-  // Tone maps the owned rows (clamp per sample, average 3 x 3, sRGB encode) into `image`
-  // (width x height; the other rows are left as they are).
-  void resolve(double scale, Image& image, RenderCounts& counts) const;
+  // The owned rows, in order, tone mapped with exposure `scale`: clamp per sample, average
+  // 3 x 3, sRGB encode (width x rows().count() pixels).
+  Image resolve(double scale, RenderCounts& counts) const;
 
   const RowShare& rows() const { return rows_; }
   std::size_t samples() const { return inv_depth_.size(); }

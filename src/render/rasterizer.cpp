@@ -34,9 +34,7 @@ Image render_solution(const Scene& scene, const Camera& camera,
   FrameShare frame(scene, camera, width, height, RowShare::whole(height));
   RenderCounts counts;
   for (const RenderElement& element : elements) frame.draw(element, counts);
-  Image image(width, height);
-  frame.resolve(frame_exposure(frame), image, counts);
-  return image;
+  return frame.resolve(frame_exposure(frame), counts);
 }
 
 }  // namespace ncube

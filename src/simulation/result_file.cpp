@@ -20,6 +20,48 @@ const char* ray_policy_name(RayTestPolicy policy) {
   return policy == RayTestPolicy::kTestAllPatches ? "all" : "first-blocker";
 }
 
+nlohmann::json render_counts_to_json(const RenderCounts& c) {
+  return {{"vertices", c.vertices},
+          {"clip_vertices", c.clip_vertices},
+          {"projected_vertices", c.projected_vertices},
+          {"triangles", c.triangles},
+          {"samples_tested", c.samples_tested},
+          {"samples_inside", c.samples_inside},
+          {"samples_written", c.samples_written},
+          {"exposure_samples", c.exposure_samples},
+          {"histogram_buckets", c.histogram_buckets},
+          {"pixels_resolved", c.pixels_resolved}};
+}
+
+// The rendering phase (section 2.3, --render-parallel): docs/result-format.md.
+nlohmann::json render_to_json(const SimulationConfig& config, const RenderResult& render) {
+  nlohmann::json nodes = nlohmann::json::array();
+  RenderCounts all;
+  for (const RenderNodeStats& n : render.nodes) {
+    all += n.counts;
+    nodes.push_back({{"node", n.stats.node},
+                     {"role", n.stats.role},
+                     {"rows", n.rows},
+                     {"rasterise_seconds", n.rasterise_seconds},
+                     {"compute_seconds", n.stats.compute_seconds},
+                     {"overhead_seconds", n.stats.overhead_seconds},
+                     {"waiting_seconds", n.stats.waiting_seconds},
+                     {"messages_sent", n.stats.messages_sent},
+                     {"bytes_sent", n.stats.bytes_sent},
+                     {"messages_received", n.stats.messages_received},
+                     {"peak_memory_bytes", n.stats.peak_memory_bytes},
+                     {"counts", render_counts_to_json(n.counts)}});
+  }
+  return {{"partition", row_partition_name(config.render.partition)},
+          {"distribution", render_distribution_name(config.render.distribution)},
+          {"width", config.render.width},
+          {"height", config.render.height},
+          {"simulated_seconds", render.simulated_seconds},
+          {"imbalance", render.imbalance},
+          {"counts", render_counts_to_json(all)},
+          {"nodes", nodes}};
+}
+
 }  // namespace
 
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
@@ -73,6 +115,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                      {"peak_memory_bytes", n.peak_memory_bytes},
                      {"counts", counts_to_json(n.counts)}});
   j["nodes"] = nodes;
+  if (result.render.ran) j["render"] = render_to_json(config, result.render);
   j["host_seconds"] = result.host_seconds;
   return j;
 }

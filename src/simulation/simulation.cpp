@@ -38,6 +38,7 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
                      ": must be a perfect square from 1 to 64 (e.g. 16 or 64)");
   if (config.block_size < 1)
     throw InputError("--block-size " + std::to_string(config.block_size) + ": must be at least 1");
+  check_render_configuration(config.render, config.node_count());
 }
 
 namespace {
@@ -95,6 +96,13 @@ OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig&
                                      const PlatformConfig& platform, const CostModel& costs) {
   for (const NodeMemory& m : memory_plan(scene, config, costs))
     if (m.bytes > platform.node_memory) return {m.node, m.role, m.bytes, platform.node_memory};
+  if (config.render.enabled) {  // the rendering phase's peak (section 2.3)
+    const std::vector<double> render = render_memory(scene, config.render, config.radiosity_processors,
+                                                     config.visibility_processors, costs);
+    for (std::size_t node = 0; node < render.size(); ++node)
+      if (render[node] > platform.node_memory)
+        return {int(node), "renderer", render[node], platform.node_memory};
+  }
   return {};
 }
 
@@ -180,6 +188,9 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
       previous = end;
     }
     collect_solution(scene, programs, result);
+    if (config.render.enabled && failure_of(result, programs.runtimes).empty())
+      result.render = run_render_phase(scene, config.render, R, V, result.element_radiosity, hosts,
+                                       platform, costs, trace);
   }
   for (const NodeRuntime& runtime : programs.runtimes) {
     result.nodes.push_back(runtime.stats());
@@ -187,6 +198,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   }
   if (result.status == "ok") {
     result.failure = failure_of(result, programs.runtimes);
+    if (result.failure.empty()) result.failure = result.render.failure;
     if (!result.failure.empty()) result.status = "failed";
   }
   result.host_seconds =

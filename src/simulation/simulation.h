@@ -13,6 +13,7 @@
 #include "nodes/node_runtime.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene.h"
+#include "simulation/render_phase.h"
 
 namespace ncube {
 
@@ -37,6 +38,8 @@ struct SimulationConfig {
   std::function<void(const IterationReport&)> on_iteration;
   // SimGrid's own command-line arguments (--cfg=name:value, --log=...), given to its Engine.
   std::vector<std::string> simgrid_arguments;
+  // The rendering phase after the radiosity run (section 2.3), when enabled.
+  RenderOptions render;
 
   int node_count() const { return radiosity_processors * (visibility_processors + 1); }
 };
@@ -62,6 +65,7 @@ struct SimulationResult {
   WorkCounts counts;                   // all nodes together
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace
+  RenderResult render;                 // when config.render.enabled and the run got that far
   double host_seconds = 0.0;
   // The SimGrid settings the run used (the platform's defaults, overridden by --cfg).
   std::map<std::string, std::string> simgrid_config;

@@ -43,6 +43,11 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
   std::printf("ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
               (unsigned long long)r.counts.ray_patch_tests,
               (unsigned long long)r.counts.plane_crossings);
+  if (r.render.ran)
+    std::printf("rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
+                ncube::row_partition_name(config.render.partition),
+                ncube::render_distribution_name(config.render.distribution),
+                r.render.simulated_seconds, r.render.imbalance);
   std::printf("host seconds          %.3f\n", r.host_seconds);
 }
 
@@ -83,8 +88,9 @@ int simulate(int argc, char** argv) {
   if (!options.quiet) print_summary(scene, options.config, result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
   if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result));
-  if (!options.image_file.empty() && result.status == "ok")
-    outputs.write("--image", ncube::encode_png(ncube::render_solution(
+  if (!options.image_file.empty() && result.status == "ok")  // the simulated phase's picture if it ran
+    outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
+                                                                 : ncube::render_solution(
                                  scene, scene.camera, result.element_radiosity,
                                  options.image_width, options.image_height)));
   outputs.commit();

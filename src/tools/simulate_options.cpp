@@ -124,6 +124,15 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--image-height", options.image_height, "picture height in pixels")
       ->capture_default_str()
       ->check(kDecimalInteger & CLI::Range(16, 8192));
+  std::string render_parallel, render_distribution = "hypercube";
+  app.add_option("--render-parallel", render_parallel,
+                 "after the radiosity run, simulate rendering the picture on all nodes "
+                 "(section 2.3): blocks (N bands of rows) or scanlines (every N-th row)")
+      ->check(CLI::IsMember({"blocks", "scanlines"}));
+  app.add_option("--render-distribution", render_distribution,
+                 "how the elements reach every node in the rendering phase: ring or hypercube")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ring", "hypercube"}));
   app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
   std::vector<std::string> cfg, log;
   app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "
@@ -155,6 +164,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
   options.scene_file = resolve_scene_path(options.scene_file);
+  config.render.enabled = !render_parallel.empty();
+  config.render.partition =
+      render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;
+  config.render.distribution = render_distribution == "ring" ? RenderDistribution::kRing
+                                                             : RenderDistribution::kHypercube;
+  config.render.width = options.image_width;
+  config.render.height = options.image_height;
   return -1;
 }
 

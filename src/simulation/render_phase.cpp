@@ -1,0 +1,70 @@
+#include "simulation/render_phase.h"
+
+#include <algorithm>
+#include <deque>
+#include <simgrid/s4u/Actor.hpp>
+#include <simgrid/s4u/Engine.hpp>
+
+#include "nodes/placement.h"
+#include "nodes/render_processor.h"
+#include "util/input_error.h"
+
+namespace ncube {
+
+void check_render_configuration(const RenderOptions& options, int nodes) {
+  if (options.enabled && options.distribution == RenderDistribution::kHypercube &&
+      !is_power_of_two(nodes))
+    throw InputError("--render-distribution hypercube: the run's " + std::to_string(nodes) +
+                     " nodes are not a power of two (a hypercube); use --render-distribution ring");
+}
+
+std::vector<double> render_memory(const Scene& scene, const RenderOptions& options, int R, int V,
+                                  const CostModel& costs) {
+  const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
+  return plan_render_memory(options, R * (V + 1), starting_record_counts(scene, owned, V), costs);
+}
+
+RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, int R, int V,
+                              const std::vector<Rgb>& element_radiosity,
+                              const std::vector<simgrid::s4u::Host*>& hosts,
+                              const PlatformConfig& platform, const CostModel& costs,
+                              std::vector<TraceEvent>* trace) {
+  const int N = R * (V + 1);
+  const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
+  const RenderSetup setup{scene, options, N,
+                          starting_shares(scene, element_radiosity, owned, V)};
+  const std::vector<double> memory = render_memory(scene, options, R, V, costs);
+  std::deque<NodeRuntime> runtimes;
+  std::deque<RenderProcessor> programs;
+  for (int node = 0; node < N; ++node) {
+    const bool radiosity = node % (V + 1) == 0;
+    NodeRuntime& runtime = runtimes.emplace_back(node, radiosity ? "radiosity" : "visibility",
+                                                 node / (V + 1), platform, costs, trace);
+    runtime.set_memory(memory[std::size_t(node)]);
+    RenderProcessor& program = programs.emplace_back(setup, node, runtime);
+    simgrid::s4u::Actor::create("render-" + std::to_string(node), hosts[std::size_t(node)],
+                                [&program] { program.run(); });
+  }
+  RenderResult result;
+  result.ran = true;
+  const double start = simgrid::s4u::Engine::get_clock();
+  simgrid::s4u::Engine::get_instance()->run();
+  result.simulated_seconds = simgrid::s4u::Engine::get_clock() - start;
+  double sum = 0.0, max = 0.0;
+  for (int node = 0; node < N; ++node) {
+    const NodeRuntime& runtime = runtimes[std::size_t(node)];
+    const RenderProcessor& program = programs[std::size_t(node)];
+    if (!runtime.finished() && result.failure.empty())
+      result.failure = "node " + std::to_string(node) +
+                       " did not finish the rendering phase: the simulation stopped with it blocked";
+    result.nodes.push_back({runtime.stats(), program.rows(), program.rasterise_seconds(),
+                            runtime.render_counts()});
+    sum += program.rasterise_seconds();
+    max = std::max(max, program.rasterise_seconds());
+  }
+  result.imbalance = sum > 0.0 ? max / (sum / N) : 1.0;
+  if (result.failure.empty()) result.picture = programs.front().picture();
+  return result;
+}
+
+}  // namespace ncube
