@@ -46,6 +46,12 @@ SimulationResult run(const Scene& scene, const SimulationConfig& config) {
 using PictureCase = std::tuple<RowPartition, RenderDistribution, int, int>;
 class RenderPhasePicture : public testing::TestWithParam<PictureCase> {};
 
+std::string case_name(const testing::TestParamInfo<PictureCase>& info) {
+  const auto [partition, distribution, R, V] = info.param;
+  return std::string(row_partition_name(partition)) + "_" + render_distribution_name(distribution) +
+         "_R" + std::to_string(R) + "V" + std::to_string(V);
+}
+
 TEST_P(RenderPhasePicture, IsTheSequentialRenderPixelForPixel) {
   const auto [partition, distribution, R, V] = GetParam();
   const Scene scene = load_scene(repo("scenes/cornell-box.json"));
@@ -73,12 +79,14 @@ INSTANTIATE_TEST_SUITE_P(
     PowersOfTwo, RenderPhasePicture,
     testing::Combine(testing::Values(RowPartition::kBlocks, RowPartition::kScanlines),
                      testing::Values(RenderDistribution::kRing, RenderDistribution::kHypercube),
-                     testing::Values(1, 2, 4), testing::Values(0, 1)));
+                     testing::Values(1, 2, 4), testing::Values(0, 1)),
+    case_name);
 INSTANTIATE_TEST_SUITE_P(
     RingOnOddCounts, RenderPhasePicture,
     testing::Combine(testing::Values(RowPartition::kBlocks, RowPartition::kScanlines),
                      testing::Values(RenderDistribution::kRing), testing::Values(3),
-                     testing::Values(0, 1)));
+                     testing::Values(0, 1)),
+    case_name);
 
 // ------------------------------------------------ hand-counted messages, bytes, memory
 
@@ -137,6 +145,24 @@ TEST(RenderPhaseMessages, RingOfFourNodes) {
                 1e-12) << "node " << node;
     EXPECT_EQ(r.render.nodes[std::size_t(node)].rows, 4) << "node " << node;
   }
+  // Time from counted work, at the values of platforms/cost_model.json's rendering
+  // parameters (counted flops: vertex 19, clip vertex 21, projection 10, triangle 26 + 6 = 32,
+  // sample tested 26, inside 7, written 19; exposure sample 6, bucket 1, pixel 180) on a
+  // 2.5 Mflop/s node (paper section 5).
+  for (const RenderNodeStats& n : r.render.nodes) {
+    const RenderCounts& c = n.counts;
+    const double rasterise = (19.0 * c.vertices + 21.0 * c.clip_vertices + 10.0 * c.projected_vertices +
+                              32.0 * c.triangles + 26.0 * c.samples_tested + 7.0 * c.samples_inside +
+                              19.0 * c.samples_written) / 2.5e6;
+    const double rest = (6.0 * c.exposure_samples + 1.0 * c.histogram_buckets + 180.0 * c.pixels_resolved) / 2.5e6;
+    EXPECT_NEAR(n.rasterise_seconds, rasterise, 1e-12) << n.stats.node;
+    EXPECT_NEAR(n.stats.compute_seconds, rasterise + rest, 1e-12) << n.stats.node;
+    EXPECT_EQ(c.pixels_resolved, 4u * 16u) << n.stats.node;
+    EXPECT_EQ(c.vertices, 11u * 4u) << n.stats.node;  // every node sees all 11 quads
+  }
+  // Histograms added: node 0 gets 2 children per round, node 2 one: 512 buckets each.
+  EXPECT_EQ(r.render.nodes[0].counts.histogram_buckets, 8u * 2u * 512u);
+  EXPECT_EQ(r.render.nodes[2].counts.histogram_buckets, 8u * 512u);
   // The radiosity run's statistics are kept apart: there visibility processor 1 sent one
   // answer (rank 0's 5 points are one block of the default 100).
   EXPECT_EQ(r.nodes[1].messages_sent, 1);
