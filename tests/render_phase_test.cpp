@@ -97,6 +97,14 @@ INSTANTIATE_TEST_SUITE_P(
 // Record sizes of platforms/cost_model.json: an element 104 bytes, a message header 8, a
 // round's histograms 2 x (256 x 4 + 8) = 2064, a round's selection 2 x (8 + 4 + 8) = 40, a
 // pixel 3.
+// The camera looks at the scene from z = 8 (the scene's default camera sees nothing).
+Scene hand_counted_in_view() {
+  Scene scene = hand_counted_scene();
+  scene.camera.eye = Vec3(2.5, 1.0, 8.0);
+  scene.camera.look_at = Vec3(2.5, 1.0, 0.0);
+  return scene;
+}
+
 constexpr double kHeader = 8, kRecord = 104, kHistogram = 2064 + 8, kSelection = 40 + 8;
 constexpr double kPiece = 4 * 16 * 3 + 8;  // a node's 4 rows of 16 pixels
 
@@ -111,7 +119,7 @@ constexpr double kPiece = 4 * 16 * 3 + 8;  // a node's 4 rows of 16 pixels
 //   node 3 sends: own 0, node 1's 0, node 0's 6;
 //   node 2 sends: own 5, node 3's 0, node 1's 0.
 TEST(RenderPhaseMessages, RingOfFourNodes) {
-  const SimulationResult r = run(hand_counted_scene(),
+  const SimulationResult r = run(hand_counted_in_view(),
                                  render_config(2, 1, RowPartition::kBlocks,
                                                RenderDistribution::kRing, 16, 16, 1));
   ASSERT_EQ(r.status, "ok") << r.failure;
@@ -160,6 +168,9 @@ TEST(RenderPhaseMessages, RingOfFourNodes) {
     EXPECT_EQ(c.pixels_resolved, 4u * 16u) << n.stats.node;
     EXPECT_EQ(c.vertices, 11u * 4u) << n.stats.node;  // every node sees all 11 quads
   }
+  std::uint64_t tested = 0;
+  for (const RenderNodeStats& n : r.render.nodes) tested += n.counts.samples_tested;
+  ASSERT_GT(tested, 0u) << "the camera must see the scene for the time check to mean anything";
   // Histograms added: node 0 gets 2 children per round, node 2 one: 512 buckets each.
   EXPECT_EQ(r.render.nodes[0].counts.histogram_buckets, 8u * 2u * 512u);
   EXPECT_EQ(r.render.nodes[2].counts.histogram_buckets, 8u * 512u);
