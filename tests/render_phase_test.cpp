@@ -231,7 +231,7 @@ TEST(RenderPhaseMemory, FrameBeyondTheNodeIsOutOfMemory) {
       scene, config, load_platform_config(repo("platforms/ncube2.json")),
       load_cost_model(repo("platforms/cost_model.json")));
   EXPECT_EQ(oom.node, 0);
-  EXPECT_EQ(oom.role, "renderer");
+  EXPECT_EQ(oom.role, "rendering");
   // The whole frame (86.4 MB) and the whole picture's pixels (1.44 MB) while resolving.
   EXPECT_DOUBLE_EQ(oom.needed_bytes, 786432 + 600 * 800 * 9 * 20.0 + 600 * 800 * 3);
   config.render.enabled = false;

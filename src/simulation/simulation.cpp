@@ -101,7 +101,7 @@ OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig&
                                                      config.visibility_processors, costs);
     for (std::size_t node = 0; node < render.size(); ++node)
       if (render[node] > platform.node_memory)
-        return {int(node), "renderer", render[node], platform.node_memory};
+        return {int(node), "rendering", render[node], platform.node_memory};
   }
   return {};
 }
