@@ -83,6 +83,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));
   app.add_flag("--quiet", options.quiet, "print nothing but errors");
+  app.add_option("--threads", config.options.host_threads,
+                 "host threads for one run (0: all cores); results do not depend on it")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
 
   try {
     app.parse(argc, argv);
