@@ -46,7 +46,8 @@ struct EmbreeScene::Query {
   Vec3 from;
   Vec3 delta[kMaxShooterParts];
   int excluded_a, excluded_b;
-  int* first;  // null: any blocker ends a ray; else the smallest blocking position per ray
+  std::vector<std::pair<int, int>>* hits;  // null: any blocker ends a ray; else every
+                                           // (ray, position) found, and no ray ends
 };
 
 EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad)
@@ -89,9 +90,8 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
     const bool blocks = position != q.excluded_a && position != q.excluded_b &&
                         segment_crosses(q.scene->candidates_[std::size_t(position)], q.from,
                                         q.delta[ray]);
-    if (q.first) {  // keep looking: a blocker earlier in set order may lie further on
-      int& best = q.first[ray];
-      if (blocks && (best < 0 || position < best)) best = position;
+    if (q.hits) {  // record and reject: the traversal goes on to the end of the segment
+      if (blocks) q.hits->emplace_back(int(ray), position);
       args->valid[i] = 0;
     } else if (!blocks) {
       args->valid[i] = 0;
@@ -145,7 +145,7 @@ void EmbreeScene::prepare(Query& query, const Vec3& from, const Vec3* targets, i
   for (int k = 0; k < count; ++k) query.delta[k] = targets[k] - from;
   query.excluded_a = excluded_a;
   query.excluded_b = excluded_b;
-  query.first = nullptr;
+  query.hits = nullptr;
 }
 
 PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
@@ -156,13 +156,12 @@ PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, 
   return trace(query, count);
 }
 
-void EmbreeScene::first_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
-                                 int excluded_b, int* first) const {
-  std::fill(first, first + count, -1);
+void EmbreeScene::all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                               int excluded_b, std::vector<std::pair<int, int>>& hits) const {
   if (candidates_.empty() || count == 0) return;
   Query query;
   prepare(query, from, targets, count, excluded_a, excluded_b);
-  query.first = first;
+  query.hits = &hits;
   trace(query, count);
 }
 

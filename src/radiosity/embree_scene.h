@@ -36,10 +36,11 @@ class EmbreeScene {
   PartMask blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
                    int excluded_b) const;
 
-  // first[k]: the smallest set position of a candidate (not excluded) the segment to
-  // targets[k] crosses by the exact test, or -1. Every hit along the segment is examined.
-  void first_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
-                      int excluded_b, int* first) const;
+  // Every candidate (not excluded) the segment to targets[k] crosses by the exact test:
+  // appends (k, position) pairs to `hits`, in no particular order. Every hit along each
+  // segment is examined (no early end).
+  void all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                    int excluded_b, std::vector<std::pair<int, int>>& hits) const;
 
  private:
   struct Query;

@@ -8,30 +8,15 @@
 #include "radiosity/host_threads.h"
 
 namespace ncube {
-namespace {
-
-// The scale of the scene's coordinates: single-precision rounding is relative to it.
-double coordinate_scale(const Scene& scene) {
-  const Bounds b = scene_bounds(scene);
-  double largest = b.diagonal();
-  if (b.lo.x <= b.hi.x)
-    for (int axis = 0; axis < 3; ++axis)
-      largest = std::max({largest, std::fabs(b.lo[axis]), std::fabs(b.hi[axis])});
-  return 1.0 + largest;
-}
-
-}  // namespace
-
 Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
   side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
-  // Embree's quads grow by `pad` and rays within `band_` of a plane are decided without
-  // Embree: with single-precision rounding about 1e-7 of `scale`, a ray crossing a plane at
-  // more than band_ / scale (radians) meets the padded quad wherever the exact test finds a
+  // Rays within `band_` of a plane are decided without Embree: with single-precision
+  // rounding about 1e-7 of the coordinate scale, a ray crossing a plane at more than
+  // band_ / scale (radians) meets Embree's padded quad wherever the exact test finds a
   // crossing (docs/performance.md).
-  const double scale = coordinate_scale(scene);
-  const double pad = 2e-3 * scale;
-  band_ = 1e-3 * scale;
+  blockers_ = SceneBlockers::for_scene(scene);
+  band_ = 1e-3 * blockers_->scale();
   patches_.reserve(patch_indices.size());
   std::map<std::array<double, 4>, int> plane_index;
   for (int scene_index : patch_indices) {
@@ -64,7 +49,7 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
   plane_members_.resize(patches_.size());
   std::vector<std::int32_t> next(plane_first_.begin(), plane_first_.end() - 1);
   for (int c = 0; c < size(); ++c) plane_members_[std::size_t(next[plane_of_[c]]++)] = c;
-  embree_ = std::make_unique<EmbreeScene>(patches_, pad);
+  whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
 }
 
 Occluders::~Occluders() = default;
@@ -151,7 +136,8 @@ void Occluders::first_blocker_counts(const PartMask* crossing, const int* first,
 }
 
 PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
-                           const TargetSides& sides, WorkCounts& counts) const {
+                           const TargetSides& sides, const SceneBlockers::Lists* lists,
+                           std::size_t index, WorkCounts& counts) const {
   const int receiver_position = position_in_set(receiver_patch);
   const int shooter_position = position_in_set(shooter.patch);
   const int m = shooter.part_count;
@@ -161,14 +147,21 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
   const bool first_blocker = policy_ == RayTestPolicy::kStopAtFirstBlocker;
   int first[kMaxShooterParts];
   PartMask blocked = 0;
-  if (first_blocker) {
-    embree_->first_blockers(point, shooter.targets.data(), m, receiver_position, shooter_position,
-                            first);
-    for (int k = 0; k < m; ++k)
-      if (first[k] >= 0) blocked |= PartMask(1) << k;
+  if (lists) {
+    // The whole scene's blockers of each ray; this set's are those it holds.
+    for (int k = 0; k < m; ++k) {
+      first[k] = -1;
+      const std::size_t ray = index * std::size_t(m) + std::size_t(k);
+      for (int i = lists->offsets[ray]; i < lists->offsets[ray + 1]; ++i) {
+        const int position = position_in_set(lists->patches[std::size_t(i)]);
+        if (position < 0) continue;
+        blocked |= PartMask(1) << k;
+        if (first[k] < 0 || position < first[k]) first[k] = position;
+      }
+    }
   } else {
-    blocked = embree_->blocked(point, shooter.targets.data(), m, receiver_position,
-                               shooter_position);
+    blocked = blockers_->embree().blocked(point, shooter.targets.data(), m, receiver_patch,
+                                          shooter.patch);
   }
   // One pass over the planes: which rays cross each (the brute-force loop's plane crossings)
   // and which planes hold the point and some targets within their band.
@@ -212,18 +205,24 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
 
 PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                                     WorkCounts& counts) const {
-  return answer(point, receiver_patch, shooter, target_sides(shooter), counts);
+  PartMask mask = 0;
+  unblocked_parts(&point, &receiver_patch, 1, shooter, &mask, counts, 1);
+  return mask;
 }
 
 void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
                                 const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                                 int threads) const {
   const TargetSides& sides = target_sides(shooter);  // before the threads start
+  std::shared_ptr<const SceneBlockers::Lists> lists;
+  if (uses_lists() && !patches_.empty())
+    lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
+                                /*memo=*/!whole_scene_ && count > 1);
   std::mutex merge;
   parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
     WorkCounts local;
     for (std::size_t k = begin; k < end; ++k)
-      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, local);
+      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists.get(), k, local);
     const std::lock_guard<std::mutex> lock(merge);
     counts += local;  // integer sums: the same whatever the order
   });

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "radiosity/embree_scene.h"
+#include "radiosity/scene_blockers.h"
 #include "radiosity/ray_patch_test.h"
 #include "radiosity/shooter.h"
 #include "radiosity/work_counts.h"
@@ -67,9 +67,14 @@ class Occluders {
     std::vector<PartMask> near;              // per plane: targets within the band around it
   };
   const TargetSides& target_sides(const Shooter& shooter) const;
-  // The answer for one point; reads only constant data (safe on several threads).
+  // The answer for one point; reads only constant data (safe on several threads). `lists`
+  // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
   PartMask answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
-                  const TargetSides& sides, WorkCounts& counts) const;
+                  const TargetSides& sides, const SceneBlockers::Lists* lists, std::size_t index,
+                  WorkCounts& counts) const;
+  // Whether this set's answers come from the whole scene's lists of blockers (a share, or
+  // the first-blocker loop that needs every blocker's position).
+  bool uses_lists() const { return !whole_scene_ || policy_ == RayTestPolicy::kStopAtFirstBlocker; }
   // +1, -1 or 0 (within the tolerance) for a point and a plane (normal n, offset d).
   int side_of(double nx, double ny, double nz, double d, const Vec3& x) const {
     const double distance = nx * x.x + ny * x.y + nz * x.z - d;
@@ -109,7 +114,8 @@ class Occluders {
                                           // decided without Embree (docs/performance.md)
   mutable TargetSides sides_;             // of the last shooter (see the batch call)
   std::vector<int> position_of_scene_patch_;  // -1 when not in this set
-  std::unique_ptr<EmbreeScene> embree_;
+  std::shared_ptr<const SceneBlockers> blockers_;
+  bool whole_scene_ = false;  // every scene patch is in the set
 };
 
 }  // namespace ncube

@@ -56,12 +56,8 @@ void RadiosityEngine::gather(const Shooter& shooter, const std::vector<int>& rec
       const Element& element = scene_.elements[receivers[k]];
       // The shooter emits from its front only: a receiver behind its plane gets nothing.
       if (!(glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0)) continue;
-      const Vec3& normal = scene_.patches[element.patch].normal;
-      double form_factor = 0.0;
-      for (int part = 0; part < shooter.part_count; ++part)
-        if (masks[k] & (PartMask(1) << part))
-          form_factor += point_to_polygon_form_factor(element.centre, normal, shooter.parts[part]);
-      form_factors[k] = form_factor;
+      form_factors[k] = visible_parts_form_factor(
+          element.centre, scene_.patches[element.patch].normal, shooter, masks[k]);
     }
   });
   for (std::size_t k = 0; k < receivers.size(); ++k) {

@@ -1,0 +1,120 @@
+#include "radiosity/scene_blockers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include "radiosity/host_threads.h"
+
+namespace ncube {
+namespace {
+
+// Enough blocks for every group of the largest machine to have two in flight (pipelined).
+constexpr std::size_t kMemoBlocks = 256;
+
+double coordinate_scale(const Scene& scene) {
+  const Bounds b = scene_bounds(scene);
+  double largest = b.diagonal();
+  if (b.lo.x <= b.hi.x)
+    for (int axis = 0; axis < 3; ++axis)
+      largest = std::max({largest, std::fabs(b.lo[axis]), std::fabs(b.hi[axis])});
+  return 1.0 + largest;
+}
+
+// Identifies a scene's geometry (the address alone could be reused by another scene).
+std::uint64_t fingerprint(const Scene& scene) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const Patch& p : scene.patches)
+    for (int i = 0; i < p.polygon.count; ++i)
+      for (int axis = 0; axis < 3; ++axis) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &p.polygon[i][axis], sizeof bits);
+        h = (h ^ bits) * 1099511628211ull;
+      }
+  return h;
+}
+
+}  // namespace
+
+std::shared_ptr<const SceneBlockers> SceneBlockers::for_scene(const Scene& scene) {
+  static std::mutex mutex;
+  static std::map<std::tuple<const Scene*, std::size_t, std::uint64_t>,
+                  std::weak_ptr<const SceneBlockers>>
+      registry;
+  const auto key = std::make_tuple(&scene, scene.patches.size(), fingerprint(scene));
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<const SceneBlockers> blockers = registry[key].lock();
+  if (!blockers) {
+    blockers = std::make_shared<const SceneBlockers>(scene);
+    registry[key] = blockers;
+  }
+  return blockers;
+}
+
+SceneBlockers::SceneBlockers(const Scene& scene) : scale_(coordinate_scale(scene)) {
+  candidates_.reserve(scene.patches.size());
+  for (int p = 0; p < int(scene.patches.size()); ++p)
+    candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
+  // Quads grow by 2e-3 of the coordinate scale, about 10^4 times the single-precision
+  // rounding (docs/performance.md).
+  embree_ = std::make_unique<EmbreeScene>(candidates_, 2e-3 * scale_);
+}
+
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads) const {
+  const int m = shooter.part_count;
+  auto lists = std::make_shared<Lists>();
+  lists->part_count = m;
+  std::vector<std::vector<std::pair<int, int>>> per_point(count);
+  parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
+                            shooter.patch, per_point[k]);
+      std::sort(per_point[k].begin(), per_point[k].end());
+    }
+  });
+  lists->offsets.assign(count * std::size_t(m) + 1, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    for (const auto& [ray, patch] : per_point[k]) {
+      ++lists->offsets[k * std::size_t(m) + std::size_t(ray) + 1];
+      lists->patches.push_back(patch);
+    }
+  for (std::size_t i = 1; i < lists->offsets.size(); ++i) lists->offsets[i] += lists->offsets[i - 1];
+  return lists;
+}
+
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads, bool memo) const {
+  if (!memo) return compute(points, receiver_patches, count, shooter, threads);
+  const int m = shooter.part_count;
+  for (auto it = memo_.begin(); it != memo_.end(); ++it) {
+    const Entry& e = *it;
+    if (e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
+        !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
+        !std::equal(e.points.begin(), e.points.end(), points) ||
+        !std::equal(e.receiver_patches.begin(), e.receiver_patches.end(), receiver_patches))
+      continue;
+    std::shared_ptr<const Lists> found = e.lists;
+    if (it != memo_.begin()) {  // most recent first
+      Entry moved = std::move(*it);
+      memo_.erase(it);
+      memo_.push_front(std::move(moved));
+    }
+    return found;
+  }
+  Entry e{shooter.patch, m,
+          std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
+          std::vector<Vec3>(points, points + count),
+          std::vector<int>(receiver_patches, receiver_patches + count),
+          compute(points, receiver_patches, count, shooter, threads)};
+  memo_.push_front(std::move(e));
+  if (memo_.size() > kMemoBlocks) memo_.pop_back();
+  return memo_.front().lists;
+}
+
+}  // namespace ncube
