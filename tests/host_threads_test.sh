@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# --threads shares a run's host work out over host threads; the result file must not depend
+# on it: runs with 1 and 2 threads are byte-identical apart from "host_seconds" (V = 0, V > 0
+# with its shared lists of blockers, and both ray-test policies). Called by ctest as:
+# host_threads_test.sh SIMULATE REPO_ROOT
+set -u
+simulate="$1"
+root="$2"
+export NCUBE_ROOT="$root"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+without_host_time() { grep -v '"host_seconds"' "$1"; }
+
+check() {
+  local name="$1"; shift
+  for threads in 1 2; do
+    "$simulate" "$@" --threads "$threads" --json "$work/$name-$threads.json" --quiet ||
+      fail "$name: simulate exited $? with --threads $threads"
+  done
+  grep -q '"host_seconds"' "$work/$name-1.json" || fail "$name: no host_seconds field to leave out"
+  if ! cmp -s <(without_host_time "$work/$name-1.json") <(without_host_time "$work/$name-2.json"); then
+    fail "$name: result files differ between --threads 1 and --threads 2"
+    diff <(without_host_time "$work/$name-1.json") <(without_host_time "$work/$name-2.json") | head -5
+  fi
+}
+
+check scene1-R1-V0 scene1.json --R 1 --V 0 --samples 64 --iterations 6
+check scene1-R2-V3 scene1.json --R 2 --V 3 --samples 64 --iterations 6
+check scene1-R2-V3-first-blocker scene1.json --R 2 --V 3 --samples 16 --iterations 4 --ray-test first-blocker
+check scene0-R4-V0-first-blocker scene0.json --R 4 --V 0 --samples 64 --iterations 10 --ray-test first-blocker
+
+[ "$failures" -eq 0 ] && echo "host threads: all result files identical" 
+exit $((failures > 0))
