@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <mutex>
 #include <stdexcept>
 
 namespace ncube {
@@ -110,49 +109,50 @@ PartMask EmbreeScene::trace(Query& query, int count) const {
   const double s = shortest > 0.0 ? pad_ / std::sqrt(shortest) : 0.0;
   const float tfar = float(1.0 + 2.0 * s) * (1.0f + 1e-6f);
   for (int start = 0; start < count; start += 16) {
-    alignas(64) RTCRay16 rays;
+    alignas(64) RTCRay16 r;
     alignas(64) int valid[16];
     for (int lane = 0; lane < 16; ++lane) {
       const int k = std::min(start + lane, count - 1);  // idle lanes repeat the last ray
       valid[lane] = start + lane < count ? -1 : 0;
       const Vec3& delta = query.delta[k];
       const Vec3 origin = query.from - s * delta;
-      rays.org_x[lane] = float(origin.x);
-      rays.org_y[lane] = float(origin.y);
-      rays.org_z[lane] = float(origin.z);
-      rays.dir_x[lane] = float(delta.x);
-      rays.dir_y[lane] = float(delta.y);
-      rays.dir_z[lane] = float(delta.z);
-      rays.tnear[lane] = 0.0f;
-      rays.tfar[lane] = tfar;
-      rays.time[lane] = 0.0f;
-      rays.mask[lane] = ~0u;
-      rays.id[lane] = unsigned(k);
-      rays.flags[lane] = 0;
+      r.org_x[lane] = float(origin.x);
+      r.org_y[lane] = float(origin.y);
+      r.org_z[lane] = float(origin.z);
+      r.dir_x[lane] = float(delta.x);
+      r.dir_y[lane] = float(delta.y);
+      r.dir_z[lane] = float(delta.z);
+      r.tnear[lane] = 0.0f;
+      r.tfar[lane] = tfar;
+      r.time[lane] = 0.0f;
+      r.mask[lane] = ~0u;
+      r.id[lane] = unsigned(k);
+      r.flags[lane] = 0;
     }
-    rtcOccluded16(valid, scene_, &query.context, &rays);
+    rtcOccluded16(valid, scene_, &query.context, &r);
     for (int lane = 0; lane < 16 && start + lane < count; ++lane)
-      if (rays.tfar[lane] == -INFINITY) blocked |= PartMask(1) << (start + lane);
+      if (r.tfar[lane] == -INFINITY) blocked |= PartMask(1) << (start + lane);
   }
   return blocked;
 }
 
 void EmbreeScene::prepare(Query& query, const Vec3& from, const Vec3* targets, int count,
-                          int excluded_a, int excluded_b) const {
+                          int excluded_a, int excluded_b,
+                          std::vector<std::pair<int, int>>* hits) const {
   rtcInitIntersectContext(&query.context);
   query.scene = this;
   query.from = from;
   for (int k = 0; k < count; ++k) query.delta[k] = targets[k] - from;
   query.excluded_a = excluded_a;
   query.excluded_b = excluded_b;
-  query.hits = nullptr;
+  query.hits = hits;
 }
 
 PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
                               int excluded_b) const {
   if (candidates_.empty() || count == 0) return 0;
   Query query;
-  prepare(query, from, targets, count, excluded_a, excluded_b);
+  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
   return trace(query, count);
 }
 
@@ -160,8 +160,7 @@ void EmbreeScene::all_blockers(const Vec3& from, const Vec3* targets, int count,
                                int excluded_b, std::vector<std::pair<int, int>>& hits) const {
   if (candidates_.empty() || count == 0) return;
   Query query;
-  prepare(query, from, targets, count, excluded_a, excluded_b);
-  query.hits = &hits;
+  prepare(query, from, targets, count, excluded_a, excluded_b, &hits);
   trace(query, count);
 }
 

@@ -2,17 +2,19 @@
 // libembree-dev 3.13), used to answer "which of these rays are blocked" at ray-tracing-library
 // speed while the exact double test of ray_patch_test.h decides every answer.
 //
-// Embree works in single precision. To stay exact it is made conservative, and it only
-// proposes: every patch goes in as a quad padded outwards in its plane, every ray starts a
-// little before its visibility point and ends a little past its target, so every crossing the
-// exact test would find is among the hits Embree reports; an occlusion filter then runs the
-// exact test on each reported hit and rejects those the exact test denies (and the excluded
-// receiver and shooter patches). Embree does the traversal, the exact test decides
-// (docs/performance.md).
+// Embree works in single precision. To stay exact it only proposes, conservatively: every
+// patch goes in as a quad grown by `pad` in its plane, every ray starts `pad` before its
+// visibility point and ends `pad` past its target, so every crossing the exact test would
+// find is among the hits Embree reports; an occlusion filter runs the exact test on each
+// reported hit and rejects those the exact test denies (and the excluded receiver and
+// shooter patches, which every ray meets). Embree does the traversal, the exact test
+// decides. Rays nearly parallel to a plane are the caller's (occluders.h): there single
+// precision cannot be trusted at any padding (docs/performance.md).
 #pragma once
 
 #include <embree3/rtcore.h>
 
+#include <utility>
 #include <vector>
 
 #include "radiosity/ray_patch_test.h"
@@ -23,7 +25,7 @@ namespace ncube {
 class EmbreeScene {
  public:
   // `candidates` (kept by reference: must outlive this scene) in their set order; `pad` is
-  // the margin (scene units) by which quads are grown and rays lengthened, far above the
+  // the margin (scene units) of the quads and of the rays' ends, far above the
   // single-precision rounding of the scene's coordinates.
   EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad);
   ~EmbreeScene();
@@ -37,8 +39,8 @@ class EmbreeScene {
                    int excluded_b) const;
 
   // Every candidate (not excluded) the segment to targets[k] crosses by the exact test:
-  // appends (k, position) pairs to `hits`, in no particular order. Every hit along each
-  // segment is examined (no early end).
+  // appends (k, position) pairs to `hits`, in no particular order, possibly twice. Every hit
+  // along each segment is examined (no early end).
   void all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
                     int excluded_b, std::vector<std::pair<int, int>>& hits) const;
 
@@ -46,8 +48,9 @@ class EmbreeScene {
   struct Query;
   static void exact_filter(const RTCFilterFunctionNArguments* args);
   void prepare(Query& query, const Vec3& from, const Vec3* targets, int count, int excluded_a,
-               int excluded_b) const;
-  PartMask trace(Query& query, int count) const;  // rays Embree reports blocked
+               int excluded_b, std::vector<std::pair<int, int>>* hits) const;
+  // The rays through Embree: returns those reported blocked.
+  PartMask trace(Query& query, int count) const;
 
   const std::vector<PatchCandidate>& candidates_;
   double pad_;

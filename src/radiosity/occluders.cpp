@@ -11,12 +11,12 @@ namespace ncube {
 Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
   side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
-  // Rays within `band_` of a plane are decided without Embree: with single-precision
-  // rounding about 1e-7 of the coordinate scale, a ray crossing a plane at more than
-  // band_ / scale (radians) meets Embree's padded quad wherever the exact test finds a
-  // crossing (docs/performance.md).
+  // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
+  // radians, too flat for single precision: the exact test alone decides them against that
+  // plane's patches. Every other crossing is steep enough for Embree's padded quads
+  // (scene_blockers.cpp, docs/performance.md).
   blockers_ = SceneBlockers::for_scene(scene);
-  band_ = 1e-3 * blockers_->scale();
+  band_ = 2e-3 * blockers_->scale();
   patches_.reserve(patch_indices.size());
   std::map<std::array<double, 4>, int> plane_index;
   for (int scene_index : patch_indices) {
@@ -49,6 +49,28 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
   plane_members_.resize(patches_.size());
   std::vector<std::int32_t> next(plane_first_.begin(), plane_first_.end() - 1);
   for (int c = 0; c < size(); ++c) plane_members_[std::size_t(next[plane_of_[c]]++)] = c;
+  // Classes of axis-aligned planes: 2 * axis + (normal component < 0).
+  std::array<std::vector<int>, 6> classes;
+  for (int g = 0; g < plane_count(); ++g) {
+    const double n[3] = {plane_x_[g], plane_y_[g], plane_z_[g]};
+    int axis = -1;
+    for (int a = 0; a < 3; ++a)
+      if ((n[a] == 1.0 || n[a] == -1.0) && n[(a + 1) % 3] == 0.0 && n[(a + 2) % 3] == 0.0) axis = a;
+    if (axis < 0) {
+      other_planes_.push_back(g);
+      continue;
+    }
+    classes[std::size_t(2 * axis + (n[axis] < 0.0))].push_back(g);
+  }
+  for (int c = 0; c < 6; ++c) {
+    std::vector<int>& members = classes[std::size_t(c)];
+    std::sort(members.begin(), members.end(), [&](int a, int b) {
+      return plane_offset_[a] < plane_offset_[b] || (plane_offset_[a] == plane_offset_[b] && a < b);
+    });
+    class_begin_[std::size_t(c)] = int(axis_order_.size());
+    axis_order_.insert(axis_order_.end(), members.begin(), members.end());
+  }
+  class_begin_[6] = int(axis_order_.size());
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
 }
 
@@ -79,17 +101,36 @@ const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) co
     sides_.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.in_front[g]);
     sides_.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.behind[g]);
   }
+  sides_.near_planes.clear();
+  for (std::size_t g = 0; g < planes; ++g)
+    if (sides_.near[g] != 0) sides_.near_planes.push_back(int(g));
+  sides_.behind_prefix.assign(axis_order_.size() + 1, 0);
+  sides_.in_front_prefix.assign(axis_order_.size() + 1, 0);
+  for (std::size_t i = 0; i < axis_order_.size(); ++i) {
+    sides_.behind_prefix[i + 1] = sides_.behind_prefix[i] + sides_.behind_tests[std::size_t(axis_order_[i])];
+    sides_.in_front_prefix[i + 1] =
+        sides_.in_front_prefix[i] + sides_.in_front_tests[std::size_t(axis_order_[i])];
+  }
   return sides_;
 }
 
 void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
                                   int receiver_position, int shooter_position, PartMask& blocked,
                                   int* first) const {
+  // The box around all these rays first, then ray by ray.
+  Vec3 rays_lo = point, rays_hi = point;
+  for (PartMask left = rays; left != 0; left &= left - 1) {
+    rays_lo = glm::min(rays_lo, shooter.targets[__builtin_ctzll(left)]);
+    rays_hi = glm::max(rays_hi, shooter.targets[__builtin_ctzll(left)]);
+  }
   for (std::int32_t i = plane_first_[g]; i < plane_first_[g + 1]; ++i) {
     const int c = plane_members_[std::size_t(i)];
     if (c == receiver_position || c == shooter_position) continue;
     const Vec3& lo = box_lo_[std::size_t(c)];
     const Vec3& hi = box_hi_[std::size_t(c)];
+    if (rays_hi.x < lo.x || rays_lo.x > hi.x || rays_hi.y < lo.y || rays_lo.y > hi.y ||
+        rays_hi.z < lo.z || rays_lo.z > hi.z)
+      continue;
     for (PartMask left = rays; left != 0; left &= left - 1) {
       const int k = __builtin_ctzll(left);
       const Vec3& target = shooter.targets[k];
@@ -103,6 +144,33 @@ void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const
       if (first && (first[k] < 0 || c < first[k])) first[k] = c;
     }
   }
+}
+
+std::int64_t Occluders::crossings_over_planes(const Vec3& point, const TargetSides& sides) const {
+  // A point in front of a plane is crossed by the rays to the targets behind it, and the
+  // other way round.
+  std::int64_t crossings = 0;
+  for (int c = 0; c < 6; ++c) {
+    // Along a class (offsets ascending) the point's side only falls: +1 ... 0 ... -1.
+    const int begin = class_begin_[std::size_t(c)], end = class_begin_[std::size_t(c) + 1];
+    auto first_where = [&](auto below) {  // first index whose side satisfies `below`
+      int lo = begin, hi = end;
+      while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (below(plane_side(axis_order_[std::size_t(mid)], point))) hi = mid; else lo = mid + 1;
+      }
+      return lo;
+    };
+    const int not_in_front = first_where([](int side) { return side <= 0; });
+    const int behind = first_where([](int side) { return side < 0; });
+    crossings += sides.behind_prefix[std::size_t(not_in_front)] - sides.behind_prefix[std::size_t(begin)];
+    crossings += sides.in_front_prefix[std::size_t(end)] - sides.in_front_prefix[std::size_t(behind)];
+  }
+  for (int g : other_planes_) {
+    const int side = plane_side(g, point);
+    crossings += side > 0 ? sides.behind_tests[g] : (side < 0 ? sides.in_front_tests[g] : 0);
+  }
+  return crossings;
 }
 
 void Occluders::first_blocker_counts(const PartMask* crossing, const int* first, int m,
@@ -163,25 +231,27 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
     blocked = blockers_->embree().blocked(point, shooter.targets.data(), m, receiver_patch,
                                           shooter.patch);
   }
-  // One pass over the planes: which rays cross each (the brute-force loop's plane crossings)
-  // and which planes hold the point and some targets within their band.
+  // Rays within the band around a plane that also holds the point: decided without Embree.
+  for (int g : sides.near_planes) {
+    const double distance =
+        plane_x_[g] * point.x + plane_y_[g] * point.y + plane_z_[g] * point.z - plane_offset_[g];
+    if (!(std::fabs(distance) <= band_)) continue;
+    const PartMask rays = first_blocker ? sides.near[g] : sides.near[g] & ~blocked;
+    if (rays != 0)
+      in_plane_blockers(g, point, rays, shooter, receiver_position, shooter_position, blocked,
+                        first_blocker ? first : nullptr);
+  }
+  // Which rays cross each plane (the brute-force loop's plane crossings).
   const int planes = plane_count();
   std::vector<PartMask> crossing_buffer(first_blocker ? std::size_t(planes) : 0);
   std::int64_t crossings = 0;
-  for (int g = 0; g < planes; ++g) {
-    const double distance =
-        plane_x_[g] * point.x + plane_y_[g] * point.y + plane_z_[g] * point.z - plane_offset_[g];
-    const int side = distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
-    if (first_blocker)
+  if (first_blocker) {
+    for (int g = 0; g < planes; ++g) {
+      const int side = plane_side(g, point);
       crossing_buffer[std::size_t(g)] = side > 0 ? sides.behind[g] : (side < 0 ? sides.in_front[g] : 0);
-    else
-      crossings += side > 0 ? sides.behind_tests[g] : (side < 0 ? sides.in_front_tests[g] : 0);
-    if (std::fabs(distance) <= band_ && sides.near[g] != 0) {
-      const PartMask rays = first_blocker ? sides.near[g] : sides.near[g] & ~blocked;
-      if (rays != 0)
-        in_plane_blockers(g, point, rays, shooter, receiver_position, shooter_position, blocked,
-                          first_blocker ? first : nullptr);
     }
+  } else {
+    crossings = crossings_over_planes(point, sides);
   }
   if (first_blocker) {
     first_blocker_counts(crossing_buffer.data(), first, m, receiver_position, shooter_position,

@@ -65,6 +65,9 @@ class Occluders {
     std::vector<std::int64_t> in_front_tests, behind_tests;
     std::vector<PartMask> in_front, behind;  // per plane: which targets lie on each side
     std::vector<PartMask> near;              // per plane: targets within the band around it
+    std::vector<int> near_planes;            // the planes with some target in their band
+    // Over axis_order_: sums of behind_tests / in_front_tests of the first i planes.
+    std::vector<std::int64_t> behind_prefix, in_front_prefix;
   };
   const TargetSides& target_sides(const Shooter& shooter) const;
   // The answer for one point; reads only constant data (safe on several threads). `lists`
@@ -90,6 +93,8 @@ class Occluders {
   void in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
                          int receiver_position, int shooter_position, PartMask& blocked,
                          int* first) const;
+  // Plane crossings of the rays from `point` over all planes (none excluded).
+  std::int64_t crossings_over_planes(const Vec3& point, const TargetSides& sides) const;
   // Tests and plane crossings of the first-blocker loop, given each ray's first blocker and
   // per plane the rays that cross it.
   void first_blocker_counts(const PartMask* crossing, const int* first, int part_count,
@@ -106,6 +111,12 @@ class Occluders {
   std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
   std::vector<std::int32_t> plane_size_;  // patches in each plane
   std::vector<std::int32_t> plane_of_;    // per position
+  // Axis-aligned planes (normal exactly +-x, +-y or +-z), by class (axis and sign) and within
+  // a class by offset: a point's side is then monotone along the class, so two binary
+  // searches per class find the planes in front of and behind it. The other planes.
+  std::vector<int> axis_order_;
+  std::array<int, 7> class_begin_{};  // class c is axis_order_[class_begin_[c] .. class_begin_[c+1])
+  std::vector<int> other_planes_;
   std::vector<std::int32_t> plane_first_, plane_members_;  // positions of plane g's patches:
                                           // plane_members_[plane_first_[g] .. plane_first_[g+1])
   std::vector<Vec3> box_lo_, box_hi_;     // per position: bounding box grown by band_

@@ -58,9 +58,11 @@ SceneBlockers::SceneBlockers(const Scene& scene) : scale_(coordinate_scale(scene
   candidates_.reserve(scene.patches.size());
   for (int p = 0; p < int(scene.patches.size()); ++p)
     candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
-  // Quads grow by 2e-3 of the coordinate scale, about 10^4 times the single-precision
-  // rounding (docs/performance.md).
-  embree_ = std::make_unique<EmbreeScene>(candidates_, 2e-3 * scale_);
+  // Quads grow by 5e-4 of the coordinate scale: a ray crossing a plane at more than 2e-3
+  // radians (occluders.cpp decides the others) then meets the grown quad wherever the exact
+  // test finds a crossing, with single-precision errors up to about 1e-6 of the scale
+  // (several units in the last place; docs/performance.md).
+  embree_ = std::make_unique<EmbreeScene>(candidates_, 5e-4 * scale_);
 }
 
 std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
@@ -72,9 +74,11 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   std::vector<std::vector<std::pair<int, int>>> per_point(count);
   parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
+      std::vector<std::pair<int, int>>& hits = per_point[k];
       embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
-                            shooter.patch, per_point[k]);
-      std::sort(per_point[k].begin(), per_point[k].end());
+                            shooter.patch, hits);
+      std::sort(hits.begin(), hits.end());
+      hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
     }
   });
   lists->offsets.assign(count * std::size_t(m) + 1, 0);
