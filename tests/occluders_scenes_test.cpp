@@ -76,7 +76,7 @@ void check_scene(const std::string& name, RayTestPolicy policy) {
   for (int p = n / 7; shooters.size() < 7; p = (p + n / 5 + 1) % n)
     if (std::find(shooters.begin(), shooters.end(), p) == shooters.end()) shooters.push_back(p);
   // Up to 1.5e8 brute-force ray-patch tests per set kind: a few seconds in all.
-  const int points = std::clamp(int(1.5e8 / (64.0 * n * shooters.size())), 20, 500);
+  const int points = std::clamp(int(1.5e8 / (64.0 * n * shooters.size())), 8, 500);
   std::vector<int> all(std::size_t(n), 0);
   for (int p = 0; p < n; ++p) all[std::size_t(p)] = p;
   Tally whole, shares;

@@ -117,29 +117,22 @@ const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) co
 void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
                                   int receiver_position, int shooter_position, PartMask& blocked,
                                   int* first) const {
-  // The box around all these rays first, then ray by ray.
-  Vec3 rays_lo = point, rays_hi = point;
+  // The plane's patches share its normal and offset, so the test's first half (where the ray
+  // meets the plane, if it does within the segment) is the same for all of them: once per ray.
+  const PatchCandidate& plane = patches_[std::size_t(plane_members_[std::size_t(plane_first_[g])])];
   for (PartMask left = rays; left != 0; left &= left - 1) {
-    rays_lo = glm::min(rays_lo, shooter.targets[__builtin_ctzll(left)]);
-    rays_hi = glm::max(rays_hi, shooter.targets[__builtin_ctzll(left)]);
-  }
-  for (std::int32_t i = plane_first_[g]; i < plane_first_[g + 1]; ++i) {
-    const int c = plane_members_[std::size_t(i)];
-    if (c == receiver_position || c == shooter_position) continue;
-    const Vec3& lo = box_lo_[std::size_t(c)];
-    const Vec3& hi = box_hi_[std::size_t(c)];
-    if (rays_hi.x < lo.x || rays_lo.x > hi.x || rays_hi.y < lo.y || rays_lo.y > hi.y ||
-        rays_hi.z < lo.z || rays_lo.z > hi.z)
-      continue;
-    for (PartMask left = rays; left != 0; left &= left - 1) {
-      const int k = __builtin_ctzll(left);
-      const Vec3& target = shooter.targets[k];
-      // The segment's box must meet the patch's (grown) box.
-      if (std::max(point.x, target.x) < lo.x || std::min(point.x, target.x) > hi.x ||
-          std::max(point.y, target.y) < lo.y || std::min(point.y, target.y) > hi.y ||
-          std::max(point.z, target.z) < lo.z || std::min(point.z, target.z) > hi.z)
+    const int k = __builtin_ctzll(left);
+    const Vec3 delta = shooter.targets[k] - point;
+    Vec3 x;
+    if (!segment_meets_plane(plane, point, delta, x)) continue;
+    for (std::int32_t i = plane_first_[g]; i < plane_first_[g + 1]; ++i) {
+      const int c = plane_members_[std::size_t(i)];
+      if (c == receiver_position || c == shooter_position) continue;
+      const Vec3& lo = box_lo_[std::size_t(c)];
+      const Vec3& hi = box_hi_[std::size_t(c)];
+      if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y || x.z < lo.z || x.z > hi.z)
         continue;
-      if (!segment_crosses(patches_[std::size_t(c)], point, target - point)) continue;
+      if (!plane_point_inside(patches_[std::size_t(c)], x)) continue;
       blocked |= PartMask(1) << k;
       if (first && (first[k] < 0 || c < first[k])) first[k] = c;
     }

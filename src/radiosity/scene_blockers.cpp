@@ -77,8 +77,10 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
       std::vector<std::pair<int, int>>& hits = per_point[k];
       embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
                             shooter.patch, hits);
-      std::sort(hits.begin(), hits.end());
-      hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+      if (hits.size() > 1) {
+        std::sort(hits.begin(), hits.end());
+        hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+      }
     }
   });
   lists->offsets.assign(count * std::size_t(m) + 1, 0);
