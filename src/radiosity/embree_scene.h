@@ -39,8 +39,8 @@ class EmbreeScene {
                    int excluded_b) const;
 
   // Every candidate (not excluded) the segment to targets[k] crosses by the exact test:
-  // appends (k, position) pairs to `hits`, in no particular order, possibly twice. Every hit
-  // along each segment is examined (no early end).
+  // appends (k, position) pairs to `hits`, in no particular order, possibly twice (Embree
+  // meets a quad as two triangles). Every hit along each segment is examined (no early end).
   void all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
                     int excluded_b, std::vector<std::pair<int, int>>& hits) const;
 

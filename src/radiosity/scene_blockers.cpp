@@ -73,23 +73,21 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   lists->part_count = m;
   std::vector<std::vector<std::pair<int, int>>> per_point(count);
   parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      std::vector<std::pair<int, int>>& hits = per_point[k];
+    for (std::size_t k = begin; k < end; ++k)
       embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
-                            shooter.patch, hits);
-      if (hits.size() > 1) {
-        std::sort(hits.begin(), hits.end());
-        hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
-      }
-    }
+                            shooter.patch, per_point[k]);
   });
+  // Grouped by ray (a patch may be listed twice for a ray: Embree meets a quad as two
+  // triangles; the readers only OR and take minima, so repeats do no harm).
   lists->offsets.assign(count * std::size_t(m) + 1, 0);
   for (std::size_t k = 0; k < count; ++k)
-    for (const auto& [ray, patch] : per_point[k]) {
-      ++lists->offsets[k * std::size_t(m) + std::size_t(ray) + 1];
-      lists->patches.push_back(patch);
-    }
+    for (const auto& hit : per_point[k]) ++lists->offsets[k * std::size_t(m) + std::size_t(hit.first) + 1];
   for (std::size_t i = 1; i < lists->offsets.size(); ++i) lists->offsets[i] += lists->offsets[i - 1];
+  lists->patches.resize(std::size_t(lists->offsets.back()));
+  std::vector<int> next(lists->offsets.begin(), lists->offsets.end() - 1);
+  for (std::size_t k = 0; k < count; ++k)
+    for (const auto& [ray, patch] : per_point[k])
+      lists->patches[std::size_t(next[k * std::size_t(m) + std::size_t(ray)]++)] = patch;
   return lists;
 }
 
