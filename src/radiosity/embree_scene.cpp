@@ -9,10 +9,11 @@ namespace ncube {
 namespace {
 
 // One Embree device for the process: it holds Embree's thread pool and ISA dispatch. BVH
-// builds of these scenes are small; one build thread keeps them cheap on a shared host.
+// builds of these scenes are small. No "threads=N": Embree would cap every TBB arena of the
+// process (host_threads.h) at N.
 RTCDevice embree_device() {
   static RTCDevice device = [] {
-    RTCDevice d = rtcNewDevice("threads=1,set_affinity=0");
+    RTCDevice d = rtcNewDevice("set_affinity=0");
     if (!d) throw std::runtime_error("Embree: cannot create a device");
     return d;
   }();

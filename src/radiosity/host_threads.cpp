@@ -1,13 +1,9 @@
 #include "radiosity/host_threads.h"
 
-#include <map>
-#include <memory>
-#include <mutex>
-#include <thread>
+#include <omp.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
+#include <algorithm>
+#include <thread>
 
 namespace ncube {
 
@@ -17,21 +13,6 @@ int resolve_host_threads(int requested) {
   return cores > 0 ? int(cores) : 1;
 }
 
-namespace {
-
-// One arena (TBB's pool of worker threads of a given size) per thread count, kept for the
-// process: creating workers per compute step would cost more than small steps take.
-tbb::task_arena& arena_for(int threads) {
-  static std::mutex mutex;
-  static std::map<int, std::unique_ptr<tbb::task_arena>> arenas;
-  const std::lock_guard<std::mutex> lock(mutex);
-  std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
-  if (!arena) arena = std::make_unique<tbb::task_arena>(threads);
-  return *arena;
-}
-
-}  // namespace
-
 void parallel_chunks(int threads, std::size_t count, std::size_t grain,
                      const std::function<void(std::size_t begin, std::size_t end)>& body) {
   threads = resolve_host_threads(threads);
@@ -40,10 +21,14 @@ void parallel_chunks(int threads, std::size_t count, std::size_t grain,
     if (count > 0) body(0, count);
     return;
   }
-  arena_for(threads).execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain),
-                      [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
-  });
+  // OpenMP (GCC's libgomp), not TBB: the node programs run on SimGrid's actor stacks, and
+  // TBB then runs a parallel loop on the calling thread alone (measured).
+  const long chunks = long((count + grain - 1) / grain);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (long chunk = 0; chunk < chunks; ++chunk) {
+    const std::size_t begin = std::size_t(chunk) * grain;
+    body(begin, std::min(count, begin + grain));
+  }
 }
 
 }  // namespace ncube
