@@ -48,6 +48,9 @@ struct EmbreeScene::Query {
   int excluded_a, excluded_b;
   std::vector<std::pair<int, int>>* hits;  // null: any blocker ends a ray; else every
                                            // (ray, position) found, and no ray ends
+  const std::uint64_t* sets_of;            // not null: the sets each ray meets (ray_sets)
+  std::uint64_t all_sets;
+  std::uint64_t* ray_sets;
 };
 
 EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad)
@@ -87,6 +90,17 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
     if (args->valid[i] == 0) continue;
     const unsigned ray = RTCRayN_id(args->ray, args->N, i);
     const int position = int(RTCHitN_primID(args->hit, args->N, i));
+    if (q.sets_of) {  // only hits that can tell of a set not yet known to block are tested
+      const std::uint64_t sets = q.sets_of[position];
+      if (position == q.excluded_a || position == q.excluded_b || (sets & ~q.ray_sets[ray]) == 0 ||
+          !segment_crosses(q.scene->candidates_[std::size_t(position)], q.from, q.delta[ray])) {
+        args->valid[i] = 0;
+        continue;
+      }
+      q.ray_sets[ray] |= sets;
+      if (q.ray_sets[ray] != q.all_sets) args->valid[i] = 0;  // else accepted: the ray ends
+      continue;
+    }
     const bool blocks = position != q.excluded_a && position != q.excluded_b &&
                         segment_crosses(q.scene->candidates_[std::size_t(position)], q.from,
                                         q.delta[ray]);
@@ -147,6 +161,9 @@ void EmbreeScene::prepare(Query& query, const Vec3& from, const Vec3* targets, i
   query.excluded_a = excluded_a;
   query.excluded_b = excluded_b;
   query.hits = hits;
+  query.sets_of = nullptr;
+  query.all_sets = 0;
+  query.ray_sets = nullptr;
 }
 
 PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
@@ -162,6 +179,19 @@ void EmbreeScene::all_blockers(const Vec3& from, const Vec3* targets, int count,
   if (candidates_.empty() || count == 0) return;
   Query query;
   prepare(query, from, targets, count, excluded_a, excluded_b, &hits);
+  trace(query, count);
+}
+
+void EmbreeScene::blocked_sets(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                               int excluded_b, const std::uint64_t* sets_of,
+                               std::uint64_t all_sets, std::uint64_t* ray_sets) const {
+  std::fill(ray_sets, ray_sets + count, std::uint64_t(0));
+  if (candidates_.empty() || count == 0 || all_sets == 0) return;
+  Query query;
+  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
+  query.sets_of = sets_of;
+  query.all_sets = all_sets;
+  query.ray_sets = ray_sets;
   trace(query, count);
 }
 

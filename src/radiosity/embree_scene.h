@@ -14,6 +14,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,14 @@ class EmbreeScene {
   // meets a quad as two triangles). Every hit along each segment is examined (no early end).
   void all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
                     int excluded_b, std::vector<std::pair<int, int>>& hits) const;
+
+  // Sets of candidates (up to 64, `sets_of[position]`: bit s set when the candidate is in
+  // set s): ray_sets[k] gets the sets holding a candidate (not excluded) the segment to
+  // targets[k] crosses by the exact test. A hit whose sets are all known already is not
+  // tested, and a ray ends once it has found all of `all_sets`.
+  void blocked_sets(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                    int excluded_b, const std::uint64_t* sets_of, std::uint64_t all_sets,
+                    std::uint64_t* ray_sets) const;
 
  private:
   struct Query;

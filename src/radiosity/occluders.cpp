@@ -72,9 +72,13 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
   }
   class_begin_[6] = int(axis_order_.size());
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
+  if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
+    set_bit_ = blockers_->register_set(patch_indices);
 }
 
-Occluders::~Occluders() = default;
+Occluders::~Occluders() {
+  if (set_bit_ >= 0) blockers_->unregister_set(set_bit_);
+}
 
 const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
   const int m = shooter.part_count;
@@ -198,7 +202,8 @@ void Occluders::first_blocker_counts(const PartMask* crossing, const int* first,
 
 PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            const TargetSides& sides, const SceneBlockers::Lists* lists,
-                           std::size_t index, WorkCounts& counts) const {
+                           const SceneBlockers::SetMasks* masks, std::size_t index,
+                           WorkCounts& counts) const {
   const int receiver_position = position_in_set(receiver_patch);
   const int shooter_position = position_in_set(shooter.patch);
   const int m = shooter.part_count;
@@ -208,7 +213,11 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
   const bool first_blocker = policy_ == RayTestPolicy::kStopAtFirstBlocker;
   int first[kMaxShooterParts];
   PartMask blocked = 0;
-  if (lists) {
+  if (masks) {
+    const std::uint64_t* ray_sets = masks->blocked.data() + index * std::size_t(m);
+    for (int k = 0; k < m; ++k)
+      if (ray_sets[k] >> set_bit_ & 1) blocked |= PartMask(1) << k;
+  } else if (lists) {
     // The whole scene's blockers of each ray; this set's are those it holds.
     for (int k = 0; k < m; ++k) {
       first[k] = -1;
@@ -278,14 +287,20 @@ void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches,
                                 int threads) const {
   const TargetSides& sides = target_sides(shooter);  // before the threads start
   std::shared_ptr<const SceneBlockers::Lists> lists;
-  if (uses_lists() && !patches_.empty())
+  std::shared_ptr<const SceneBlockers::SetMasks> set_masks;
+  if (uses_masks() && !patches_.empty())
+    set_masks = blockers_->blocked_sets(points, receiver_patches, count, shooter, threads);
+  else if (uses_lists() && !patches_.empty())
     lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
                                 /*memo=*/!whole_scene_ && count > 1);
   std::mutex merge;
-  parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
+  // Whole-scene answers cost an Embree query per point; the others only read memos.
+  const std::size_t grain = lists || set_masks ? 64 : 8;
+  parallel_chunks(threads, count, grain, [&](std::size_t begin, std::size_t end) {
     WorkCounts local;
     for (std::size_t k = begin; k < end; ++k)
-      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists.get(), k, local);
+      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists.get(),
+                        set_masks.get(), k, local);
     const std::lock_guard<std::mutex> lock(merge);
     counts += local;  // integer sums: the same whatever the order
   });

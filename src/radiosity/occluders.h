@@ -30,6 +30,8 @@ class Occluders {
   // `patch_indices` are scene patch indices in the order the brute-force loop visits them.
   Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy);
   ~Occluders();
+  Occluders(const Occluders&) = delete;
+  Occluders& operator=(const Occluders&) = delete;
 
   // Bit p of the result is set when the segment from `point` to the shooter's part p crosses
   // none of this set's patches other than `receiver_patch` and the shooter itself. Adds the
@@ -72,12 +74,18 @@ class Occluders {
   const TargetSides& target_sides(const Shooter& shooter) const;
   // The answer for one point; reads only constant data (safe on several threads). `lists`
   // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
+  // `masks`: the same as bits of registered sets (this set's is set_bit_).
   PartMask answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
-                  const TargetSides& sides, const SceneBlockers::Lists* lists, std::size_t index,
+                  const TargetSides& sides, const SceneBlockers::Lists* lists,
+                  const SceneBlockers::SetMasks* masks, std::size_t index,
                   WorkCounts& counts) const;
-  // Whether this set's answers come from the whole scene's lists of blockers (a share, or
-  // the first-blocker loop that needs every blocker's position).
-  bool uses_lists() const { return !whole_scene_ || policy_ == RayTestPolicy::kStopAtFirstBlocker; }
+  // Where this set's answers come from: the whole scene's Embree query (the whole scene,
+  // testing all patches), its per-set masks (a registered share testing all patches), or
+  // its lists of blockers (the first-blocker loop needs every blocker's position).
+  bool uses_masks() const { return set_bit_ >= 0; }
+  bool uses_lists() const {
+    return !uses_masks() && (!whole_scene_ || policy_ == RayTestPolicy::kStopAtFirstBlocker);
+  }
   // +1, -1 or 0 (within the tolerance) for a point and a plane (normal n, offset d).
   int side_of(double nx, double ny, double nz, double d, const Vec3& x) const {
     const double distance = nx * x.x + ny * x.y + nz * x.z - d;
@@ -127,6 +135,7 @@ class Occluders {
   std::vector<int> position_of_scene_patch_;  // -1 when not in this set
   std::shared_ptr<const SceneBlockers> blockers_;
   bool whole_scene_ = false;  // every scene patch is in the set
+  int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
 };
 
 }  // namespace ncube

@@ -54,7 +54,8 @@ std::shared_ptr<const SceneBlockers> SceneBlockers::for_scene(const Scene& scene
   return blockers;
 }
 
-SceneBlockers::SceneBlockers(const Scene& scene) : scale_(coordinate_scale(scene)) {
+SceneBlockers::SceneBlockers(const Scene& scene)
+    : scale_(coordinate_scale(scene)), sets_of_patch_(scene.patches.size(), 0) {
   candidates_.reserve(scene.patches.size());
   for (int p = 0; p < int(scene.patches.size()); ++p)
     candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
@@ -91,34 +92,81 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   return lists;
 }
 
-std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(
-    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
-    int threads, bool memo) const {
-  if (!memo) return compute(points, receiver_patches, count, shooter, threads);
+SceneBlockers::Entry* SceneBlockers::find(int kind, const Vec3* points,
+                                           const int* receiver_patches, std::size_t count,
+                                           const Shooter& shooter) const {
   const int m = shooter.part_count;
   for (auto it = memo_.begin(); it != memo_.end(); ++it) {
     const Entry& e = *it;
-    if (e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
+    if (e.kind != kind || (kind == 1 && e.version != version_) ||
+        e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
         !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
         !std::equal(e.points.begin(), e.points.end(), points) ||
         !std::equal(e.receiver_patches.begin(), e.receiver_patches.end(), receiver_patches))
       continue;
-    std::shared_ptr<const Lists> found = e.lists;
     if (it != memo_.begin()) {  // most recent first
       Entry moved = std::move(*it);
       memo_.erase(it);
       memo_.push_front(std::move(moved));
     }
-    return found;
+    return &memo_.front();
   }
-  Entry e{shooter.patch, m,
-          std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
-          std::vector<Vec3>(points, points + count),
-          std::vector<int>(receiver_patches, receiver_patches + count),
-          compute(points, receiver_patches, count, shooter, threads)};
-  memo_.push_front(std::move(e));
+  return nullptr;
+}
+
+void SceneBlockers::remember(Entry entry) const {
+  memo_.push_front(std::move(entry));
   if (memo_.size() > kMemoBlocks) memo_.pop_back();
-  return memo_.front().lists;
+}
+
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads, bool memo) const {
+  if (!memo) return compute(points, receiver_patches, count, shooter, threads);
+  if (const Entry* e = find(0, points, receiver_patches, count, shooter)) return e->lists;
+  const int m = shooter.part_count;
+  auto lists = compute(points, receiver_patches, count, shooter, threads);
+  remember(Entry{0, 0, shooter.patch, m,
+                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
+                 std::vector<Vec3>(points, points + count),
+                 std::vector<int>(receiver_patches, receiver_patches + count), lists, nullptr});
+  return lists;
+}
+
+int SceneBlockers::register_set(const std::vector<int>& scene_patches) const {
+  if (registered_ == ~std::uint64_t(0)) return -1;
+  const int bit = __builtin_ctzll(~registered_);
+  registered_ |= std::uint64_t(1) << bit;
+  ++version_;
+  for (int p : scene_patches) sets_of_patch_[std::size_t(p)] |= std::uint64_t(1) << bit;
+  return bit;
+}
+
+void SceneBlockers::unregister_set(int bit) const {
+  registered_ &= ~(std::uint64_t(1) << bit);
+  ++version_;
+  for (std::uint64_t& sets : sets_of_patch_) sets &= ~(std::uint64_t(1) << bit);
+}
+
+std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads) const {
+  if (const Entry* e = find(1, points, receiver_patches, count, shooter)) return e->masks;
+  const int m = shooter.part_count;
+  auto masks = std::make_shared<SetMasks>();
+  masks->part_count = m;
+  masks->blocked.assign(count * std::size_t(m), 0);
+  parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      embree_->blocked_sets(points[k], shooter.targets.data(), m, receiver_patches[k],
+                            shooter.patch, sets_of_patch_.data(), registered_,
+                            masks->blocked.data() + k * std::size_t(m));
+  });
+  remember(Entry{1, version_, shooter.patch, m,
+                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
+                 std::vector<Vec3>(points, points + count),
+                 std::vector<int>(receiver_patches, receiver_patches + count), nullptr, masks});
+  return masks;
 }
 
 }  // namespace ncube

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <vector>
@@ -42,13 +43,33 @@ class SceneBlockers {
                                         std::size_t count, const Shooter& shooter, int threads,
                                         bool memo) const;
 
+  // Cheaper when only "does my set block it" is asked (a share, testing all patches): sets
+  // of patches registered here (up to 64 at a time; -1 when full) get one bit each, and
+  // per point and ray the answer is the bits of the sets holding a blocker.
+  int register_set(const std::vector<int>& scene_patches) const;
+  void unregister_set(int bit) const;
+  struct SetMasks {
+    int part_count = 0;
+    std::vector<std::uint64_t> blocked;  // [k * M + r]: bit s set when set s blocks the ray
+  };
+  std::shared_ptr<const SetMasks> blocked_sets(const Vec3* points, const int* receiver_patches,
+                                               std::size_t count, const Shooter& shooter,
+                                               int threads) const;
+
  private:
   struct Entry {
+    int kind;               // 0: lists, 1: set masks
+    std::uint64_t version;  // of the registered sets (masks only)
     int shooter_patch, part_count;
     std::vector<Vec3> targets, points;
     std::vector<int> receiver_patches;
     std::shared_ptr<const Lists> lists;
+    std::shared_ptr<const SetMasks> masks;
   };
+  // The memo entry for this block, or null.
+  Entry* find(int kind, const Vec3* points, const int* receiver_patches, std::size_t count,
+              const Shooter& shooter) const;
+  void remember(Entry entry) const;
   std::shared_ptr<const Lists> compute(const Vec3* points, const int* receiver_patches,
                                        std::size_t count, const Shooter& shooter,
                                        int threads) const;
@@ -57,6 +78,8 @@ class SceneBlockers {
   std::vector<PatchCandidate> candidates_;  // scene order
   std::unique_ptr<EmbreeScene> embree_;
   mutable std::deque<Entry> memo_;          // most recent first
+  mutable std::vector<std::uint64_t> sets_of_patch_;  // per scene patch: registered sets
+  mutable std::uint64_t registered_ = 0, version_ = 0;
 };
 
 }  // namespace ncube
