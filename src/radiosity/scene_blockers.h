@@ -4,7 +4,9 @@
 // whole scene block it and keeps those of its own share. The V visibility processors of a
 // group are asked about the same block of points for the same shooter, so the lists of a
 // block are computed once and handed to all V (host-side memo: every answer is still what
-// the exact test says for that share's patches; no count depends on it).
+// the exact test says for that share's patches; no count depends on it). Shares testing all
+// patches need only "does my share block this ray": they register as sets and get one bit
+// per set and ray (cheaper than lists of every blocker, which first-blocker sets read).
 #pragma once
 
 #include <cstddef>
@@ -45,7 +47,8 @@ class SceneBlockers {
 
   // Cheaper when only "does my set block it" is asked (a share, testing all patches): sets
   // of patches registered here (up to 64 at a time; -1 when full) get one bit each, and
-  // per point and ray the answer is the bits of the sets holding a blocker.
+  // per point and ray the answer is the bits of the sets holding a blocker. Like the queries,
+  // not to be called from two threads at once (occluder sets are built before a run).
   int register_set(const std::vector<int>& scene_patches) const;
   void unregister_set(int bit) const;
   struct SetMasks {
