@@ -56,7 +56,7 @@ def simulate(cell, values, document, workdir, changes):
     write_cost_model(trial, model)
     spec = sweep_cell(cell)
     result = simulator.run(spec.scene_file, dict(spec.options, **changes), spec.platform_file,
-                           model, spec.cfg, accept_out_of_memory=False)
+                           model, spec.cfg, accept_out_of_memory=False, threads=0)
     return result["seconds_per_iteration"]   # the one definition (docs/reproduce.md)
 
 

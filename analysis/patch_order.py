@@ -91,7 +91,8 @@ def fit(names, cells, scenes_dir, workdir):
         write_cost_model(dict(zip(names, x)), model)
         return np.array([simulator.run(scenes_dir / f"{c['scene']}.json", spec.options,
                                        spec.platform_file, model, spec.cfg,
-                                       accept_out_of_memory=False)["seconds_per_iteration"]
+                                       accept_out_of_memory=False,
+                                       threads=0)["seconds_per_iteration"]
                          for c, _, spec in cells])
 
     y0 = times(x0)

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <iostream>
+#include <random>
 
 namespace ncube {
 namespace {
@@ -69,6 +71,59 @@ TEST(FormFactor, HemisphereOfLargePolygonApproachesOne) {
   const double s = 1e4;
   const Polygon sky = Polygon::quad({-s, -s, 1}, {s, -s, 1}, {s, s, 1}, {-s, s, 1});
   EXPECT_NEAR(point_to_polygon_form_factor({0, 0, 0}, {0, 0, 1}, sky), 1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace ncube
+
+namespace ncube {
+namespace {
+
+// The outline sum of the visible parts equals the sum of the parts' own contour integrals
+// (the reference: point_to_polygon_form_factor part by part) to 1e-12 relative, for quad and
+// triangle shooters, random masks, receivers in front of the shooter facing every way
+// (clipped and unclipped parts).
+TEST(FormFactor, VisiblePartsSumEqualsThePartByPartSum) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Scene scene;
+  Patch quad, triangle;
+  quad.polygon = Polygon::quad({0, 2, 0}, {0.8, 2, 0.1}, {0.9, 2.1, 1.0}, {-0.1, 2, 0.9});
+  triangle.polygon = Polygon::triangle({0, 2, 0}, {1, 2.2, 0}, {0.4, 2.1, 1});
+  quad.reflectance = triangle.reflectance = Rgb(0.5);
+  scene.patches = {quad, triangle};
+  scene.build_elements();
+  int unclipped = 0, clipped = 0;
+  double largest_error = 0.0;
+  for (int patch = 0; patch < 2; ++patch)
+    for (int samples : {1, 4, 16, 64}) {
+      const Shooter shooter = make_shooter(scene, patch, Rgb(1.0), samples);
+      for (int trial = 0; trial < 400; ++trial) {
+        Vec3 point(uniform(random), uniform(random), uniform(random));
+        if (glm::dot(shooter.normal, point - shooter.polygon[0]) <= 0.0)
+          point -= 2.0 * glm::dot(shooter.normal, point - shooter.polygon[0]) * shooter.normal;
+        Vec3 normal = glm::normalize(Vec3(uniform(random), uniform(random), uniform(random)));
+        if (trial % 2 == 0 && glm::dot(normal, shooter.targets[0] - point) < 0.0) normal = -normal;
+        PartMask mask = std::uniform_int_distribution<PartMask>()(random) & shooter.all_parts();
+        if (trial % 5 == 0) mask = shooter.all_parts();
+        double expected = 0.0;
+        bool any_clipped = false;
+        for (int part = 0; part < shooter.part_count; ++part) {
+          for (int v = 0; v < shooter.parts[part].count; ++v)
+            any_clipped = any_clipped || glm::dot(normal, shooter.parts[part][v] - point) < 0.0;
+          if (mask >> part & 1)
+            expected += point_to_polygon_form_factor(point, normal, shooter.parts[part]);
+        }
+        (any_clipped ? clipped : unclipped)++;
+        const double got = visible_parts_form_factor(point, normal, shooter, mask);
+        ASSERT_NEAR(got, expected, 1e-12 * expected + 1e-300)
+            << "patch " << patch << " M " << samples << " trial " << trial;
+        if (expected > 0.0) largest_error = std::max(largest_error, std::fabs(got - expected) / expected);
+      }
+    }
+  EXPECT_GT(unclipped, 500);  // both ways of summing are exercised
+  EXPECT_GT(clipped, 500);
+  std::cout << "largest relative difference " << largest_error << "\n";
 }
 
 }  // namespace

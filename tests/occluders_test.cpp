@@ -75,11 +75,11 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
   }
 }
 
-TEST(Occluders, HierarchyGivesBruteForceAnswersAndCountsWhenTestingAllPatches) {
+TEST(Occluders, HostAnswersGiveBruteForceAnswersAndCountsWhenTestingAllPatches) {
   for (unsigned seed : {1u, 2u, 3u}) expect_same_as_brute_force(RayTestPolicy::kTestAllPatches, seed);
 }
 
-TEST(Occluders, HierarchyGivesBruteForceAnswersAndCountsWhenStoppingAtFirstBlocker) {
+TEST(Occluders, HostAnswersGiveBruteForceAnswersAndCountsWhenStoppingAtFirstBlocker) {
   for (unsigned seed : {4u, 5u, 6u})
     expect_same_as_brute_force(RayTestPolicy::kStopAtFirstBlocker, seed);
 }

@@ -27,6 +27,10 @@ def _fraction(v):
     return None if 0 < v < 1 and math.isfinite(v) else "must be between 0 and 1 (exclusive)"
 
 
+def _one_of(*values):
+    return lambda v: None if v in values else "must be " + " or ".join(values)
+
+
 def _ray_test(v):
     return None if v in ("all", "first-blocker") else "must be all or first-blocker"
 
@@ -45,6 +49,16 @@ OPTIONS = {
                          "visibility points per message"),
     "pipelined": Option("--pipelined", bool, False, "pipelined"),
     "unlimited_memory": Option("--unlimited-memory", bool, False, "memory_cap"),
+    # The rendering phase (section 2.3).
+    "render_parallel": Option("--render-parallel", str, "off", "render_parallel",
+                              _one_of("off", "blocks", "scanlines"), "off, blocks or scanlines"),
+    "render_distribution": Option("--render-distribution", str, "hypercube",
+                                  "render_distribution", _one_of("ring", "hypercube"),
+                                  "ring or hypercube"),
+    "image_width": Option("--image-width", int, 800, "image_width", _at_least(16),
+                          "picture width (the rendering phase)"),
+    "image_height": Option("--image-height", int, 600, "image_height", _at_least(16),
+                           "picture height (the rendering phase)"),
 }
 # Not options of a cell's configuration but of how it is run or what it writes.
 FILE_OPTIONS = ("platform", "cost_model")
@@ -79,12 +93,15 @@ def config_fields(options):
 
 
 def command(simulate, scene, options, platform=None, cost_model=None, cfg=None, json_out=None,
-            trace_out=None, quiet=True):
+            trace_out=None, quiet=True, threads=1):
     """The ./simulate command line: every option written out, defaults included, so that the
-    command says the whole configuration."""
+    command says the whole configuration. `threads`: host threads of the run (not part of the
+    configuration: results do not depend on it); 1 for sweeps, which run a cell per core."""
     args = [str(simulate), str(scene)]
     for name, value in complete(options).items():
         option = OPTIONS[name]
+        if value is None:
+            continue
         if option.kind is bool:
             args += [option.flag] if value else []
         else:
@@ -101,4 +118,4 @@ def command(simulate, scene, options, platform=None, cost_model=None, cfg=None, 
         args += ["--trace", str(trace_out)]
     if quiet:
         args.append("--quiet")
-    return args
+    return args + ["--threads", str(threads)]

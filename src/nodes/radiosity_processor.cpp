@@ -73,12 +73,10 @@ void RadiosityProcessor::shoot(const Shooter& shooter) {
   // intersect it with all other patches; add the light of the visible parts.
   WorkCounts work;
   const std::vector<int> receivers = engine_.receivers(shooter, setup_.options.skip_facing_away, work);
-  std::vector<PartMask> visible(receivers.size());
-  for (std::size_t k = 0; k < receivers.size(); ++k) {
-    const Element& element = setup_.scene.elements[receivers[k]];
-    visible[k] = occluders_->unblocked_parts(element.centre, element.patch, shooter, work);
-  }
-  engine_.gather(shooter, receivers, visible, work);
+  const int threads = setup_.options.host_threads;
+  const std::vector<PartMask> visible =
+      visible_parts(setup_.scene, *occluders_, receivers, shooter, work, threads);
+  engine_.gather(shooter, receivers, visible, work, threads);
   runtime_.compute(work);
 }
 
@@ -108,7 +106,7 @@ void RadiosityProcessor::shoot_with_visibility_processors(const Shooter& shooter
     const std::vector<int> part(receivers.begin() + first, receivers.begin() + last);
     const std::vector<PartMask> masks(visible.begin() + first, visible.begin() + last);
     WorkCounts work;
-    engine_.gather(shooter, part, masks, work);
+    engine_.gather(shooter, part, masks, work, setup_.options.host_threads);
     runtime_.compute(work);
     if (!setup_.pipelined && block + 1 < blocks) send_block(receivers, block + 1);
   }

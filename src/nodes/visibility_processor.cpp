@@ -29,9 +29,10 @@ void VisibilityProcessor::run() {
     answer->kind = MessageKind::kAnswers;
     answer->block = message->block;
     WorkCounts work;
-    for (std::size_t k = 0; k < message->points.size(); ++k)
-      answer->masks.push_back(
-          share_.unblocked_parts(message->points[k], message->point_patches[k], shooter, work));
+    answer->masks.resize(message->points.size());
+    share_.unblocked_parts(message->points.data(), message->point_patches.data(),
+                           message->points.size(), shooter, answer->masks.data(), work,
+                           setup_.options.host_threads);
     runtime_.compute(work);
     XBT_DEBUG("block %d from node %d: %zu points, %llu ray-patch tests", message->block,
               message->from, message->points.size(), (unsigned long long)work.ray_patch_tests);

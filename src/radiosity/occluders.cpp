@@ -1,214 +1,83 @@
 #include "radiosity/occluders.h"
 
 #include <algorithm>
-#include <glm/geometric.hpp>
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "radiosity/host_threads.h"
 
 namespace ncube {
-namespace {
-
-// Ends of a shadow ray lie on the receiver and on the shooter; a relative margin keeps the
-// surfaces they start and end on (and coplanar neighbours) from blocking them.
-constexpr double kRayEpsilon = 1e-9;
-constexpr int kLeafSize = 4;
-
-// A segment with its reciprocal direction, computed once per ray for all box tests.
-struct Segment {
-  Vec3 from, delta, inverse;
-  Segment(const Vec3& f, const Vec3& d) : from(f), delta(d) {
-    for (int axis = 0; axis < 3; ++axis) inverse[axis] = d[axis] != 0.0 ? 1.0 / d[axis] : 0.0;
-  }
-};
-
-bool segment_meets_box(const Vec3& lo, const Vec3& hi, const Segment& s) {
-  double t0 = 0.0, t1 = 1.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (s.delta[axis] == 0.0) {
-      if (s.from[axis] < lo[axis] || s.from[axis] > hi[axis]) return false;
-      continue;
-    }
-    double a = (lo[axis] - s.from[axis]) * s.inverse[axis];
-    double b = (hi[axis] - s.from[axis]) * s.inverse[axis];
-    if (a > b) std::swap(a, b);
-    t0 = a > t0 ? a : t0;
-    t1 = b < t1 ? b : t1;
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
-bool segment_crosses(const Occluders::Candidate& c, const Vec3& from, const Vec3& delta) {
-  const double denominator = glm::dot(c.normal, delta);
-  if (denominator == 0.0) return false;  // parallel to the plane
-  const double t = (c.plane_offset - glm::dot(c.normal, from)) / denominator;
-  if (!(t > kRayEpsilon && t < 1.0 - kRayEpsilon)) return false;
-  const Vec3 x = from + t * delta;
-  for (int k = 0; k < c.vertex_count; ++k) {
-    const Vec3& a = c.vertices[k];
-    const Vec3& b = c.vertices[(k + 1) % c.vertex_count];
-    if (glm::dot(c.normal, glm::cross(b - a, x - a)) < 0.0) return false;
-  }
-  return true;
-}
-
 Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
-  // Pad boxes so that rounding in the slab test never prunes a patch the exact test hits.
-  const double pad = 1e-7 * (1.0 + scene_bounds(scene).diagonal());
   side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
+  // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
+  // radians, too flat for single precision: the exact test alone decides them against that
+  // plane's patches. Every other crossing is steep enough for Embree's padded quads
+  // (scene_blockers.cpp, docs/performance.md).
+  blockers_ = SceneBlockers::for_scene(scene);
+  band_ = 2e-3 * blockers_->scale();
   patches_.reserve(patch_indices.size());
+  std::map<std::array<double, 4>, int> plane_index;
   for (int scene_index : patch_indices) {
     const Patch& p = scene.patches[scene_index];
-    Candidate c{};
-    c.vertex_count = p.polygon.count;
-    c.lo = Vec3(1e300);
-    c.hi = Vec3(-1e300);
-    for (int i = 0; i < p.polygon.count; ++i) {
-      c.vertices[i] = p.polygon[i];
-      c.lo = glm::min(c.lo, p.polygon[i]);
-      c.hi = glm::max(c.hi, p.polygon[i]);
-    }
-    c.lo -= Vec3(pad);
-    c.hi += Vec3(pad);
-    c.normal = p.normal;
-    c.plane_offset = glm::dot(p.normal, p.polygon[0]);
-    c.scene_index = scene_index;
+    const PatchCandidate c = make_candidate(p.polygon, p.normal, scene_index);
     position_of_scene_patch_[scene_index] = int(patches_.size());
     patches_.push_back(c);
-    plane_x_.push_back(c.normal.x);
-    plane_y_.push_back(c.normal.y);
-    plane_z_.push_back(c.normal.z);
-    plane_offset_.push_back(c.plane_offset);
-  }
-  order_.resize(patches_.size());
-  for (int i = 0; i < int(order_.size()); ++i) order_[i] = i;
-  if (!patches_.empty()) {
-    nodes_.reserve(2 * patches_.size());
-    build(0, int(patches_.size()));
-  }
-}
-
-int Occluders::build(int first, int count) {
-  const int index = int(nodes_.size());
-  nodes_.push_back(Node{});
-  Vec3 lo(1e300), hi(-1e300);
-  int min_position = 1 << 30;
-  for (int i = first; i < first + count; ++i) {
-    const Candidate& c = patches_[order_[i]];
-    lo = glm::min(lo, c.lo);
-    hi = glm::max(hi, c.hi);
-    min_position = std::min(min_position, order_[i]);
-  }
-  nodes_[index].lo = lo;
-  nodes_[index].hi = hi;
-  nodes_[index].min_position = min_position;
-  if (count <= kLeafSize) {
-    nodes_[index].first = first;
-    nodes_[index].count = count;
-    return index;
-  }
-  // Surface-area heuristic: on each axis, sort by box centre and take the cut that
-  // minimises area(left) x n(left) + area(right) x n(right); ties broken by position so the
-  // hierarchy is the same on every run.
-  auto area = [](const Vec3& a, const Vec3& b) {
-    const Vec3 d = b - a;
-    return d.x * d.y + d.y * d.z + d.z * d.x;
-  };
-  auto sort_on = [&](int axis) {
-    auto key = [&](int position) { return patches_[position].lo[axis] + patches_[position].hi[axis]; };
-    std::sort(order_.begin() + first, order_.begin() + first + count, [&](int a, int b) {
-      return key(a) < key(b) || (key(a) == key(b) && a < b);
-    });
-  };
-  std::vector<double> right_area(std::size_t(count), 0.0);
-  double best_cost = 1e300;
-  int best_axis = 0, half = count / 2;
-  for (int axis = 0; axis < 3; ++axis) {
-    sort_on(axis);
-    Vec3 r_lo(1e300), r_hi(-1e300);
-    for (int k = count - 1; k > 0; --k) {
-      const Candidate& c = patches_[order_[first + k]];
-      r_lo = glm::min(r_lo, c.lo);
-      r_hi = glm::max(r_hi, c.hi);
-      right_area[k] = area(r_lo, r_hi);
+    Vec3 lo(1e300), hi(-1e300);
+    for (int i = 0; i < c.vertex_count; ++i) {
+      lo = glm::min(lo, c.vertices[i]);
+      hi = glm::max(hi, c.vertices[i]);
     }
-    Vec3 l_lo(1e300), l_hi(-1e300);
-    for (int k = 1; k < count; ++k) {
-      const Candidate& c = patches_[order_[first + k - 1]];
-      l_lo = glm::min(l_lo, c.lo);
-      l_hi = glm::max(l_hi, c.hi);
-      const double cost = area(l_lo, l_hi) * k + right_area[k] * (count - k);
-      if (cost < best_cost) {
-        best_cost = cost;
-        best_axis = axis;
-        half = k;
-      }
+    box_lo_.push_back(lo - Vec3(band_));
+    box_hi_.push_back(hi + Vec3(band_));
+    const std::array<double, 4> key{c.normal.x, c.normal.y, c.normal.z, c.plane_offset};
+    auto [it, added] = plane_index.emplace(key, int(plane_size_.size()));
+    if (added) {
+      plane_x_.push_back(c.normal.x);
+      plane_y_.push_back(c.normal.y);
+      plane_z_.push_back(c.normal.z);
+      plane_offset_.push_back(c.plane_offset);
+      plane_size_.push_back(0);
     }
+    ++plane_size_[std::size_t(it->second)];
+    plane_of_.push_back(it->second);
   }
-  sort_on(best_axis);
-  const int left = build(first, half);
-  const int right = build(first + half, count - half);
-  nodes_[index].first = left;
-  nodes_[index].right = right;
-  nodes_[index].count = 0;
-  return index;
-}
-
-template <class Skip, class Visit>
-void Occluders::walk(const Vec3& from, const Vec3& delta, Skip skip, Visit visit) const {
-  const Segment segment(from, delta);
-  int stack[64];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (skip(node) || !segment_meets_box(node.lo, node.hi, segment)) continue;
-    if (node.count == 0) {
-      stack[top++] = node.right;
-      stack[top++] = node.first;
+  plane_first_.assign(plane_size_.size() + 1, 0);
+  for (std::size_t g = 0; g < plane_size_.size(); ++g)
+    plane_first_[g + 1] = plane_first_[g] + plane_size_[g];
+  plane_members_.resize(patches_.size());
+  std::vector<std::int32_t> next(plane_first_.begin(), plane_first_.end() - 1);
+  for (int c = 0; c < size(); ++c) plane_members_[std::size_t(next[plane_of_[c]]++)] = c;
+  // Classes of axis-aligned planes: 2 * axis + (normal component < 0).
+  std::array<std::vector<int>, 6> classes;
+  for (int g = 0; g < plane_count(); ++g) {
+    const double n[3] = {plane_x_[g], plane_y_[g], plane_z_[g]};
+    int axis = -1;
+    for (int a = 0; a < 3; ++a)
+      if ((n[a] == 1.0 || n[a] == -1.0) && n[(a + 1) % 3] == 0.0 && n[(a + 2) % 3] == 0.0) axis = a;
+    if (axis < 0) {
+      other_planes_.push_back(g);
       continue;
     }
-    for (int i = node.first; i < node.first + node.count; ++i)
-      if (visit(order_[i])) return;
+    classes[std::size_t(2 * axis + (n[axis] < 0.0))].push_back(g);
   }
+  for (int c = 0; c < 6; ++c) {
+    std::vector<int>& members = classes[std::size_t(c)];
+    std::sort(members.begin(), members.end(), [&](int a, int b) {
+      return plane_offset_[a] < plane_offset_[b] || (plane_offset_[a] == plane_offset_[b] && a < b);
+    });
+    class_begin_[std::size_t(c)] = int(axis_order_.size());
+    axis_order_.insert(axis_order_.end(), members.begin(), members.end());
+  }
+  class_begin_[6] = int(axis_order_.size());
+  whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
+  if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
+    set_bit_ = blockers_->register_set(patch_indices);
 }
 
-int Occluders::any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
-                           int hint) const {
-  // The last blocker usually blocks the next ray too (rays of one receiver are coherent).
-  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) return hint;
-  int found = -1;
-  walk(from, delta, [](const Node&) { return false; }, [&](int position) {
-    const Candidate& c = patches_[position];
-    if (c.scene_index == receiver || c.scene_index == shooter || !segment_crosses(c, from, delta))
-      return false;
-    found = position;
-    return true;
-  });
-  return found;
-}
-
-int Occluders::first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
-                             int hint) const {
-  int best = 1 << 30;
-  if (hint >= 0 && segment_crosses(patches_[hint], from, delta)) best = hint;
-  // Subtrees holding only later candidates than the best blocker so far cannot matter.
-  walk(from, delta, [&](const Node& node) { return node.min_position >= best; },
-       [&](int position) {
-         const Candidate& c = patches_[position];
-         if (position < best && c.scene_index != receiver && c.scene_index != shooter &&
-             segment_crosses(c, from, delta))
-           best = position;
-         return false;
-       });
-  return best == (1 << 30) ? -1 : best;
-}
-
-int Occluders::plane_side(int position, const Vec3& x) const {
-  const double distance = plane_x_[position] * x.x + plane_y_[position] * x.y +
-                          plane_z_[position] * x.z - plane_offset_[position];
-  return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
+Occluders::~Occluders() {
+  if (set_bit_ >= 0) blockers_->unregister_set(set_bit_);
 }
 
 const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
@@ -216,97 +85,239 @@ const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) co
   if (sides_.part_count == m &&
       std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_.targets.begin()))
     return sides_;
-  const std::size_t n = patches_.size();
+  const std::size_t planes = plane_size_.size();
   sides_.part_count = m;
   sides_.targets = shooter.targets;
-  sides_.in_front.assign(n, 0);
-  sides_.behind.assign(n, 0);
-  sides_.side.assign(n * std::size_t(m), 0);
-  for (std::size_t c = 0; c < n; ++c)
+  sides_.in_front_tests.assign(planes, 0);
+  sides_.behind_tests.assign(planes, 0);
+  sides_.in_front.assign(planes, 0);
+  sides_.behind.assign(planes, 0);
+  sides_.near.assign(planes, 0);
+  for (std::size_t g = 0; g < planes; ++g) {
     for (int k = 0; k < m; ++k) {
-      const int side = plane_side(int(c), shooter.targets[k]);
-      sides_.side[c * m + k] = std::int8_t(side);
-      if (side > 0) ++sides_.in_front[c];
-      if (side < 0) ++sides_.behind[c];
+      const Vec3& x = shooter.targets[k];
+      const int side = plane_side(int(g), x);
+      if (side > 0) sides_.in_front[g] |= PartMask(1) << k;
+      if (side < 0) sides_.behind[g] |= PartMask(1) << k;
+      const double distance = plane_x_[g] * x.x + plane_y_[g] * x.y + plane_z_[g] * x.z - plane_offset_[g];
+      if (std::fabs(distance) <= band_) sides_.near[g] |= PartMask(1) << k;
     }
+    sides_.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.in_front[g]);
+    sides_.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.behind[g]);
+  }
+  sides_.near_planes.clear();
+  for (std::size_t g = 0; g < planes; ++g)
+    if (sides_.near[g] != 0) sides_.near_planes.push_back(int(g));
+  sides_.behind_prefix.assign(axis_order_.size() + 1, 0);
+  sides_.in_front_prefix.assign(axis_order_.size() + 1, 0);
+  for (std::size_t i = 0; i < axis_order_.size(); ++i) {
+    sides_.behind_prefix[i + 1] = sides_.behind_prefix[i] + sides_.behind_tests[std::size_t(axis_order_[i])];
+    sides_.in_front_prefix[i + 1] =
+        sides_.in_front_prefix[i] + sides_.in_front_tests[std::size_t(axis_order_[i])];
+  }
   return sides_;
 }
 
-std::uint64_t Occluders::plane_crossings(const Vec3& point, const TargetSides& sides,
-                                         int receiver_position, int shooter_position) const {
-  // Summed per candidate instead of per ray: a candidate is crossed by the rays to the
-  // targets on the other side of its plane from the point.
-  auto crossings_at = [&](int c) -> std::int64_t {
-    const int side = plane_side(c, point);
-    return side > 0 ? sides.behind[c] : (side < 0 ? sides.in_front[c] : 0);
-  };
+void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
+                                  int receiver_position, int shooter_position, PartMask& blocked,
+                                  int* first) const {
+  // The plane's patches share its normal and offset, so the test's first half (where the ray
+  // meets the plane, if it does within the segment) is the same for all of them: once per ray.
+  const PatchCandidate& plane = patches_[std::size_t(plane_members_[std::size_t(plane_first_[g])])];
+  for (PartMask left = rays; left != 0; left &= left - 1) {
+    const int k = __builtin_ctzll(left);
+    const Vec3 delta = shooter.targets[k] - point;
+    Vec3 x;
+    if (!segment_meets_plane(plane, point, delta, x)) continue;
+    for (std::int32_t i = plane_first_[g]; i < plane_first_[g + 1]; ++i) {
+      const int c = plane_members_[std::size_t(i)];
+      if (c == receiver_position || c == shooter_position) continue;
+      const Vec3& lo = box_lo_[std::size_t(c)];
+      const Vec3& hi = box_hi_[std::size_t(c)];
+      if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y || x.z < lo.z || x.z > hi.z)
+        continue;
+      if (!plane_point_inside(patches_[std::size_t(c)], x)) continue;
+      blocked |= PartMask(1) << k;
+      if (first && (first[k] < 0 || c < first[k])) first[k] = c;
+    }
+  }
+}
+
+std::int64_t Occluders::crossings_over_planes(const Vec3& point, const TargetSides& sides) const {
+  // A point in front of a plane is crossed by the rays to the targets behind it, and the
+  // other way round.
   std::int64_t crossings = 0;
-  const int n = int(plane_x_.size());
-  for (int c = 0; c < n; ++c) crossings += crossings_at(c);
-  if (receiver_position >= 0) crossings -= crossings_at(receiver_position);
-  if (shooter_position >= 0) crossings -= crossings_at(shooter_position);
-  return std::uint64_t(crossings);
+  for (int c = 0; c < 6; ++c) {
+    // Along a class (offsets ascending) the point's side only falls: +1 ... 0 ... -1.
+    const int begin = class_begin_[std::size_t(c)], end = class_begin_[std::size_t(c) + 1];
+    auto first_where = [&](auto below) {  // first index whose side satisfies `below`
+      int lo = begin, hi = end;
+      while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (below(plane_side(axis_order_[std::size_t(mid)], point))) hi = mid; else lo = mid + 1;
+      }
+      return lo;
+    };
+    const int not_in_front = first_where([](int side) { return side <= 0; });
+    const int behind = first_where([](int side) { return side < 0; });
+    crossings += sides.behind_prefix[std::size_t(not_in_front)] - sides.behind_prefix[std::size_t(begin)];
+    crossings += sides.in_front_prefix[std::size_t(end)] - sides.in_front_prefix[std::size_t(behind)];
+  }
+  for (int g : other_planes_) {
+    const int side = plane_side(g, point);
+    crossings += side > 0 ? sides.behind_tests[g] : (side < 0 ? sides.in_front_tests[g] : 0);
+  }
+  return crossings;
+}
+
+void Occluders::first_blocker_counts(const PartMask* crossing, const int* first, int m,
+                                     int receiver_position, int shooter_position,
+                                     WorkCounts& counts) const {
+  // The loop of ray k tests positions 0 .. end_k - 1 (end_k: its first blocker + 1, or all
+  // of them), skipping the excluded ones; it crosses the plane of position c when the point
+  // and target k lie on opposite sides. Walk the positions once with the set of rays whose
+  // loop is still running.
+  const int n = size();
+  std::array<std::pair<int, int>, kMaxShooterParts> ends;  // (end, ray), by end
+  for (int k = 0; k < m; ++k) ends[k] = {first[k] < 0 ? n : first[k] + 1, k};
+  std::sort(ends.begin(), ends.begin() + m);
+  const bool shooter_apart = shooter_position >= 0 && shooter_position != receiver_position;
+  std::uint64_t tests = 0;
+  for (int k = 0; k < m; ++k) {
+    const int end = ends[k].first;
+    tests += std::uint64_t(end - (receiver_position >= 0 && receiver_position < end) -
+                           (shooter_apart && shooter_position < end));
+  }
+  PartMask running = m == 64 ? ~PartMask(0) : (PartMask(1) << m) - 1;
+  std::uint64_t crossings = 0;
+  int next = 0;
+  for (int c = 0; c < n && next < m; ++c) {
+    while (next < m && ends[next].first <= c) running &= ~(PartMask(1) << ends[next++].second);
+    if (c == receiver_position || c == shooter_position) continue;
+    crossings += std::uint64_t(__builtin_popcountll(crossing[plane_of_[std::size_t(c)]] & running));
+  }
+  counts.ray_patch_tests += tests;
+  counts.plane_crossings += crossings;
+}
+
+PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
+                           const TargetSides& sides, const SceneBlockers::Lists* lists,
+                           const SceneBlockers::SetMasks* masks, std::size_t index,
+                           WorkCounts& counts) const {
+  const int receiver_position = position_in_set(receiver_patch);
+  const int shooter_position = position_in_set(shooter.patch);
+  const int m = shooter.part_count;
+  const PartMask all = shooter.all_parts();
+  counts.rays += std::uint64_t(m);
+  if (patches_.empty()) return all;
+  const bool first_blocker = policy_ == RayTestPolicy::kStopAtFirstBlocker;
+  int first[kMaxShooterParts];
+  PartMask blocked = 0;
+  if (masks) {
+    const std::uint64_t* ray_sets = masks->blocked.data() + index * std::size_t(m);
+    for (int k = 0; k < m; ++k)
+      if (ray_sets[k] >> set_bit_ & 1) blocked |= PartMask(1) << k;
+  } else if (lists) {
+    // The whole scene's blockers of each ray; this set's are those it holds.
+    for (int k = 0; k < m; ++k) {
+      first[k] = -1;
+      const std::size_t ray = index * std::size_t(m) + std::size_t(k);
+      for (int i = lists->offsets[ray]; i < lists->offsets[ray + 1]; ++i) {
+        const int position = position_in_set(lists->patches[std::size_t(i)]);
+        if (position < 0) continue;
+        blocked |= PartMask(1) << k;
+        if (first[k] < 0 || position < first[k]) first[k] = position;
+      }
+    }
+  } else {
+    blocked = blockers_->embree().blocked(point, shooter.targets.data(), m, receiver_patch,
+                                          shooter.patch);
+  }
+  // Rays within the band around a plane that also holds the point: decided without Embree.
+  for (int g : sides.near_planes) {
+    const double distance =
+        plane_x_[g] * point.x + plane_y_[g] * point.y + plane_z_[g] * point.z - plane_offset_[g];
+    if (!(std::fabs(distance) <= band_)) continue;
+    const PartMask rays = first_blocker ? sides.near[g] : sides.near[g] & ~blocked;
+    if (rays != 0)
+      in_plane_blockers(g, point, rays, shooter, receiver_position, shooter_position, blocked,
+                        first_blocker ? first : nullptr);
+  }
+  // Which rays cross each plane (the brute-force loop's plane crossings).
+  const int planes = plane_count();
+  std::vector<PartMask> crossing_buffer(first_blocker ? std::size_t(planes) : 0);
+  std::int64_t crossings = 0;
+  if (first_blocker) {
+    for (int g = 0; g < planes; ++g) {
+      const int side = plane_side(g, point);
+      crossing_buffer[std::size_t(g)] = side > 0 ? sides.behind[g] : (side < 0 ? sides.in_front[g] : 0);
+    }
+  } else {
+    crossings = crossings_over_planes(point, sides);
+  }
+  if (first_blocker) {
+    first_blocker_counts(crossing_buffer.data(), first, m, receiver_position, shooter_position,
+                         counts);
+    return all & ~blocked;
+  }
+  // The excluded receiver and shooter patches are no tests of the loop.
+  auto crossings_of_one = [&](int position) -> std::int64_t {
+    const int g = plane_of_[std::size_t(position)];
+    const int side = plane_side(g, point);
+    return __builtin_popcountll(side > 0 ? sides.behind[g] : (side < 0 ? sides.in_front[g] : 0));
+  };
+  const bool shooter_apart = shooter_position >= 0 && shooter_position != receiver_position;
+  if (receiver_position >= 0) crossings -= crossings_of_one(receiver_position);
+  if (shooter_apart) crossings -= crossings_of_one(shooter_position);
+  const int excluded = (receiver_position >= 0) + shooter_apart;
+  counts.ray_patch_tests += std::uint64_t(m) * std::uint64_t(size() - excluded);
+  counts.plane_crossings += std::uint64_t(crossings);
+  return all & ~blocked;
 }
 
 PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                                     WorkCounts& counts) const {
-  const int receiver_position = position_in_set(receiver_patch);
-  const int shooter_position = position_in_set(shooter.patch);
-  const int excluded = (receiver_position >= 0) + (shooter_position >= 0);
-  const int m = shooter.part_count;
-  PartMask visible = 0;
-  if (patches_.empty()) {
-    counts.rays += std::uint64_t(m);
-    return shooter.all_parts();
-  }
-  const TargetSides& sides = target_sides(shooter);
-  if (policy_ == RayTestPolicy::kTestAllPatches) {
-    int last_blocker = -1;  // never an excluded patch: those are never found blocking
-    for (int part = 0; part < m; ++part) {
-      last_blocker = any_blocker(point, shooter.targets[part] - point, receiver_patch,
-                                 shooter.patch, last_blocker);
-      if (last_blocker < 0) visible |= PartMask(1) << part;
-    }
-    counts.ray_patch_tests += std::uint64_t(m) * std::uint64_t(size() - excluded);
-    counts.plane_crossings += plane_crossings(point, sides, receiver_position, shooter_position);
-    counts.rays += std::uint64_t(m);
-    return visible;
-  }
-  // First blocker: the loop of each ray tests the candidates up to and including its first
-  // blocker (all of them when there is none), skipping the excluded ones.
-  std::vector<std::int8_t> point_side(patches_.size());
-  for (int c = 0; c < size(); ++c) point_side[c] = std::int8_t(plane_side(c, point));
-  int last_blocker = -1;
-  for (int part = 0; part < m; ++part) {
-    const int blocker = first_blocker(point, shooter.targets[part] - point, receiver_patch,
-                                      shooter.patch, last_blocker);
-    if (blocker >= 0) last_blocker = blocker;
-    if (blocker < 0) visible |= PartMask(1) << part;
-    const int end = blocker < 0 ? size() : blocker + 1;
-    std::uint64_t tests = 0, crossings = 0;
-    for (int c = 0; c < end; ++c) {
-      if (c == receiver_position || c == shooter_position) continue;
-      ++tests;
-      crossings += point_side[c] * sides.side[std::size_t(c) * m + part] < 0;
-    }
-    counts.ray_patch_tests += tests;
-    counts.plane_crossings += crossings;
-  }
-  counts.rays += std::uint64_t(m);
-  return visible;
+  PartMask mask = 0;
+  unblocked_parts(&point, &receiver_patch, 1, shooter, &mask, counts, 1);
+  return mask;
+}
+
+void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
+                                const Shooter& shooter, PartMask* masks, WorkCounts& counts,
+                                int threads) const {
+  const TargetSides& sides = target_sides(shooter);  // before the threads start
+  std::shared_ptr<const SceneBlockers::Lists> lists;
+  std::shared_ptr<const SceneBlockers::SetMasks> set_masks;
+  if (uses_masks() && !patches_.empty())
+    set_masks = blockers_->blocked_sets(points, receiver_patches, count, shooter, threads);
+  else if (uses_lists() && !patches_.empty())
+    lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
+                                /*memo=*/!whole_scene_ && count > 1);
+  std::mutex merge;
+  // Whole-scene answers cost an Embree query per point; the others only read memos.
+  const std::size_t grain = lists || set_masks ? 64 : 8;
+  parallel_chunks(threads, count, grain, [&](std::size_t begin, std::size_t end) {
+    WorkCounts local;
+    for (std::size_t k = begin; k < end; ++k)
+      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists.get(),
+                        set_masks.get(), k, local);
+    const std::lock_guard<std::mutex> lock(merge);
+    counts += local;  // integer sums: the same whatever the order
+  });
 }
 
 PartMask Occluders::unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
                                                 const Shooter& shooter, WorkCounts& counts) const {
   PartMask visible = 0;
   for (int part = 0; part < shooter.part_count; ++part) {
-    const Vec3 delta = shooter.targets[part] - point;
+    const Vec3& target = shooter.targets[part];
+    const Vec3 delta = target - point;
     bool blocked = false;
-    for (int position = 0; position < size(); ++position) {
-      const Candidate& c = patches_[position];
+    for (const PatchCandidate& c : patches_) {
       if (c.scene_index == receiver_patch || c.scene_index == shooter.patch) continue;
       ++counts.ray_patch_tests;
-      if (plane_side(position, point) * plane_side(position, shooter.targets[part]) < 0)
+      const double nx = c.normal.x, ny = c.normal.y, nz = c.normal.z, d = c.plane_offset;
+      if (side_of(nx, ny, nz, d, point) * side_of(nx, ny, nz, d, target) < 0)
         ++counts.plane_crossings;
       if (segment_crosses(c, point, delta)) {
         blocked = true;

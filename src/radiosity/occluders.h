@@ -1,14 +1,19 @@
 // The patches a node intersects visibility rays with: all patches of the scene on a node
 // without visibility processors (section 2.2), a 1/V share on a visibility processor
 // (section 3). The paper's program tests each ray against every patch of the set; the host
-// finds the same answers faster with a bounding-volume hierarchy, and counts the tests the
-// brute-force loop would have made.
+// finds the same answers with a ray-tracing library (embree_scene.h: Embree proposes, the
+// exact test of ray_patch_test.h decides), and counts the tests the brute-force loop would
+// have made, independently of how the host found its answers.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "radiosity/scene_blockers.h"
+#include "radiosity/ray_patch_test.h"
 #include "radiosity/shooter.h"
 #include "radiosity/work_counts.h"
 
@@ -24,6 +29,9 @@ class Occluders {
  public:
   // `patch_indices` are scene patch indices in the order the brute-force loop visits them.
   Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy);
+  ~Occluders();
+  Occluders(const Occluders&) = delete;
+  Occluders& operator=(const Occluders&) = delete;
 
   // Bit p of the result is set when the segment from `point` to the shooter's part p crosses
   // none of this set's patches other than `receiver_patch` and the shooter itself. Adds the
@@ -33,56 +41,72 @@ class Occluders {
   PartMask unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            WorkCounts& counts) const;
 
+  // The same for `count` points at once (masks[k] for points[k] on receiver_patches[k]),
+  // shared out over `threads` host threads (0: all cores). Answers and counts do not depend
+  // on `threads`. Not to be called from two threads at once on the same set (it keeps the
+  // last shooter's ray-target sides).
+  void unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
+                       const Shooter& shooter, PartMask* masks, WorkCounts& counts,
+                       int threads) const;
+
   // The literal brute-force loop (reference for tests): same answers, same counts.
   PartMask unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
                                        const Shooter& shooter, WorkCounts& counts) const;
 
   int size() const { return int(patches_.size()); }
-
-  struct Candidate {  // one patch, with what the exact segment test needs
-    Vec3 vertices[4];
-    int vertex_count;
-    Vec3 normal;
-    double plane_offset;  // normal . x for points x of the plane
-    int scene_index;
-    Vec3 lo, hi;          // padded bounding box, for the hierarchy only
-  };
+  // Distinct planes among the set's patches (coplanar patches share one side test).
+  int plane_count() const { return int(plane_size_.size()); }
 
  private:
-  struct Node {
-    Vec3 lo, hi;
-    int first;         // leaf: first slot in order_; inner: index of the left child
-    int count;         // leaf: number of candidates (> 0); inner: 0
-    int right;         // inner: index of the right child
-    int min_position;  // smallest candidate position in the subtree (for first-blocker order)
-  };
-
-  int build(int first, int count);
-  // Depth-first over the nodes whose boxes the segment meets; `skip(node)` prunes a subtree,
-  // `visit(position)` sees each candidate of a reached leaf and returns true to stop.
-  template <class Skip, class Visit>
-  void walk(const Vec3& from, const Vec3& delta, Skip skip, Visit visit) const;
-  // Position of the first blocking candidate in brute-force order, or -1. `hint` is a
-  // candidate position to try first (the previous ray's blocker) or -1.
-  int first_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
-                    int hint) const;
-  // Position of some blocking candidate, or -1.
-  int any_blocker(const Vec3& from, const Vec3& delta, int receiver, int shooter,
-                  int hint) const;
-  // Which side of each candidate's plane the shooter's ray targets lie on. The targets
-  // depend only on the shooter's geometry and M, so the last shooter's sides are kept.
+  // Which side of each plane the shooter's ray targets lie on. The targets depend only on
+  // the shooter's geometry and M, so the last shooter's sides are kept.
   struct TargetSides {
     int part_count = -1;
     std::array<Vec3, kMaxShooterParts> targets{};
-    std::vector<std::int32_t> in_front, behind;  // per candidate: targets strictly on each side
-    std::vector<std::int8_t> side;               // per candidate and part: +1, -1 or 0
+    // Per plane: its patches times the targets strictly in front of / behind it.
+    std::vector<std::int64_t> in_front_tests, behind_tests;
+    std::vector<PartMask> in_front, behind;  // per plane: which targets lie on each side
+    std::vector<PartMask> near;              // per plane: targets within the band around it
+    std::vector<int> near_planes;            // the planes with some target in their band
+    // Over axis_order_: sums of behind_tests / in_front_tests of the first i planes.
+    std::vector<std::int64_t> behind_prefix, in_front_prefix;
   };
   const TargetSides& target_sides(const Shooter& shooter) const;
-  // +1, -1 or 0 (within the tolerance) for a point and the plane of candidate `position`.
-  int plane_side(int position, const Vec3& x) const;
-  // Plane crossings of the rays from `point` to every target, over the whole set.
-  std::uint64_t plane_crossings(const Vec3& point, const TargetSides& sides, int receiver_position,
-                                int shooter_position) const;
+  // The answer for one point; reads only constant data (safe on several threads). `lists`
+  // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
+  // `masks`: the same as bits of registered sets (this set's is set_bit_).
+  PartMask answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
+                  const TargetSides& sides, const SceneBlockers::Lists* lists,
+                  const SceneBlockers::SetMasks* masks, std::size_t index,
+                  WorkCounts& counts) const;
+  // Where this set's answers come from: the whole scene's Embree query (the whole scene,
+  // testing all patches), its per-set masks (a registered share testing all patches), or
+  // its lists of blockers (the first-blocker loop needs every blocker's position).
+  bool uses_masks() const { return set_bit_ >= 0; }
+  bool uses_lists() const {
+    return !uses_masks() && (!whole_scene_ || policy_ == RayTestPolicy::kStopAtFirstBlocker);
+  }
+  // +1, -1 or 0 (within the tolerance) for a point and a plane (normal n, offset d).
+  int side_of(double nx, double ny, double nz, double d, const Vec3& x) const {
+    const double distance = nx * x.x + ny * x.y + nz * x.z - d;
+    return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
+  }
+  int plane_side(int plane, const Vec3& x) const {
+    return side_of(plane_x_[plane], plane_y_[plane], plane_z_[plane], plane_offset_[plane], x);
+  }
+  // Rays (from `point` to the targets in `rays`) that lie within the band around plane g
+  // are too close to parallel for single precision to be trusted: the exact test runs on
+  // every patch of the plane. Adds the blocked rays to `blocked` and, when `first` is not
+  // null, lowers first[k] to the smallest blocking position.
+  void in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
+                         int receiver_position, int shooter_position, PartMask& blocked,
+                         int* first) const;
+  // Plane crossings of the rays from `point` over all planes (none excluded).
+  std::int64_t crossings_over_planes(const Vec3& point, const TargetSides& sides) const;
+  // Tests and plane crossings of the first-blocker loop, given each ray's first blocker and
+  // per plane the rays that cross it.
+  void first_blocker_counts(const PartMask* crossing, const int* first, int part_count,
+                            int receiver_position, int shooter_position, WorkCounts& counts) const;
   int position_in_set(int scene_patch) const {
     return scene_patch >= 0 && scene_patch < int(position_of_scene_patch_.size())
                ? position_of_scene_patch_[scene_patch]
@@ -90,18 +114,28 @@ class Occluders {
   }
 
   RayTestPolicy policy_;
-  std::vector<Candidate> patches_;  // in brute-force order (position = index)
-  // The candidates' planes, one array per coordinate: the crossing count streams through them.
+  std::vector<PatchCandidate> patches_;  // in brute-force order (position = index)
+  // The distinct planes (bit-identical normal and offset), one array per coordinate.
   std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
-  double side_tolerance_ = 0.0;     // distances within this count as "on the plane"
-  mutable TargetSides sides_;       // of the last shooter (actors run one at a time)
-  std::vector<int> order_;          // candidate positions, permuted by the hierarchy
-  std::vector<Node> nodes_;
+  std::vector<std::int32_t> plane_size_;  // patches in each plane
+  std::vector<std::int32_t> plane_of_;    // per position
+  // Axis-aligned planes (normal exactly +-x, +-y or +-z), by class (axis and sign) and within
+  // a class by offset: a point's side is then monotone along the class, so two binary
+  // searches per class find the planes in front of and behind it. The other planes.
+  std::vector<int> axis_order_;
+  std::array<int, 7> class_begin_{};  // class c is axis_order_[class_begin_[c] .. class_begin_[c+1])
+  std::vector<int> other_planes_;
+  std::vector<std::int32_t> plane_first_, plane_members_;  // positions of plane g's patches:
+                                          // plane_members_[plane_first_[g] .. plane_first_[g+1])
+  std::vector<Vec3> box_lo_, box_hi_;     // per position: bounding box grown by band_
+  double side_tolerance_ = 0.0;           // distances within this count as "on the plane"
+  double band_ = 0.0;                     // rays with both ends this close to a plane are
+                                          // decided without Embree (docs/performance.md)
+  mutable TargetSides sides_;             // of the last shooter (see the batch call)
   std::vector<int> position_of_scene_patch_;  // -1 when not in this set
+  std::shared_ptr<const SceneBlockers> blockers_;
+  bool whole_scene_ = false;  // every scene patch is in the set
+  int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
 };
-
-// The exact ray-patch test shared by the brute-force loop and the hierarchy: does the
-// segment from + t * delta, t in (eps, 1 - eps), cross the candidate's polygon?
-bool segment_crosses(const Occluders::Candidate& c, const Vec3& from, const Vec3& delta);
 
 }  // namespace ncube

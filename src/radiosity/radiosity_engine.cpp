@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiosity/form_factor.h"
+#include "radiosity/host_threads.h"
 
 namespace ncube {
 
@@ -48,21 +49,25 @@ std::vector<int> RadiosityEngine::receivers(const Shooter& shooter, bool skip_fa
 }
 
 void RadiosityEngine::gather(const Shooter& shooter, const std::vector<int>& receivers,
-                             const std::vector<PartMask>& masks, WorkCounts& counts) {
+                             const std::vector<PartMask>& masks, WorkCounts& counts, int threads) {
+  std::vector<double> form_factors(receivers.size(), 0.0);
+  parallel_chunks(threads, receivers.size(), 64, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const Element& element = scene_.elements[receivers[k]];
+      // The shooter emits from its front only: a receiver behind its plane gets nothing.
+      if (!(glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0)) continue;
+      form_factors[k] = visible_parts_form_factor(
+          element.centre, scene_.patches[element.patch].normal, shooter, masks[k]);
+    }
+  });
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     const Element& element = scene_.elements[receivers[k]];
     const Patch& patch = scene_.patches[element.patch];
-    // The shooter emits from its front only: a receiver behind its plane gets nothing.
     const PartMask mask =
         glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0 ? masks[k] : 0;
-    double form_factor = 0.0;
-    for (int part = 0; part < shooter.part_count; ++part)
-      if (mask & (PartMask(1) << part))
-        form_factor += point_to_polygon_form_factor(element.centre, patch.normal,
-                                                    shooter.parts[part]);
     counts.form_factors += std::bitset<64>(mask).count();
     // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
-    const Rgb gained = patch.reflectance * shooter.unshot * form_factor;
+    const Rgb gained = patch.reflectance * shooter.unshot * form_factors[k];
     radiosity_[receivers[k]] += gained;
     unshot_[element.patch] += gained * (element.area / patch.area);
     ++counts.element_updates;
@@ -81,6 +86,21 @@ bool has_converged(const ShooterChoice& best, double emitted_power, double fract
   return best.patch < 0 || best.power < fraction * emitted_power;
 }
 
+std::vector<PartMask> visible_parts(const Scene& scene, const Occluders& occluders,
+                                    const std::vector<int>& receivers, const Shooter& shooter,
+                                    WorkCounts& counts, int threads) {
+  std::vector<Vec3> points(receivers.size());
+  std::vector<int> patches(receivers.size());
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    points[k] = scene.elements[receivers[k]].centre;
+    patches[k] = scene.elements[receivers[k]].patch;
+  }
+  std::vector<PartMask> masks(receivers.size());
+  occluders.unblocked_parts(points.data(), patches.data(), receivers.size(), shooter, masks.data(),
+                            counts, threads);
+  return masks;
+}
+
 ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occluders,
                                const ProgressiveOptions& options) {
   ProgressiveRun run;
@@ -95,12 +115,9 @@ ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occlude
     if (options.max_iterations >= 0 && run.iterations >= options.max_iterations) break;
     const Shooter shooter = make_shooter(engine.scene(), best.patch, best.unshot, options.samples);
     const std::vector<int> receivers = engine.receivers(shooter, options.skip_facing_away, counts);
-    std::vector<PartMask> masks(receivers.size());
-    for (std::size_t k = 0; k < receivers.size(); ++k) {
-      const Element& e = engine.scene().elements[receivers[k]];
-      masks[k] = occluders.unblocked_parts(e.centre, e.patch, shooter, counts);
-    }
-    engine.gather(shooter, receivers, masks, counts);
+    const std::vector<PartMask> masks =
+        visible_parts(engine.scene(), occluders, receivers, shooter, counts, options.host_threads);
+    engine.gather(shooter, receivers, masks, counts, options.host_threads);
     engine.clear_unshot(best.patch);
     ++run.iterations;
     run.shooters.push_back(best.patch);

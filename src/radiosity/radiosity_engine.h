@@ -37,9 +37,11 @@ class RadiosityEngine {
   std::vector<int> receivers(const Shooter& shooter, bool skip_facing_away,
                              WorkCounts& counts) const;
   // Adds the shooter's light to each receiver through the parts its mask marks visible:
-  // form factor = sum of the point-to-part contour integrals (section 2.2).
+  // form factor = sum of the point-to-part contour integrals (section 2.2). The form factors
+  // are computed on `threads` host threads, the light is added in receiver order, so the
+  // result does not depend on `threads`.
   void gather(const Shooter& shooter, const std::vector<int>& receivers,
-              const std::vector<PartMask>& masks, WorkCounts& counts);
+              const std::vector<PartMask>& masks, WorkCounts& counts, int threads = 1);
   // The shooter's owner forgets the radiosity it has just shot.
   void clear_unshot(int patch) { unshot_[patch] = Rgb(0.0); }
 
@@ -64,6 +66,8 @@ struct ProgressiveOptions {
   bool skip_facing_away = false;       // true: receivers that cannot see the shooter trace no rays
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged
+  int host_threads = 0;                // host threads per compute step (0: all cores); no
+                                       // effect on any result, only on host time
 };
 
 struct ProgressiveRun {
@@ -76,6 +80,12 @@ struct ProgressiveRun {
 
 // Whether the best remaining shooter is weak enough to stop.
 bool has_converged(const ShooterChoice& best, double emitted_power, double fraction);
+
+// The visible parts of the shooter from each receiving element's centre (one mask per
+// receiver, in order), on `threads` host threads; adds the brute-force counts.
+std::vector<PartMask> visible_parts(const Scene& scene, const Occluders& occluders,
+                                    const std::vector<int>& receivers, const Shooter& shooter,
+                                    WorkCounts& counts, int threads);
 
 // The whole solution on the host, one processor, brute-force-equivalent visibility.
 ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occluders,

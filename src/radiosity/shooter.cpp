@@ -20,6 +20,12 @@ Shooter make_shooter(const Scene& scene, int patch, const Rgb& unshot, int sampl
   s.unshot = unshot;
   const int k = int(std::lround(std::sqrt(double(samples))));
   s.part_count = k * k;
+  s.side = k;
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i <= k; ++i)
+      s.grid[j * (k + 1) + i] = p.polygon.count == 3 && j == k
+                                    ? p.polygon[2]
+                                    : bilinear_point(p.polygon, double(i) / k, double(j) / k);
   for (int j = 0; j < k; ++j)
     for (int i = 0; i < k; ++i) {
       const int index = j * k + i;

@@ -25,6 +25,11 @@ struct Shooter {
   int part_count = 0;
   std::array<Polygon, kMaxShooterParts> parts{};
   std::array<Vec3, kMaxShooterParts> targets{};  // part centroids: the rays' end points
+  // The corners of the parts: grid[j * (side + 1) + i] is corner (i, j) of the side x side
+  // grid; part j * side + i is (i, j), (i+1, j), (i+1, j+1), (i, j+1). A triangle's top row
+  // is its vertex v2 (its last row of parts are triangles).
+  int side = 0;
+  std::array<Vec3, (8 + 1) * (8 + 1)> grid{};
 
   PartMask all_parts() const {
     return part_count == 64 ? ~PartMask(0) : (PartMask(1) << part_count) - 1;

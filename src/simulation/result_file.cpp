@@ -81,7 +81,12 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"max_iterations", config.options.max_iterations},
                  {"block_size", config.block_size},
                  {"pipelined", config.pipelined},
-                 {"memory_cap", config.memory_cap}};
+                 {"memory_cap", config.memory_cap},
+                 {"render_parallel",
+                  config.render.enabled ? row_partition_name(config.render.partition) : "off"},
+                 {"render_distribution", render_distribution_name(config.render.distribution)},
+                 {"image_width", config.render.width},
+                 {"image_height", config.render.height}};
   j["status"] = result.status;
   if (result.status == "out_of_memory")
     j["out_of_memory"] = {{"node", result.out_of_memory.node},

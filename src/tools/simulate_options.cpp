@@ -124,11 +124,12 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--image-height", options.image_height, "picture height in pixels")
       ->capture_default_str()
       ->check(kDecimalInteger & CLI::Range(16, 8192));
-  std::string render_parallel, render_distribution = "hypercube";
+  std::string render_parallel = "off", render_distribution = "hypercube";
   app.add_option("--render-parallel", render_parallel,
                  "after the radiosity run, simulate rendering the picture on all nodes "
                  "(section 2.3): blocks (N bands of rows) or scanlines (every N-th row)")
-      ->check(CLI::IsMember({"blocks", "scanlines"}));
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "blocks", "scanlines"}));
   app.add_option("--render-distribution", render_distribution,
                  "how the elements reach every node in the rendering phase: ring or hypercube")
       ->capture_default_str()
@@ -138,11 +139,15 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "
                  "overrides the platform's")->type_name("NAME:VALUE")->allow_extra_args(false);
   app.add_option("--log", log, "a SimGrid log setting, e.g. ncube_messages.thresh:debug "
-                 "(categories: ncube_radiosity, ncube_visibility, ncube_messages)")
+                 "(categories: ncube_radiosity, ncube_visibility, ncube_render, ncube_messages)")
       ->type_name("SETTING")->allow_extra_args(false);
   app.set_version_flag("--version", [] {
     return "simulate " + code_version() + " (SimGrid " + simgrid_version() + ")";
   });
+  app.add_option("--threads", config.options.host_threads,
+                 "host threads for one run (0: all cores); results do not depend on it")
+      ->capture_default_str()
+      ->check(kDecimalInteger & CLI::Range(0, 1024));
 
   try {
     app.parse(argc, argv);
@@ -164,7 +169,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
   options.scene_file = resolve_scene_path(options.scene_file);
-  config.render.enabled = !render_parallel.empty();
+  config.render.enabled = render_parallel != "off";
   config.render.partition =
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;
   config.render.distribution = render_distribution == "ring" ? RenderDistribution::kRing

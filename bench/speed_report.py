@@ -1,0 +1,170 @@
+#!/usr/bin/python3
+"""Host speed of ./simulate, today's code next to an older build in one run (a reported
+figure, not a test; docs/performance.md shows its output).
+
+  bench/speed_report.py [--old OLD_BUILD_DIR] [--repeat N] [--scale] [--converge]
+
+OLD_BUILD_DIR holds an older build's simulate (e.g. main at c39b79f built in a worktree:
+git worktree add /tmp/speed-old c39b79f && cmake -S /tmp/speed-old -B /tmp/speed-old/build
+&& cmake --build /tmp/speed-old/build). Host seconds per iteration are the difference of
+runs with more and fewer iterations (set-up not counted), the minimum over --repeat runs
+(the host may be shared). Writes bench/results/*.json; --scale also docs/performance_scale.png.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NEW = os.path.join(ROOT, "build", "simulate")
+RESULTS = os.path.join(ROOT, "bench", "results")
+
+
+def run(binary, args, env=None):
+    """Runs simulate; returns (result file, wall seconds)."""
+    with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as f:
+        out = f.name
+    start = time.perf_counter()
+    subprocess.run([binary] + args + ["--json", out, "--quiet"], check=True, env=env)
+    wall = time.perf_counter() - start
+    with open(out) as f:
+        result = json.load(f)
+    os.unlink(out)
+    return result, wall
+
+
+def per_iteration(binary, args, few, many, repeat, threads=None):
+    """Min over `repeat` of (host(many) - host(few)) / (many - few), and the run of `many`."""
+    extra = [] if threads is None else ["--threads", str(threads)]
+    best, kept = None, None
+    for _ in range(repeat):
+        a, _ = run(binary, args + ["--iterations", str(few)] + extra)
+        b, _ = run(binary, args + ["--iterations", str(many)] + extra)
+        value = (b["host_seconds"] - a["host_seconds"]) / (many - few)
+        if best is None or value < best:
+            best, kept = value, b
+    return best, kept
+
+
+def embree_alone():
+    bench = os.path.join(ROOT, "build", "benchmarks")
+    out = subprocess.run([bench, "--benchmark_filter=embree_alone/scene3", "--benchmark_format=json"],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)["benchmarks"][0]["rays_per_second"]
+
+
+def load_average():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
+def comparison(old, repeat, converge):
+    report = {"load_average_at_start": load_average(), "cores": os.cpu_count()}
+    scene2 = ["scene2.json", "--R", "8", "--V", "7", "--samples", "64"]
+    scene3 = ["scene3.json", "--R", "1", "--unlimited-memory", "--samples", "64"]
+    for label, binary in (("new", NEW), ("old", old)):
+        if binary is None:
+            continue
+        threads = None if label == "old" else 0
+        t2, _ = per_iteration(binary, scene2, 2, 12, repeat, threads)
+        t3, run3 = per_iteration(binary, scene3, 1, 3, repeat, threads)
+        rays = run3["counts"]["rays"] / 3
+        report[label] = {"scene2_R8_V7_seconds_per_iteration": t2,
+                         "scene3_R1_seconds_per_iteration": t3,
+                         "scene3_R1_rays_per_second": rays / t3}
+        if label == "new":
+            t3_one, _ = per_iteration(binary, scene3, 1, 3, repeat, 1)
+            report[label]["scene3_R1_seconds_per_iteration_1_thread"] = t3_one
+            report[label]["scene3_R1_rays_per_second_1_thread"] = rays / t3_one
+    report["embree_alone_rtcOccluded16_rays_per_second_1_thread"] = embree_alone()
+    if converge:
+        result, wall = run(NEW, scene2)
+        report["new"]["scene2_R8_V7_to_convergence"] = {
+            "iterations": result["iterations"], "converged": result["converged"],
+            "wall_seconds": wall, "host_seconds": result["host_seconds"]}
+    report["load_average_at_end"] = load_average()
+    return report
+
+
+def scale(repeat):
+    """Host seconds per iteration against the scene's size and against the simulated nodes."""
+    rows = {"scenes": [], "nodes": []}
+    big = "/tmp/speed-scene4.json"
+    scenes = ["scene0.json", "scene1.json", "scene2.json", "scene3.json"]
+    if os.path.exists(big):
+        scenes.append(big)
+    for scene in scenes:
+        t, result = per_iteration(NEW, [scene, "--R", "1", "--unlimited-memory", "--samples", "64"],
+                                  1, 3, repeat)
+        path = scene if os.path.isabs(scene) else os.path.join(ROOT, "scenes", scene)
+        patches = json.load(open(path))["patches"]
+        rows["scenes"].append({"scene": os.path.basename(scene), "patches": len(patches),
+                               "elements": sum(p["elements"][0] * p["elements"][1] for p in patches),
+                               "rays_per_iteration": result["counts"]["rays"] / 3,
+                               "seconds_per_iteration": t})
+    platform = json.load(open(os.path.join(ROOT, "platforms", "ncube2.json")))
+    configs = [(1, 0), (2, 0), (4, 0), (2, 1), (8, 0), (4, 1), (16, 0), (4, 3), (32, 0), (8, 3),
+               (64, 0), (8, 7), (4, 15), (128, 0), (16, 7), (256, 0), (32, 7), (512, 0), (64, 15)]
+    for r, v in configs:
+        nodes = r * (v + 1)
+        args = ["scene2.json", "--R", str(r), "--V", str(v), "--samples", "64", "--unlimited-memory"]
+        if nodes > 64:
+            dimension = (nodes - 1).bit_length()
+            platform["parameters"]["dimension"]["value"] = dimension
+            path = f"/tmp/speed-platform-{dimension}.json"
+            json.dump(platform, open(path, "w"))
+            args += ["--platform", path]
+        t, _ = per_iteration(NEW, args, 1, 3, repeat)
+        rows["nodes"].append({"R": r, "V": v, "nodes": nodes, "seconds_per_iteration": t})
+    return rows
+
+
+def plot(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
+    s = rows["scenes"]
+    a.loglog([r["rays_per_iteration"] * r["patches"] for r in s], [r["seconds_per_iteration"] for r in s], "o-")
+    for r in s:
+        a.annotate(r["scene"].replace(".json", ""), (r["rays_per_iteration"] * r["patches"], r["seconds_per_iteration"]))
+    a.set_xlabel("brute-force ray-patch tests per iteration (rays x patches)")
+    a.set_ylabel("host seconds per iteration")
+    a.set_title("R=1, V=0, M=64: scene size")
+    n = rows["nodes"]
+    for v in sorted({r["V"] for r in n}):
+        pts = sorted((r["nodes"], r["seconds_per_iteration"]) for r in n if r["V"] == v)
+        b.semilogx([p[0] for p in pts], [p[1] for p in pts], "o-", base=2, label=f"V={v}")
+    b.axvline(64, color="grey", linestyle=":")
+    b.set_xlabel("simulated nodes R x (V+1)")
+    b.set_ylabel("host seconds per iteration")
+    b.set_title("scene2, M=64: simulated machine")
+    b.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--old", help="build directory of the code to compare with")
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--scale", action="store_true")
+    parser.add_argument("--converge", action="store_true")
+    args = parser.parse_args()
+    os.makedirs(RESULTS, exist_ok=True)
+    old = os.path.join(args.old, "simulate") if args.old else None
+    report = comparison(old, args.repeat, args.converge)
+    json.dump(report, open(os.path.join(RESULTS, "comparison.json"), "w"), indent=1)
+    print(json.dumps(report, indent=1))
+    if args.scale:
+        rows = scale(args.repeat)
+        json.dump(rows, open(os.path.join(RESULTS, "scale.json"), "w"), indent=1)
+        print(json.dumps(rows, indent=1))
+        plot(rows, os.path.join(ROOT, "docs", "performance_scale.png"))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,198 @@
+#include "radiosity/embree_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+namespace ncube {
+namespace {
+
+// One Embree device for the process: it holds Embree's thread pool and ISA dispatch. BVH
+// builds of these scenes are small. No "threads=N": Embree would cap every TBB arena of the
+// process (host_threads.h) at N.
+RTCDevice embree_device() {
+  static RTCDevice device = [] {
+    RTCDevice d = rtcNewDevice("set_affinity=0");
+    if (!d) throw std::runtime_error("Embree: cannot create a device");
+    return d;
+  }();
+  return device;
+}
+
+// The polygon grown by `pad` in its plane: each edge moved outwards by `pad`, each vertex
+// to where its two moved edges meet. A triangle is the quad (v0, v1, v2, v2), Embree's way.
+void padded_quad(const PatchCandidate& c, double pad, float* out) {
+  const int n = c.vertex_count;
+  Vec3 outward[4];
+  for (int k = 0; k < n; ++k) {
+    const Vec3 edge = c.vertices[(k + 1) % n] - c.vertices[k];
+    outward[k] = glm::normalize(glm::cross(edge, c.normal));  // CCW seen from the front
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int v = std::min(k, n - 1);
+    const Vec3& before = outward[(v + n - 1) % n];
+    const Vec3& after = outward[v];
+    const Vec3 moved = c.vertices[v] + pad * (before + after) / (1.0 + glm::dot(before, after));
+    for (int axis = 0; axis < 3; ++axis) out[3 * k + axis] = float(moved[axis]);
+  }
+}
+
+}  // namespace
+
+struct EmbreeScene::Query {
+  RTCIntersectContext context;  // first: Embree hands the filter this address
+  const EmbreeScene* scene;
+  Vec3 from;
+  Vec3 delta[kMaxShooterParts];
+  int excluded_a, excluded_b;
+  std::vector<std::pair<int, int>>* hits;  // null: any blocker ends a ray; else every
+                                           // (ray, position) found, and no ray ends
+  const std::uint64_t* sets_of;            // not null: the sets each ray meets (ray_sets)
+  std::uint64_t all_sets;
+  std::uint64_t* ray_sets;
+};
+
+EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad)
+    : candidates_(candidates), pad_(pad) {
+  RTCDevice device = embree_device();
+  scene_ = rtcNewScene(device);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  if (!candidates.empty()) {
+    RTCGeometry quads = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+    const std::size_t n = candidates.size();
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), n));
+    for (std::size_t i = 0; i < n; ++i) {
+      padded_quad(candidates[i], pad, vertices + 12 * i);
+      for (unsigned k = 0; k < 4; ++k) indices[4 * i + k] = unsigned(4 * i + k);
+    }
+    rtcSetGeometryOccludedFilterFunction(quads, &EmbreeScene::exact_filter);
+    rtcCommitGeometry(quads);
+    rtcAttachGeometry(scene_, quads);
+    rtcReleaseGeometry(quads);
+  }
+  rtcCommitScene(scene_);
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
+    throw std::runtime_error("Embree: cannot build the occluder scene");
+}
+
+EmbreeScene::~EmbreeScene() {
+  if (scene_) rtcReleaseScene(scene_);
+}
+
+void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
+  const Query& q = *reinterpret_cast<const Query*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const unsigned ray = RTCRayN_id(args->ray, args->N, i);
+    const int position = int(RTCHitN_primID(args->hit, args->N, i));
+    if (q.sets_of) {  // only hits that can tell of a set not yet known to block are tested
+      const std::uint64_t sets = q.sets_of[position];
+      if (position == q.excluded_a || position == q.excluded_b || (sets & ~q.ray_sets[ray]) == 0 ||
+          !segment_crosses(q.scene->candidates_[std::size_t(position)], q.from, q.delta[ray])) {
+        args->valid[i] = 0;
+        continue;
+      }
+      q.ray_sets[ray] |= sets;
+      if (q.ray_sets[ray] != q.all_sets) args->valid[i] = 0;  // else accepted: the ray ends
+      continue;
+    }
+    const bool blocks = position != q.excluded_a && position != q.excluded_b &&
+                        segment_crosses(q.scene->candidates_[std::size_t(position)], q.from,
+                                        q.delta[ray]);
+    if (q.hits) {  // record and reject: the traversal goes on to the end of the segment
+      if (blocks) q.hits->emplace_back(int(ray), position);
+      args->valid[i] = 0;
+    } else if (!blocks) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
+PartMask EmbreeScene::trace(Query& query, int count) const {
+  query.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, one target patch
+  PartMask blocked = 0;
+  // Parameter t of the exact test; Embree's rays cover [-s, 1 + s] of it, s = pad / the
+  // shortest ray's length (one s for all rays of the point: no square root per ray).
+  double shortest = 1e300;
+  for (int k = 0; k < count; ++k)
+    shortest = std::min(shortest, glm::dot(query.delta[k], query.delta[k]));
+  const double s = shortest > 0.0 ? pad_ / std::sqrt(shortest) : 0.0;
+  const float tfar = float(1.0 + 2.0 * s) * (1.0f + 1e-6f);
+  for (int start = 0; start < count; start += 16) {
+    alignas(64) RTCRay16 r;
+    alignas(64) int valid[16];
+    for (int lane = 0; lane < 16; ++lane) {
+      const int k = std::min(start + lane, count - 1);  // idle lanes repeat the last ray
+      valid[lane] = start + lane < count ? -1 : 0;
+      const Vec3& delta = query.delta[k];
+      const Vec3 origin = query.from - s * delta;
+      r.org_x[lane] = float(origin.x);
+      r.org_y[lane] = float(origin.y);
+      r.org_z[lane] = float(origin.z);
+      r.dir_x[lane] = float(delta.x);
+      r.dir_y[lane] = float(delta.y);
+      r.dir_z[lane] = float(delta.z);
+      r.tnear[lane] = 0.0f;
+      r.tfar[lane] = tfar;
+      r.time[lane] = 0.0f;
+      r.mask[lane] = ~0u;
+      r.id[lane] = unsigned(k);
+      r.flags[lane] = 0;
+    }
+    rtcOccluded16(valid, scene_, &query.context, &r);
+    for (int lane = 0; lane < 16 && start + lane < count; ++lane)
+      if (r.tfar[lane] == -INFINITY) blocked |= PartMask(1) << (start + lane);
+  }
+  return blocked;
+}
+
+void EmbreeScene::prepare(Query& query, const Vec3& from, const Vec3* targets, int count,
+                          int excluded_a, int excluded_b,
+                          std::vector<std::pair<int, int>>* hits) const {
+  rtcInitIntersectContext(&query.context);
+  query.scene = this;
+  query.from = from;
+  for (int k = 0; k < count; ++k) query.delta[k] = targets[k] - from;
+  query.excluded_a = excluded_a;
+  query.excluded_b = excluded_b;
+  query.hits = hits;
+  query.sets_of = nullptr;
+  query.all_sets = 0;
+  query.ray_sets = nullptr;
+}
+
+PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                              int excluded_b) const {
+  if (candidates_.empty() || count == 0) return 0;
+  Query query;
+  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
+  return trace(query, count);
+}
+
+void EmbreeScene::all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                               int excluded_b, std::vector<std::pair<int, int>>& hits) const {
+  if (candidates_.empty() || count == 0) return;
+  Query query;
+  prepare(query, from, targets, count, excluded_a, excluded_b, &hits);
+  trace(query, count);
+}
+
+void EmbreeScene::blocked_sets(const Vec3& from, const Vec3* targets, int count, int excluded_a,
+                               int excluded_b, const std::uint64_t* sets_of,
+                               std::uint64_t all_sets, std::uint64_t* ray_sets) const {
+  std::fill(ray_sets, ray_sets + count, std::uint64_t(0));
+  if (candidates_.empty() || count == 0 || all_sets == 0) return;
+  Query query;
+  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
+  query.sets_of = sets_of;
+  query.all_sets = all_sets;
+  query.ray_sets = ray_sets;
+  trace(query, count);
+}
+
+}  // namespace ncube

@@ -1,0 +1,172 @@
+#include "radiosity/scene_blockers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include "radiosity/host_threads.h"
+
+namespace ncube {
+namespace {
+
+// Enough blocks for every group of the largest machine to have two in flight (pipelined).
+constexpr std::size_t kMemoBlocks = 256;
+
+double coordinate_scale(const Scene& scene) {
+  const Bounds b = scene_bounds(scene);
+  double largest = b.diagonal();
+  if (b.lo.x <= b.hi.x)
+    for (int axis = 0; axis < 3; ++axis)
+      largest = std::max({largest, std::fabs(b.lo[axis]), std::fabs(b.hi[axis])});
+  return 1.0 + largest;
+}
+
+// Identifies a scene's geometry (the address alone could be reused by another scene).
+std::uint64_t fingerprint(const Scene& scene) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const Patch& p : scene.patches)
+    for (int i = 0; i < p.polygon.count; ++i)
+      for (int axis = 0; axis < 3; ++axis) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &p.polygon[i][axis], sizeof bits);
+        h = (h ^ bits) * 1099511628211ull;
+      }
+  return h;
+}
+
+}  // namespace
+
+std::shared_ptr<const SceneBlockers> SceneBlockers::for_scene(const Scene& scene) {
+  static std::mutex mutex;
+  static std::map<std::tuple<const Scene*, std::size_t, std::uint64_t>,
+                  std::weak_ptr<const SceneBlockers>>
+      registry;
+  const auto key = std::make_tuple(&scene, scene.patches.size(), fingerprint(scene));
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<const SceneBlockers> blockers = registry[key].lock();
+  if (!blockers) {
+    blockers = std::make_shared<const SceneBlockers>(scene);
+    registry[key] = blockers;
+  }
+  return blockers;
+}
+
+SceneBlockers::SceneBlockers(const Scene& scene)
+    : scale_(coordinate_scale(scene)), sets_of_patch_(scene.patches.size(), 0) {
+  candidates_.reserve(scene.patches.size());
+  for (int p = 0; p < int(scene.patches.size()); ++p)
+    candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
+  // Quads grow by 5e-4 of the coordinate scale: a ray crossing a plane at more than 2e-3
+  // radians (occluders.cpp decides the others) then meets the grown quad wherever the exact
+  // test finds a crossing, with single-precision errors up to about 1e-6 of the scale
+  // (several units in the last place; docs/performance.md).
+  embree_ = std::make_unique<EmbreeScene>(candidates_, 5e-4 * scale_);
+}
+
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads) const {
+  const int m = shooter.part_count;
+  auto lists = std::make_shared<Lists>();
+  lists->part_count = m;
+  std::vector<std::vector<std::pair<int, int>>> per_point(count);
+  parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
+                            shooter.patch, per_point[k]);
+  });
+  // Grouped by ray (a patch may be listed twice for a ray: Embree meets a quad as two
+  // triangles; the readers only OR and take minima, so repeats do no harm).
+  lists->offsets.assign(count * std::size_t(m) + 1, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    for (const auto& hit : per_point[k]) ++lists->offsets[k * std::size_t(m) + std::size_t(hit.first) + 1];
+  for (std::size_t i = 1; i < lists->offsets.size(); ++i) lists->offsets[i] += lists->offsets[i - 1];
+  lists->patches.resize(std::size_t(lists->offsets.back()));
+  std::vector<int> next(lists->offsets.begin(), lists->offsets.end() - 1);
+  for (std::size_t k = 0; k < count; ++k)
+    for (const auto& [ray, patch] : per_point[k])
+      lists->patches[std::size_t(next[k * std::size_t(m) + std::size_t(ray)]++)] = patch;
+  return lists;
+}
+
+SceneBlockers::Entry* SceneBlockers::find(int kind, const Vec3* points,
+                                           const int* receiver_patches, std::size_t count,
+                                           const Shooter& shooter) const {
+  const int m = shooter.part_count;
+  for (auto it = memo_.begin(); it != memo_.end(); ++it) {
+    const Entry& e = *it;
+    if (e.kind != kind || (kind == 1 && e.version != version_) ||
+        e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
+        !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
+        !std::equal(e.points.begin(), e.points.end(), points) ||
+        !std::equal(e.receiver_patches.begin(), e.receiver_patches.end(), receiver_patches))
+      continue;
+    if (it != memo_.begin()) {  // most recent first
+      Entry moved = std::move(*it);
+      memo_.erase(it);
+      memo_.push_front(std::move(moved));
+    }
+    return &memo_.front();
+  }
+  return nullptr;
+}
+
+void SceneBlockers::remember(Entry entry) const {
+  memo_.push_front(std::move(entry));
+  if (memo_.size() > kMemoBlocks) memo_.pop_back();
+}
+
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads, bool memo) const {
+  if (!memo) return compute(points, receiver_patches, count, shooter, threads);
+  if (const Entry* e = find(0, points, receiver_patches, count, shooter)) return e->lists;
+  const int m = shooter.part_count;
+  auto lists = compute(points, receiver_patches, count, shooter, threads);
+  remember(Entry{0, 0, shooter.patch, m,
+                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
+                 std::vector<Vec3>(points, points + count),
+                 std::vector<int>(receiver_patches, receiver_patches + count), lists, nullptr});
+  return lists;
+}
+
+int SceneBlockers::register_set(const std::vector<int>& scene_patches) const {
+  if (registered_ == ~std::uint64_t(0)) return -1;
+  const int bit = __builtin_ctzll(~registered_);
+  registered_ |= std::uint64_t(1) << bit;
+  ++version_;
+  for (int p : scene_patches) sets_of_patch_[std::size_t(p)] |= std::uint64_t(1) << bit;
+  return bit;
+}
+
+void SceneBlockers::unregister_set(int bit) const {
+  registered_ &= ~(std::uint64_t(1) << bit);
+  ++version_;
+  for (std::uint64_t& sets : sets_of_patch_) sets &= ~(std::uint64_t(1) << bit);
+}
+
+std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads) const {
+  if (const Entry* e = find(1, points, receiver_patches, count, shooter)) return e->masks;
+  const int m = shooter.part_count;
+  auto masks = std::make_shared<SetMasks>();
+  masks->part_count = m;
+  masks->blocked.assign(count * std::size_t(m), 0);
+  parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      embree_->blocked_sets(points[k], shooter.targets.data(), m, receiver_patches[k],
+                            shooter.patch, sets_of_patch_.data(), registered_,
+                            masks->blocked.data() + k * std::size_t(m));
+  });
+  remember(Entry{1, version_, shooter.patch, m,
+                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
+                 std::vector<Vec3>(points, points + count),
+                 std::vector<int>(receiver_patches, receiver_patches + count), nullptr, masks});
+  return masks;
+}
+
+}  // namespace ncube

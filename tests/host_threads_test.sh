@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# --threads shares a run's host work out over host threads; the result file must not depend
+# on it: runs with 1 and 2 threads are identical apart from "host_seconds" and the command line (V = 0, V > 0
+# with its shared lists of blockers, and both ray-test policies). Called by ctest as:
+# host_threads_test.sh SIMULATE REPO_ROOT
+set -u
+simulate="$1"
+root="$2"
+export NCUBE_ROOT="$root"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# The result without what differs by design: the host time and the command line (which names
+# the thread count).
+without_host_time() {
+  /usr/bin/python3 -c 'import json, sys
+r = json.load(open(sys.argv[1])); r.pop("host_seconds"); r["provenance"].pop("command_line")
+print(json.dumps(r, indent=1, sort_keys=True))' "$1"
+}
+
+check() {
+  local name="$1"; shift
+  for threads in 1 2; do
+    "$simulate" "$@" --threads "$threads" --json "$work/$name-$threads.json" --quiet ||
+      fail "$name: simulate exited $? with --threads $threads"
+  done
+  grep -q '"host_seconds"' "$work/$name-1.json" || fail "$name: no host_seconds field to leave out"
+  if ! cmp -s <(without_host_time "$work/$name-1.json") <(without_host_time "$work/$name-2.json"); then
+    fail "$name: result files differ between --threads 1 and --threads 2"
+    diff <(without_host_time "$work/$name-1.json") <(without_host_time "$work/$name-2.json") | head -5
+  fi
+}
+
+check scene1-R1-V0 scene1.json --R 1 --V 0 --samples 64 --iterations 6
+check scene1-R2-V3 scene1.json --R 2 --V 3 --samples 64 --iterations 6
+check scene1-R2-V3-first-blocker scene1.json --R 2 --V 3 --samples 16 --iterations 4 --ray-test first-blocker
+check scene0-R4-V0-first-blocker scene0.json --R 4 --V 0 --samples 64 --iterations 10 --ray-test first-blocker
+
+[ "$failures" -eq 0 ] && echo "host threads: all result files identical" 
+exit $((failures > 0))

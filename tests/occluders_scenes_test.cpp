@@ -1,0 +1,114 @@
+// On every scene of scenes/, the host's visibility answers (Embree proposes, the exact test
+// decides) equal the literal brute-force loop's, and so do the counts: for the whole scene
+// (V = 0) and for the 7 shares of visibility processors (section 3, through the whole scene's
+// shared lists of blockers), for both ray-test policies, on a sample of receivers of a few
+// shooters (the emitters first, as in the first iterations, then others).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <random>
+
+#include "nodes/placement.h"
+#include "radiosity/occluders.h"
+#include "scene/scene_loader.h"
+
+namespace ncube {
+namespace {
+
+std::vector<std::string> scene_files() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().stem().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+struct Tally {
+  long rays = 0, blocked = 0, differing_points = 0;
+};
+
+// Compares the batch answers (2 host threads) with the brute-force loop for `points` sampled
+// receivers of each shooter.
+void compare(const Scene& scene, const Occluders& occluders, const std::vector<int>& shooters,
+             int points_per_shooter, unsigned seed, Tally& tally) {
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> pick(0, int(scene.elements.size()) - 1);
+  for (int shooter_patch : shooters) {
+    const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
+    std::vector<Vec3> points;
+    std::vector<int> patches;
+    while (int(points.size()) < points_per_shooter) {
+      const Element& e = scene.elements[std::size_t(pick(random))];
+      if (e.patch == shooter_patch) continue;
+      points.push_back(e.centre);
+      patches.push_back(e.patch);
+    }
+    std::vector<PartMask> masks(points.size());
+    WorkCounts fast, slow;
+    occluders.unblocked_parts(points.data(), patches.data(), points.size(), shooter, masks.data(),
+                              fast, 2);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const PartMask expected =
+          occluders.unblocked_parts_brute_force(points[k], patches[k], shooter, slow);
+      if (masks[k] != expected) {
+        ++tally.differing_points;
+        ADD_FAILURE() << scene.name << ": shooter " << shooter_patch << ", point on patch "
+                      << patches[k] << ": parts " << std::hex << (masks[k] ^ expected)
+                      << " differ";
+      }
+      tally.blocked += 64 - __builtin_popcountll(expected);
+    }
+    tally.rays += long(points.size()) * 64;
+    EXPECT_EQ(fast, slow) << scene.name << ": counts, shooter " << shooter_patch;
+  }
+}
+
+class OccludersOnScene : public ::testing::TestWithParam<std::string> {};
+
+void check_scene(const std::string& name, RayTestPolicy policy) {
+  const Scene scene = load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/" + name + ".json");
+  const int n = int(scene.patches.size());
+  // Shooters: every emitter (up to 4), then patches spread over the scene.
+  std::vector<int> shooters;
+  for (int p = 0; p < n && shooters.size() < 4; ++p)
+    if (scene.patches[p].emission != Rgb(0.0)) shooters.push_back(p);
+  for (int p = n / 7; shooters.size() < 7; p = (p + n / 5 + 1) % n)
+    if (std::find(shooters.begin(), shooters.end(), p) == shooters.end()) shooters.push_back(p);
+  // Up to 1.5e8 brute-force ray-patch tests per set kind: a few seconds in all.
+  const int points = std::clamp(int(1.5e8 / (64.0 * n * shooters.size())), 8, 500);
+  std::vector<int> all(std::size_t(n), 0);
+  for (int p = 0; p < n; ++p) all[std::size_t(p)] = p;
+  Tally whole, shares;
+  compare(scene, Occluders(scene, all, policy), shooters, points, 1, whole);
+  for (int j = 0; j < 7; ++j)
+    compare(scene, Occluders(scene, visibility_share(scene, 7, j), policy), shooters, points / 7 + 1,
+            10 + unsigned(j), shares);
+  std::cout << name << ": " << whole.rays << " rays against the whole scene (" << whole.blocked
+            << " blocked), " << shares.rays << " against shares (" << shares.blocked
+            << " blocked); differing points: " << whole.differing_points + shares.differing_points
+            << "\n";
+  // The sample must see both answers, or it proves little (at least 2 % of each: scene4's
+  // closed rooms block about 96 % of rays between random points).
+  EXPECT_GT(whole.blocked, whole.rays / 50);
+  EXPECT_LT(whole.blocked, whole.rays - whole.rays / 50);
+  EXPECT_GT(shares.blocked, 0);
+}
+
+TEST_P(OccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopTestingAllPatches) {
+  check_scene(GetParam(), RayTestPolicy::kTestAllPatches);
+}
+
+TEST_P(OccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopStoppingAtFirstBlocker) {
+  check_scene(GetParam(), RayTestPolicy::kStopAtFirstBlocker);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, OccludersOnScene, ::testing::ValuesIn(scene_files()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace ncube
