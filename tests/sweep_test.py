@@ -129,10 +129,11 @@ def test_local_sweep(work):
 
 
 def test_kill_and_resume(work):
+    # The slow cell runs about 10 s on one host thread: long enough to be caught running.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 60, samples: 64}]\n")
+        "        {scene: scene1, R: 1, iterations: 400, samples: 64}]\n")
     results_dir = work / "killed"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow = loaded.cells
