@@ -38,6 +38,11 @@ Octree::Octree(const Scene& scene, const std::vector<int>& patch_indices, Octree
   std::vector<std::int32_t> all(patches_.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = std::int32_t(i);
   split(0, std::move(all), 0);
+  walk_bounds_.reserve(6 * cells_.size());
+  for (const Cell& c : cells_)
+    for (const double x : {c.lo.x - pad_, c.lo.y - pad_, c.lo.z - pad_, c.hi.x + pad_,
+                           c.hi.y + pad_, c.hi.z + pad_})
+      walk_bounds_.push_back(x);
 }
 
 void Octree::split(int cell, std::vector<std::int32_t> patches, int depth) {
@@ -75,11 +80,12 @@ void Octree::split(int cell, std::vector<std::int32_t> patches, int depth) {
   for (int child = 0; child < 8; ++child) split(first + child, std::move(lists[child]), depth + 1);
 }
 
-bool Octree::segment_meets_cell(const Cell& cell, const Vec3& from, const Vec3& delta) const {
+inline bool Octree::segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const {
   // Slab test of the segment from + t delta, t in [0, 1], against the cell grown by pad_.
+  const double* bounds = walk_bounds_.data() + 6 * std::size_t(cell);
   double t_enter = 0.0, t_exit = 1.0;
   for (int axis = 0; axis < 3; ++axis) {
-    const double lo = cell.lo[axis] - pad_, hi = cell.hi[axis] + pad_;
+    const double lo = bounds[axis], hi = bounds[3 + axis];
     if (delta[axis] == 0.0) {
       if (from[axis] < lo || from[axis] > hi) return false;
       continue;
@@ -109,9 +115,10 @@ bool Octree::ray_blocked(const Vec3& from, const Vec3& target, int receiver_patc
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Cell& cell = cells_[std::size_t(stack[--top])];
+    const int index = stack[--top];
     ++counts.octree_cells_visited;
-    if (!segment_meets_cell(cell, from, delta)) continue;
+    if (!segment_meets_cell(index, from, delta)) continue;
+    const Cell& cell = cells_[std::size_t(index)];
     if (cell.first_child >= 0) {
       for (int k = 7; k >= 0; --k) stack[top++] = cell.first_child + (k ^ flip);  // first on top
       continue;

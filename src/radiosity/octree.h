@@ -66,7 +66,7 @@ class Octree {
     std::int32_t patch_begin = 0, patch_count = 0;  // a leaf's positions in references_
   };
   void split(int cell, std::vector<std::int32_t> patches, int depth);
-  bool segment_meets_cell(const Cell& cell, const Vec3& from, const Vec3& delta) const;
+  bool segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const;
   bool ray_blocked(const Vec3& from, const Vec3& target, int receiver_patch, int shooter_patch,
                    WorkCounts& counts, Scratch& scratch) const;
   int side_of(const PatchCandidate& c, const Vec3& x) const {
@@ -78,6 +78,8 @@ class Octree {
   std::vector<PatchCandidate> patches_;      // by position in the set
   std::vector<Vec3> box_lo_, box_hi_;        // per position: bounding box grown by pad_
   std::vector<Cell> cells_;                  // cells_[0] is the root
+  std::vector<double> walk_bounds_;          // per cell: lo x, y, z, hi x, y, z grown by pad_
+                                             // (stored grown once, as the nCube2 program would)
   std::vector<std::int32_t> references_;     // leaves' patch lists (positions)
   double pad_ = 0.0;             // boxes grow by this, so rounding never loses a hit
   double side_tolerance_ = 0.0;  // as the brute-force loop's (occluders.cpp)
