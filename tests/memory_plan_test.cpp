@@ -61,5 +61,31 @@ TEST(MemoryPlan, WithVisibilityProcessorsEachRoleHoldsItsShare) {
   }
 }
 
+// Section 6, --visibility octree: a node that tests rays also holds an octree over its set.
+// The hand-counted scene's 4 patches fit in one leaf (at most 8 per leaf): the whole-scene
+// octree is the root cell and 4 patch references; a share of 2 patches (V = 2) the root and
+// 2 references. Radiosity processors with V > 0 hold none.
+TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
+  const CostModel c = load_cost_model(repo("platforms/cost_model.json"));
+  EXPECT_DOUBLE_EQ(c.octree_cell_bytes, 64);  // 6 floats, 8 pointers, list pointer and count
+  EXPECT_DOUBLE_EQ(c.octree_reference_bytes, 4);
+  const Scene scene = hand_counted_scene();
+  ProgressiveOptions octree;
+  octree.visibility = VisibilityMethod::kOctree;
+  for (const int V : {0, 2}) {
+    const auto partition = partition_patches_by_elements(scene, 2);
+    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, ProgressiveOptions{}, 1.0, 3, false},
+                                   partition, c);
+    const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, octree, 1.0, 3, false}, partition, c);
+    ASSERT_EQ(brute.size(), with.size());
+    for (std::size_t n = 0; n < with.size(); ++n) {
+      const double expected = V == 0 ? 64 + 4 * 4 : (with[n].role == "visibility" ? 64 + 2 * 4 : 0);
+      EXPECT_DOUBLE_EQ(with[n].bytes - brute[n].bytes, expected) << "V = " << V << ", node " << n;
+    }
+  }
+  // Any 2 patches share the root with the default parameters: 1 cell, 2 references.
+  EXPECT_DOUBLE_EQ(octree_bytes(scene, {1, 3}, c), 64 + 2 * 4);
+}
+
 }  // namespace
 }  // namespace ncube

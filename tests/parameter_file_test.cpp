@@ -95,3 +95,21 @@ TEST(ParameterFile, MissingFileIsNamed) {
 
 }  // namespace
 }  // namespace ncube
+
+namespace ncube {
+namespace {
+
+// Octree visibility (section 6): its work is charged at parameters counted from the code
+// (docs/model.md, "Octree visibility"), none fitted: a slab test 3 x 8 flops, an overlap
+// test 6 compares, a cell's share of its parent's centre 6 / 8.
+TEST(ParameterFile, OctreeWorkIsChargedAtItsCountedParameters) {
+  const CostModel c = load_cost_model(repo("platforms/cost_model.json"));
+  WorkCounts work;
+  work.octree_cells_visited = 2;
+  work.octree_overlap_tests = 3;
+  work.octree_cells_built = 8;
+  EXPECT_DOUBLE_EQ(c.flops(work), 2 * 24 + 3 * 6 + 8 * 0.75);
+}
+
+}  // namespace
+}  // namespace ncube

@@ -44,6 +44,8 @@ OPTIONS = {
     "convergence": Option("--convergence", float, 1e-4, "convergence_fraction", _fraction,
                           "converged below this fraction of the emitted power"),
     "ray_test": Option("--ray-test", str, "all", "ray_test", _ray_test, "all or first-blocker"),
+    "visibility": Option("--visibility", str, "brute-force", "visibility",
+                         _one_of("brute-force", "octree"), "brute-force or octree (section 6)"),
     "skip_facing_away": Option("--skip-facing-away", bool, False, "skip_facing_away"),
     "block_size": Option("--block-size", int, 100, "block_size", _at_least(1),
                          "visibility points per message"),

@@ -18,7 +18,7 @@ def _series(table, y):
     for row in table:
         if row.get(y) is None:
             continue
-        others = tuple((k, row[k]) for k in ("samples", "iterations", "ray_test", "block_size",
+        others = tuple((k, row[k]) for k in ("samples", "iterations", "ray_test", "visibility", "block_size",
                                               "platform", "cost_model", "cfg") if row.get(k) is not None)
         groups.setdefault((row["scene"], row["V"], others), []).append((row["R"], row["nodes"], row[y]))
     return groups

@@ -10,7 +10,10 @@ double CostModel::flops(const WorkCounts& c) const {
          flops_per_ray_patch_test * double(c.ray_patch_tests) +
          flops_per_plane_crossing * double(c.plane_crossings) +
          flops_per_form_factor * double(c.form_factors) +
-         flops_per_element_update * double(c.element_updates);
+         flops_per_element_update * double(c.element_updates) +
+         flops_per_octree_cell_visited * double(c.octree_cells_visited) +
+         flops_per_octree_overlap_test * double(c.octree_overlap_tests) +
+         flops_per_octree_cell_built * double(c.octree_cells_built);
 }
 
 double CostModel::flops(const RenderCounts& c) const {
@@ -37,6 +40,11 @@ CostModel load_cost_model(const std::string& path) {
                                             {"flops_per_plane_crossing", 0, false, kFlops},
                                             {"flops_per_form_factor", 0, false, kFlops},
                                             {"flops_per_element_update", 0, false, kFlops},
+                                            {"flops_per_octree_cell_visited", 0, false, kFlops},
+                                            {"flops_per_octree_overlap_test", 0, false, kFlops},
+                                            {"flops_per_octree_cell_built", 0, false, kFlops},
+                                            {"octree_cell_bytes", 1, true, kBytes},
+                                            {"octree_reference_bytes", 1, true, kBytes},
                                             {"message_header_bytes", 0, true, kBytes},
                                             {"shooter_record_bytes", 1, true, kBytes},
                                             {"point_bytes", 1, true, kBytes},
@@ -67,6 +75,11 @@ CostModel load_cost_model(const std::string& path) {
   m.flops_per_plane_crossing = v.at("flops_per_plane_crossing");
   m.flops_per_form_factor = v.at("flops_per_form_factor");
   m.flops_per_element_update = v.at("flops_per_element_update");
+  m.flops_per_octree_cell_visited = v.at("flops_per_octree_cell_visited");
+  m.flops_per_octree_overlap_test = v.at("flops_per_octree_overlap_test");
+  m.flops_per_octree_cell_built = v.at("flops_per_octree_cell_built");
+  m.octree_cell_bytes = v.at("octree_cell_bytes");
+  m.octree_reference_bytes = v.at("octree_reference_bytes");
   m.message_header_bytes = v.at("message_header_bytes");
   m.shooter_record_bytes = v.at("shooter_record_bytes");
   m.point_bytes = v.at("point_bytes");

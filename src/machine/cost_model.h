@@ -17,6 +17,10 @@ struct CostModel {
   double flops_per_plane_crossing = 0;     // the rest of a test whose ray crosses the plane
   double flops_per_form_factor = 0;        // one point-to-part contour integral
   double flops_per_element_update = 0;     // adding the shot light to one element
+  // Octree visibility (section 6, --visibility octree).
+  double flops_per_octree_cell_visited = 0;  // slab test of a ray segment against a cell
+  double flops_per_octree_overlap_test = 0;  // building: a patch's box against a cell's
+  double flops_per_octree_cell_built = 0;    // building: a cell's bounds from its parent's
   // The rendering phase (section 2.3), per counted operation of render/render_counts.h.
   double flops_per_render_vertex = 0;      // an element corner to camera space, near test
   double flops_per_clip_vertex = 0;        // a vertex where an edge crosses the near plane
@@ -37,6 +41,8 @@ struct CostModel {
   double patch_geometry_bytes = 0;     // a patch as stored for intersection tests
   double patch_radiosity_bytes = 0;    // an owned patch's radiosity data (besides geometry)
   double element_bytes = 0;            // one element with its radiosity
+  double octree_cell_bytes = 0;        // one octree cell: bounds, children, patch list
+  double octree_reference_bytes = 0;   // one entry of a leaf's patch list
   double node_reserve_bytes = 0;       // program, operating system and stack on every node
   double render_element_bytes = 0;     // one element as the renderer sends and holds it
   double frame_sample_bytes = 0;       // one sample of the frame and z-buffer

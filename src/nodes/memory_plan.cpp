@@ -1,6 +1,14 @@
 #include "nodes/memory_plan.h"
 
+#include "radiosity/octree.h"
+
 namespace ncube {
+
+double octree_bytes(const Scene& scene, const std::vector<int>& patches, const CostModel& costs) {
+  const OctreeBuildCounts built = Octree(scene, patches).build_counts();
+  return double(built.cells) * costs.octree_cell_bytes +
+         double(built.patch_references) * costs.octree_reference_bytes;
+}
 
 std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
                                     const std::vector<std::vector<int>>& owned_patches,
@@ -13,6 +21,14 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   const double in_flight = setup.pipelined ? 2.0 : 1.0;
   // Two shooter records: the one being shot and the one being chosen.
   const double records = 2.0 * costs.shooter_record_bytes;
+  // Section 6: with octree visibility, a node that tests rays also holds the octree over
+  // its set (the whole scene, or its share); shares are the same for every group.
+  const bool octree = setup.options.visibility == VisibilityMethod::kOctree;
+  const double whole_octree =
+      octree && V == 0 ? octree_bytes(setup.scene, visibility_share(setup.scene, 1, 0), costs) : 0.0;
+  std::vector<double> share_octree(std::size_t(V), 0.0);
+  for (int j = 0; j < V && octree; ++j)
+    share_octree[std::size_t(j)] = octree_bytes(setup.scene, visibility_share(setup.scene, V, j), costs);
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < p.radiosity_processors; ++rank) {
     double owned_elements = 0.0;
@@ -22,7 +38,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
     NodeMemory rp{p.radiosity_node(rank), "radiosity", rank, costs.node_reserve_bytes + records};
     // Section 2.2: without visibility processors every radiosity processor holds the
     // geometry of all patches; section 3: with them, only its own.
-    rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes;
+    rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes + whole_octree;
     rp.bytes += owned * costs.patch_radiosity_bytes + owned_elements * costs.element_bytes;
     if (V > 0)  // a block of points out, V blocks of answers in
       rp.bytes += in_flight * block * (costs.point_bytes + V * mask_bytes);
@@ -31,7 +47,8 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
       const double share = double(visibility_share(setup.scene, V, j).size());
       NodeMemory vp{p.visibility_node(rank, j), "visibility", rank,
                     costs.node_reserve_bytes + records + share * costs.patch_geometry_bytes +
-                        in_flight * block * (costs.point_bytes + mask_bytes)};
+                        in_flight * block * (costs.point_bytes + mask_bytes) +
+                        share_octree[std::size_t(j)]};
       nodes.push_back(vp);
     }
   }

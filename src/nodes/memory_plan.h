@@ -18,6 +18,9 @@ struct NodeMemory {
   double bytes = 0.0;
 };
 
+// The octree (section 6) over `patches`: its cells and its leaves' patch lists.
+double octree_bytes(const Scene& scene, const std::vector<int>& patches, const CostModel& costs);
+
 // One entry per node in use, in node order.
 std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
                                     const std::vector<std::vector<int>>& owned_patches,

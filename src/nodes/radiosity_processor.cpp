@@ -19,6 +19,8 @@ RadiosityProcessor::RadiosityProcessor(const ProgramSetup& setup, int rank, Node
 
 void RadiosityProcessor::run() {
   runtime_.start();
+  // Section 6: with octree visibility, a node that tests rays first builds its octree.
+  if (occluders_) runtime_.compute(occluders_->build_work());
   for (;;) {
     // Every processor offers the patch with the most unshot radiosity; the master chooses
     // the globally best as shooter and sends it to all (section 2.2).

@@ -13,6 +13,7 @@ VisibilityProcessor::VisibilityProcessor(const ProgramSetup& setup, NodeRuntime&
 
 void VisibilityProcessor::run() {
   runtime_.start();
+  runtime_.compute(share_.build_work());  // section 6: the octree over the share, if any
   Shooter shooter;
   const double mask_bytes = (setup_.options.samples + 7) / 8;
   for (;;) {

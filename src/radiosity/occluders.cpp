@@ -6,10 +6,13 @@
 #include <mutex>
 
 #include "radiosity/host_threads.h"
+#include "radiosity/octree.h"
 
 namespace ncube {
-Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy)
+Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
+                     VisibilityMethod method)
     : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
+  if (method == VisibilityMethod::kOctree) octree_ = std::make_unique<const Octree>(scene, patch_indices);
   side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
   // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
   // radians, too flat for single precision: the exact test alone decides them against that
@@ -71,9 +74,19 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
     axis_order_.insert(axis_order_.end(), members.begin(), members.end());
   }
   class_begin_[6] = int(axis_order_.size());
+  if (octree_) return;  // the brute-force machinery below is only the reference's
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
   if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
     set_bit_ = blockers_->register_set(patch_indices);
+}
+
+WorkCounts Occluders::build_work() const {
+  WorkCounts work;
+  if (octree_) {
+    work.octree_overlap_tests = octree_->build_counts().overlap_tests;
+    work.octree_cells_built = octree_->build_counts().cells;
+  }
+  return work;
 }
 
 Occluders::~Occluders() {
@@ -285,6 +298,10 @@ PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const
 void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
                                 const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                                 int threads) const {
+  if (octree_) {
+    octree_->unblocked_parts(points, receiver_patches, count, shooter, masks, counts, threads);
+    return;
+  }
   const TargetSides& sides = target_sides(shooter);  // before the threads start
   std::shared_ptr<const SceneBlockers::Lists> lists;
   std::shared_ptr<const SceneBlockers::SetMasks> set_masks;

@@ -25,10 +25,18 @@ enum class RayTestPolicy {
   kStopAtFirstBlocker,    // the loop ends at the first patch, in set order, that blocks
 };
 
+// How the node program finds a ray's blockers: the paper's loop over all patches (sections
+// 2.2, 3; the calibrated default) or an octree walk (section 6, octree.h; the ray policy then
+// has no effect: the walk always stops at the first blocker). The answers are the same.
+enum class VisibilityMethod { kBruteForce, kOctree };
+
+class Octree;
+
 class Occluders {
  public:
   // `patch_indices` are scene patch indices in the order the brute-force loop visits them.
-  Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy);
+  Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
+            VisibilityMethod method = VisibilityMethod::kBruteForce);
   ~Occluders();
   Occluders(const Occluders&) = delete;
   Occluders& operator=(const Occluders&) = delete;
@@ -54,6 +62,10 @@ class Occluders {
                                        const Shooter& shooter, WorkCounts& counts) const;
 
   int size() const { return int(patches_.size()); }
+  // The octree of VisibilityMethod::kOctree (null for brute force), and the work of building
+  // it, charged once when the node program starts (zero for brute force).
+  const Octree* octree() const { return octree_.get(); }
+  WorkCounts build_work() const;
   // Distinct planes among the set's patches (coplanar patches share one side test).
   int plane_count() const { return int(plane_size_.size()); }
 
@@ -136,6 +148,7 @@ class Occluders {
   std::shared_ptr<const SceneBlockers> blockers_;
   bool whole_scene_ = false;  // every scene patch is in the set
   int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
+  std::unique_ptr<const Octree> octree_;  // answers all batch queries when set
 };
 
 }  // namespace ncube

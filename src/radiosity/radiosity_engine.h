@@ -63,6 +63,7 @@ class RadiosityEngine {
 struct ProgressiveOptions {
   int samples = 16;                    // M, parts of the shooter
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
+  VisibilityMethod visibility = VisibilityMethod::kBruteForce;  // --visibility (section 6)
   bool skip_facing_away = false;       // true: receivers that cannot see the shooter trace no rays
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged

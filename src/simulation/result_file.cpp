@@ -13,7 +13,10 @@ nlohmann::json counts_to_json(const WorkCounts& c) {
   return {{"shooter_candidates", c.shooter_candidates}, {"receivers", c.receivers},
           {"rays", c.rays},                             {"ray_patch_tests", c.ray_patch_tests},
           {"plane_crossings", c.plane_crossings},       {"form_factors", c.form_factors},
-          {"element_updates", c.element_updates}};
+          {"element_updates", c.element_updates},
+          {"octree_cells_visited", c.octree_cells_visited},
+          {"octree_overlap_tests", c.octree_overlap_tests},
+          {"octree_cells_built", c.octree_cells_built}};
 }
 
 const char* ray_policy_name(RayTestPolicy policy) {
@@ -76,6 +79,9 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"nodes", config.node_count()},
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
+                 {"visibility", config.options.visibility == VisibilityMethod::kOctree
+                                    ? "octree"
+                                    : "brute-force"},
                  {"skip_facing_away", config.options.skip_facing_away},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},

@@ -144,9 +144,11 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     }
     result.simgrid_config = simgrid_settings_used(config.simgrid_arguments);
     // The occluder sets are read-only and the same for every group: built once, shared.
-    if (V == 0) programs.occluders.emplace_back(scene, all_patches, config.options.ray_policy);
+    if (V == 0) programs.occluders.emplace_back(scene, all_patches, config.options.ray_policy,
+                                                config.options.visibility);
     for (int j = 0; j < V; ++j)
-      programs.occluders.emplace_back(scene, visibility_share(scene, V, j), config.options.ray_policy);
+      programs.occluders.emplace_back(scene, visibility_share(scene, V, j), config.options.ray_policy,
+                                     config.options.visibility);
     const Occluders* all = V == 0 ? &programs.occluders.front() : nullptr;
     int next_runtime = 0;
     for (int rank = 0; rank < R; ++rank) {

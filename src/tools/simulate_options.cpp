@@ -59,6 +59,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   // The calibrated setup (docs/reproduce.md, "Calibration"): 64 samples per shooter.
   config.options.samples = 64;
   std::string ray_test = "all";
+  std::string visibility = "brute-force";
 
   CLI::App app{"Simulates the parallel progressive radiosity of Stuerzlinger & Wild (1994) on a "
                "modeled nCube2 hypercube.",
@@ -92,6 +93,12 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "section 2.2) or first-blocker")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "first-blocker"}));
+  app.add_option("--visibility", visibility,
+                 "how rays find their blockers: brute-force (every patch, sections 2.2 and 3; "
+                 "the calibrated setup) or octree (section 6: an octree over each node's "
+                 "patches, the walk stops at the first blocker; --ray-test has no effect)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"brute-force", "octree"}));
   app.add_flag("--skip-facing-away", config.options.skip_facing_away,
                "trace no rays from elements that cannot see the shooter's front (default: every "
                "element traces its rays, section 2.2)");
@@ -168,6 +175,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
+  config.options.visibility =
+      visibility == "octree" ? VisibilityMethod::kOctree : VisibilityMethod::kBruteForce;
   options.scene_file = resolve_scene_path(options.scene_file);
   config.render.enabled = render_parallel != "off";
   config.render.partition =

@@ -1,0 +1,192 @@
+// The octree walk (section 6): its build and walk counts on a scene small enough to count
+// by hand, and its answers against the literal brute-force loop on every scene of scenes/.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <random>
+
+#include "hand_counted_scene.h"
+#include "nodes/placement.h"
+#include "radiosity/occluders.h"
+#include "radiosity/octree.h"
+#include "scene/scene_loader.h"
+
+namespace ncube {
+namespace {
+
+// Patch 0 (A): the floor y = 0 over x, z in [0, 1]. Patch 1 (B): the wall x = 4 over y, z in
+// [0, 1]. Root cell (grown by a pad of 1e-9 x scale, ignored below): x in [0, 4], y, z in
+// [0, 1]; its centre (2, 0.5, 0.5). Child index bit 0 is the upper x half, bit 1 y, bit 2 z.
+// With max depth 1 and at most 1 patch per leaf the root is split once:
+//   A's box (x [0, 1], y [0, 0], z [0, 1]) overlaps children 0 and 4;
+//   B's box (x [4, 4], y [0, 1], z [0, 1]) overlaps children 1, 3, 5 and 7.
+// Build: 9 cells, 2 patches x 8 children = 16 overlap tests, 2 + 4 = 6 references, 8 leaves.
+Scene two_patch_scene() {
+  const Vec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+  Scene s;
+  s.name = "two-patch";
+  s.patches = {hand_counted_patch({0, 0, 0}, Z, X, 0.0, 1, 1),
+               hand_counted_patch({4, 0, 0}, Y, Z, 0.0, 1, 1)};
+  s.build_elements();
+  return s;
+}
+
+Shooter one_target(const Vec3& target) {
+  Shooter s;
+  s.patch = -1;  // not in the set
+  s.part_count = 1;
+  s.targets[0] = target;
+  return s;
+}
+
+struct Walk {
+  bool visible;
+  WorkCounts counts;
+};
+
+Walk walk(const Octree& octree, const Vec3& from, const Vec3& to, int receiver) {
+  Octree::Scratch scratch = octree.make_scratch();
+  Walk w{};
+  w.visible = octree.unblocked_parts(from, receiver, one_target(to), w.counts, scratch) == 1;
+  return w;
+}
+
+TEST(Octree, BuildCountsOfTheHandCountedScene) {
+  const Scene scene = two_patch_scene();
+  const Octree octree(scene, {0, 1}, OctreeParameters{1, 1});
+  EXPECT_EQ(octree.build_counts().cells, 9u);
+  EXPECT_EQ(octree.build_counts().overlap_tests, 16u);
+  EXPECT_EQ(octree.build_counts().patch_references, 6u);
+  EXPECT_EQ(octree.build_counts().leaves, 8u);
+  // Two patches fit in one leaf with the default parameters: the root alone, no tests.
+  const Octree small(scene, {0, 1});
+  EXPECT_EQ(small.build_counts().cells, 1u);
+  EXPECT_EQ(small.build_counts().overlap_tests, 0u);
+}
+
+TEST(Octree, WalkCountsOfTheHandCountedScene) {
+  const Scene scene = two_patch_scene();
+  const Octree octree(scene, {0, 1}, OctreeParameters{1, 1});
+  // Ray 1, (0.5, 0.5, 0.25) down to (0.5, -0.5, 0.25): runs down in y, so the children come
+  // in the order 2, 3, 0, 1, 6, 7, 4, 5. Root (1), child 2 (2, empty leaf touched at
+  // y = 0.5), child 3 (3, missed: x > 2), child 0 (4): A tested, the ray crosses its plane
+  // and A blocks: the walk ends. 4 cells, 1 test, 1 crossing.
+  Walk w = walk(octree, {0.5, 0.5, 0.25}, {0.5, -0.5, 0.25}, -1);
+  EXPECT_FALSE(w.visible);
+  EXPECT_EQ(w.counts.rays, 1u);
+  EXPECT_EQ(w.counts.octree_cells_visited, 4u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 1u);
+  EXPECT_EQ(w.counts.plane_crossings, 1u);
+  // The same ray from a point on A (the receiver, never tested): all 8 children are visited
+  // and none blocks. 9 cells, 0 tests.
+  w = walk(octree, {0.5, 0.5, 0.25}, {0.5, -0.5, 0.25}, 0);
+  EXPECT_TRUE(w.visible);
+  EXPECT_EQ(w.counts.octree_cells_visited, 9u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 0u);
+  // Ray 2, (3, 0.25, 0.25) to (5, 0.25, 0.25) through B: root (1), child 0 (2, missed),
+  // child 1 (3): B tested, crossed and blocking. 3 cells, 1 test, 1 crossing.
+  w = walk(octree, {3, 0.25, 0.25}, {5, 0.25, 0.25}, -1);
+  EXPECT_FALSE(w.visible);
+  EXPECT_EQ(w.counts.octree_cells_visited, 3u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 1u);
+  EXPECT_EQ(w.counts.plane_crossings, 1u);
+  // Ray 3, (3, 0.25, 0.25) to (3, 0.75, 0.75), parallel to B's plane: root and all 8
+  // children are slab-tested (9); it meets children 1, 3, 5 and 7 (3, 5 and 7 only at the
+  // corner (3, 0.5, 0.5)), all of which list B: B is tested once (the mailbox skips it in
+  // 3, 5 and 7), not crossed, not blocking. 9 cells, 1 test, 0 crossings.
+  w = walk(octree, {3, 0.25, 0.25}, {3, 0.75, 0.75}, -1);
+  EXPECT_TRUE(w.visible);
+  EXPECT_EQ(w.counts.octree_cells_visited, 9u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 1u);
+  EXPECT_EQ(w.counts.plane_crossings, 0u);
+}
+
+std::vector<std::string> scene_files() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().stem().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+struct Tally {
+  long rays = 0, blocked = 0, differing = 0;
+  std::uint64_t octree_tests = 0, brute_force_tests = 0;
+};
+
+void compare(const Scene& scene, const std::vector<int>& set, const std::vector<int>& shooters,
+             int points_per_shooter, unsigned seed, Tally& tally) {
+  const Occluders brute_force(scene, set, RayTestPolicy::kTestAllPatches);
+  const Octree octree(scene, set);
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> pick(0, int(scene.elements.size()) - 1);
+  for (int shooter_patch : shooters) {
+    const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
+    std::vector<Vec3> points;
+    std::vector<int> patches;
+    while (int(points.size()) < points_per_shooter) {
+      const Element& e = scene.elements[std::size_t(pick(random))];
+      if (e.patch == shooter_patch) continue;
+      points.push_back(e.centre);
+      patches.push_back(e.patch);
+    }
+    std::vector<PartMask> masks(points.size());
+    WorkCounts walked, looped;
+    octree.unblocked_parts(points.data(), patches.data(), points.size(), shooter, masks.data(),
+                           walked, 2);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const PartMask expected =
+          brute_force.unblocked_parts_brute_force(points[k], patches[k], shooter, looped);
+      if (masks[k] != expected) {
+        ++tally.differing;
+        ADD_FAILURE() << scene.name << ": shooter " << shooter_patch << ", point on patch "
+                      << patches[k] << ": parts " << std::hex << (masks[k] ^ expected) << " differ";
+      }
+      tally.blocked += 64 - __builtin_popcountll(expected);
+    }
+    tally.rays += long(points.size()) * 64;
+    EXPECT_EQ(walked.rays, looped.rays);
+    EXPECT_LE(walked.ray_patch_tests, looped.ray_patch_tests);
+    tally.octree_tests += walked.ray_patch_tests;
+    tally.brute_force_tests += looped.ray_patch_tests;
+  }
+}
+
+class OctreeOnScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(OctreeOnScene, AnswersEqualTheBruteForceLoop) {
+  const Scene scene = load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/" + GetParam() + ".json");
+  const int n = int(scene.patches.size());
+  std::vector<int> shooters;
+  for (int p = 0; p < n && shooters.size() < 3; ++p)
+    if (scene.patches[p].emission != Rgb(0.0)) shooters.push_back(p);
+  for (int p = n / 7; shooters.size() < 5; p = (p + n / 5 + 1) % n)
+    if (std::find(shooters.begin(), shooters.end(), p) == shooters.end()) shooters.push_back(p);
+  // Up to 3e7 brute-force ray-patch tests for the whole scene: about a second.
+  const int points = std::clamp(int(3e7 / (64.0 * n * shooters.size())), 4, 200);
+  std::vector<int> all(std::size_t(n), 0);
+  for (int p = 0; p < n; ++p) all[std::size_t(p)] = p;
+  Tally whole, shares;
+  compare(scene, all, shooters, points, 1, whole);
+  for (int j = 0; j < 7; ++j)
+    compare(scene, visibility_share(scene, 7, j), shooters, points / 7 + 1, 10 + unsigned(j), shares);
+  std::cout << GetParam() << ": " << whole.rays << " rays against the whole scene ("
+            << whole.blocked << " blocked): octree " << whole.octree_tests
+            << " ray-patch tests, brute force " << whole.brute_force_tests << "\n";
+  EXPECT_EQ(whole.differing + shares.differing, 0);
+  // The sample must see both answers, or it proves little.
+  EXPECT_GT(whole.blocked, whole.rays / 50);
+  EXPECT_LT(whole.blocked, whole.rays - whole.rays / 50);
+  EXPECT_GT(shares.blocked, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, OctreeOnScene, ::testing::ValuesIn(scene_files()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace ncube
