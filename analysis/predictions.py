@@ -75,6 +75,16 @@ def status(result):
     return result["status"] if result else "missing"
 
 
+def oom_text(result):
+    """Why a result has no value, with the node over its memory when there is one."""
+    state = status(result)
+    oom = (result or {}).get("out_of_memory")
+    if state == "out_of_memory" and oom:
+        return (f"out of memory ({oom['role']} node {oom['node']}: {oom['needed_bytes']:,.0f} "
+                f"of {oom['available_bytes']:,.0f} bytes)")
+    return state
+
+
 def seconds(value, state="out_of_memory"):
     """A measure for a table: its value, else why there is none."""
     if value is not None:
@@ -86,7 +96,7 @@ def octree_section(sweep, loaded):
     by = {}
     for cell, result in loaded:
         by[(cell.scene, cell.R, cell.V, cell.options["visibility"])] = (
-            cell, results.measure(result, sweep.measure), status(result))
+            cell, results.measure(result, sweep.measure), oom_text(result))
     configs = sorted({k[:3] for k in by}, key=lambda k: (k[0], k[1] * (k[2] + 1), k[1], k[2]))
     lines = ["## 1. The octree (section 6) in the cells of Tables 1-4", "",
              "The paper (section 6): with a faster visibility computation (\"e.g. octrees\") "
@@ -154,7 +164,7 @@ def scene4_section(sweep, loaded):
              f"All figures: {sweep_command('scene4-hypercubes.yaml')}.", "",
              "| nodes | R | V | seconds per iteration | command |", "|---:|---:|---:|---:|---|"]
     rows = sorted(((cell.R * (cell.V + 1), cell.V, cell, results.measure(result, sweep.measure),
-                    status(result)) for cell, result in loaded), key=lambda t: (t[0], t[1]))
+                    oom_text(result)) for cell, result in loaded), key=lambda t: (t[0], t[1]))
     for nodes, V, cell, value, state in rows:
         lines.append(f"| {nodes:,} | {cell.R} | {V} | {seconds(value, state)} | "
                      f"{simulate_command(cell)} |")
@@ -175,7 +185,10 @@ def render_section(sweep, loaded):
              "The rendering phase after the radiosity run (docs/model.md, \"Parallel "
              "rendering\"): its simulated seconds (`render.simulated_seconds`), its imbalance "
              "(max / mean of the nodes' rasterisation seconds) and, for scale, the radiosity "
-             "run's seconds per iteration (mean of its 2 iterations).", "",
+             "run's seconds per iteration (mean of its 2 iterations). \"Out of memory\" in the "
+             "rendering phase: the hypercube distribution (recursive doubling) leaves every "
+             "node holding all elements, the ring at most the share it passes on and the one "
+             "arriving (docs/model.md).", "",
              f"All figures: {sweep_command('render.yaml')}; one cell: the command in the row.",
              "", "| scene | R | V | partition | distribution | rendering s | imbalance | "
              "radiosity s per iteration | rendering / iteration | command |",
@@ -185,7 +198,7 @@ def render_section(sweep, loaded):
         render = (result or {}).get("render") if result and result.get("status") == "ok" else None
         rows.append((cell.scene, cell.R, cell.V, cell.options["render_parallel"],
                      cell.options["render_distribution"], cell, render,
-                     results.measure(result, sweep.measure), status(result)))
+                     results.measure(result, sweep.measure), oom_text(result)))
     rows.sort(key=lambda r: r[:5])
     best = {}
     for scene, R, V, part, dist, cell, render, per_iteration, state in rows:
