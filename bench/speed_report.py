@@ -8,7 +8,7 @@ OLD_BUILD_DIR holds an older build's simulate (e.g. main at c39b79f built in a w
 git worktree add /tmp/speed-old c39b79f && cmake -S /tmp/speed-old -B /tmp/speed-old/build
 && cmake --build /tmp/speed-old/build). Host seconds per iteration are the difference of
 runs with more and fewer iterations (set-up not counted), the minimum over --repeat runs
-(the host may be shared). Writes bench/results/*.json; --scale also docs/performance_scale.png.
+(the host may be shared). Writes bench/measured/*.json; --scale also docs/performance_scale.png.
 """
 import argparse
 import json
@@ -20,7 +20,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NEW = os.path.join(ROOT, "build", "simulate")
-RESULTS = os.path.join(ROOT, "bench", "results")
+RESULTS = os.path.join(ROOT, "bench", "measured")
 
 
 def run(binary, args, env=None):
