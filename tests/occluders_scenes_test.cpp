@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <random>
 
+#include "receiver_sample.h"
 #include "nodes/placement.h"
 #include "radiosity/occluders.h"
 #include "scene/scene_loader.h"
@@ -33,17 +34,11 @@ struct Tally {
 void compare(const Scene& scene, const Occluders& occluders, const std::vector<int>& shooters,
              int points_per_shooter, unsigned seed, Tally& tally) {
   std::mt19937 random(seed);
-  std::uniform_int_distribution<int> pick(0, int(scene.elements.size()) - 1);
   for (int shooter_patch : shooters) {
     const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
-    std::vector<Vec3> points;
-    std::vector<int> patches;
-    while (int(points.size()) < points_per_shooter) {
-      const Element& e = scene.elements[std::size_t(pick(random))];
-      if (e.patch == shooter_patch) continue;
-      points.push_back(e.centre);
-      patches.push_back(e.patch);
-    }
+    const ReceiverSample sample = sample_receivers(scene, shooter_patch, points_per_shooter, random);
+    const std::vector<Vec3>& points = sample.points;
+    const std::vector<int>& patches = sample.patches;
     std::vector<PartMask> masks(points.size());
     WorkCounts fast, slow;
     occluders.unblocked_parts(points.data(), patches.data(), points.size(), shooter, masks.data(),

@@ -1,10 +1,6 @@
 #include "simulation/result_file.h"
 
-#include <cstdio>
-#include <fstream>
-
 #include "simulation/iteration_time.h"
-#include "util/input_error.h"
 
 namespace ncube {
 namespace {
@@ -129,24 +125,6 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   if (result.render.ran) j["render"] = render_to_json(config, result.render);
   j["host_seconds"] = result.host_seconds;
   return j;
-}
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot write file");
-    out << text;
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw InputError(path + ": cannot write file");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw InputError(path + ": cannot write file");
-  }
 }
 
 }  // namespace ncube

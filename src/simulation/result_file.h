@@ -17,8 +17,4 @@ constexpr int kResultSchemaVersion = 2;
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
                               const SimulationResult& result);
 
-// Writes text to `path` through a temporary file and a rename, so that a reader never sees
-// a half-written file. Throws InputError naming the file on failure.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 }  // namespace ncube
