@@ -6,40 +6,47 @@
 
 namespace ncube {
 
+// The one list of the radiosity and visibility counters (like pbrt-v4's STAT_COUNTER): it
+// makes the WorkCounts members, their sum and comparison, the cost model's flops parameter
+// of each (CostModel, loaded from platforms/cost_model.json), the flops charged, and the
+// result file's "counts" (the member's name is the JSON name). Adding a counter is one line
+// here, its value in platforms/cost_model.json and its row in docs/model.md.
+// X(member, cost-model parameter, what is counted). The order is the order of the sum in
+// CostModel::flops (kept so that the simulated times stay the same to the last bit).
+#define NCUBE_WORK_COUNTERS(X)                                                                  \
+  X(shooter_candidates, flops_per_shooter_candidate,                                            \
+    "patches compared in the search for the shooter")                                           \
+  X(receivers, flops_per_receiver, "elements tested for facing the shooter")                    \
+  X(rays, flops_per_ray, "shadow rays set up (one per receiver and part)")                      \
+  X(ray_patch_tests, flops_per_ray_patch_test, "ray-patch intersection tests (section 2.2)")    \
+  X(plane_crossings, flops_per_plane_crossing,                                                  \
+    "tests whose ray crosses the patch's plane, so the loop goes on to the hit point and the "  \
+    "edge tests")                                                                               \
+  X(form_factors, flops_per_form_factor, "point-to-part contour integrals (visible parts)")      \
+  X(element_updates, flops_per_element_update, "receiving elements whose radiosity was updated") \
+  X(octree_cells_visited, flops_per_octree_cell_visited,                                        \
+    "octree cells slab-tested against a ray (octree.h)")                                        \
+  X(octree_overlap_tests, flops_per_octree_overlap_test,                                        \
+    "building the octree: patch box against cell box")                                          \
+  X(octree_cells_built, flops_per_octree_cell_built, "building the octree: cells created")
+
 struct WorkCounts {
-  std::uint64_t shooter_candidates = 0;  // patches compared in the search for the shooter
-  std::uint64_t receivers = 0;           // elements tested for facing the shooter
-  std::uint64_t rays = 0;                // shadow rays set up (one per receiver and part)
-  std::uint64_t ray_patch_tests = 0;     // ray-patch intersection tests (section 2.2)
-  std::uint64_t plane_crossings = 0;     // tests whose ray crosses the patch's plane, so the
-                                         // loop goes on to the hit point and the edge tests
-  std::uint64_t octree_cells_visited = 0;  // octree cells slab-tested against a ray (octree.h)
-  std::uint64_t octree_overlap_tests = 0;  // building the octree: patch box against cell box
-  std::uint64_t octree_cells_built = 0;    // building the octree: cells created
-  std::uint64_t form_factors = 0;        // point-to-part contour integrals (visible parts)
-  std::uint64_t element_updates = 0;     // receiving elements whose radiosity was updated
+#define NCUBE_MEMBER(member, cost, doc) std::uint64_t member = 0;
+  NCUBE_WORK_COUNTERS(NCUBE_MEMBER)
+#undef NCUBE_MEMBER
 
   WorkCounts& operator+=(const WorkCounts& o) {
-    shooter_candidates += o.shooter_candidates;
-    receivers += o.receivers;
-    rays += o.rays;
-    ray_patch_tests += o.ray_patch_tests;
-    plane_crossings += o.plane_crossings;
-    octree_cells_visited += o.octree_cells_visited;
-    octree_overlap_tests += o.octree_overlap_tests;
-    octree_cells_built += o.octree_cells_built;
-    form_factors += o.form_factors;
-    element_updates += o.element_updates;
+#define NCUBE_ADD(member, cost, doc) member += o.member;
+    NCUBE_WORK_COUNTERS(NCUBE_ADD)
+#undef NCUBE_ADD
     return *this;
   }
   bool operator==(const WorkCounts& o) const {
-    return shooter_candidates == o.shooter_candidates && receivers == o.receivers &&
-           rays == o.rays && ray_patch_tests == o.ray_patch_tests &&
-           plane_crossings == o.plane_crossings &&
-           octree_cells_visited == o.octree_cells_visited &&
-           octree_overlap_tests == o.octree_overlap_tests &&
-           octree_cells_built == o.octree_cells_built &&
-           form_factors == o.form_factors && element_updates == o.element_updates;
+    bool equal = true;
+#define NCUBE_EQUAL(member, cost, doc) equal = equal && member == o.member;
+    NCUBE_WORK_COUNTERS(NCUBE_EQUAL)
+#undef NCUBE_EQUAL
+    return equal;
   }
 };
 

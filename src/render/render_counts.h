@@ -6,37 +6,43 @@
 
 namespace ncube {
 
+// The one list of the rendering phase's counters, as NCUBE_WORK_COUNTERS
+// (radiosity/work_counts.h) for the radiosity run: X(member, cost-model parameter, what is
+// counted), in the order of the sum in CostModel::flops.
+#define NCUBE_RENDER_COUNTERS(X)                                                                \
+  X(vertices, flops_per_render_vertex, "element corners taken to camera space, near-tested")    \
+  X(clip_vertices, flops_per_clip_vertex, "new vertices where an edge crosses the near plane")  \
+  X(projected_vertices, flops_per_projected_vertex,                                             \
+    "vertices projected to the screen (1/z, radiosity/z)")                                      \
+  X(triangles, flops_per_triangle, "triangles set up (area, bounding box, row range)")          \
+  X(samples_tested, flops_per_sample_tested,                                                    \
+    "samples of a triangle's box in the node's rows: 3 edge functions")                         \
+  X(samples_inside, flops_per_sample_inside,                                                    \
+    "of them inside the triangle: depth interpolated, z-tested")                                \
+  X(samples_written, flops_per_sample_written,                                                  \
+    "of them nearer than the z-buffer: shaded (Gouraud) and stored")                            \
+  X(exposure_samples, flops_per_exposure_sample,                                                \
+    "visible samples visited in a round of the exposure selection")                             \
+  X(histogram_buckets, flops_per_histogram_bucket, "histogram buckets added up on the way to node 0") \
+  X(pixels_resolved, flops_per_pixel_resolved, "pixels tone mapped from their 3 x 3 samples")
+
 struct RenderCounts {
-  std::uint64_t vertices = 0;            // element corners taken to camera space, near-tested
-  std::uint64_t clip_vertices = 0;       // new vertices where an edge crosses the near plane
-  std::uint64_t projected_vertices = 0;  // vertices projected to the screen (1/z, radiosity/z)
-  std::uint64_t triangles = 0;           // triangles set up (area, bounding box, row range)
-  std::uint64_t samples_tested = 0;      // samples of a triangle's box in the node's rows: 3 edge functions
-  std::uint64_t samples_inside = 0;      // of them inside the triangle: depth interpolated, z-tested
-  std::uint64_t samples_written = 0;     // of them nearer than the z-buffer: shaded (Gouraud) and stored
-  std::uint64_t exposure_samples = 0;    // visible samples visited in a round of the exposure selection
-  std::uint64_t histogram_buckets = 0;   // histogram buckets added up on the way to node 0
-  std::uint64_t pixels_resolved = 0;     // pixels tone mapped from their 3 x 3 samples
+#define NCUBE_MEMBER(member, cost, doc) std::uint64_t member = 0;
+  NCUBE_RENDER_COUNTERS(NCUBE_MEMBER)
+#undef NCUBE_MEMBER
 
   RenderCounts& operator+=(const RenderCounts& o) {
-    vertices += o.vertices;
-    clip_vertices += o.clip_vertices;
-    projected_vertices += o.projected_vertices;
-    triangles += o.triangles;
-    samples_tested += o.samples_tested;
-    samples_inside += o.samples_inside;
-    samples_written += o.samples_written;
-    exposure_samples += o.exposure_samples;
-    histogram_buckets += o.histogram_buckets;
-    pixels_resolved += o.pixels_resolved;
+#define NCUBE_ADD(member, cost, doc) member += o.member;
+    NCUBE_RENDER_COUNTERS(NCUBE_ADD)
+#undef NCUBE_ADD
     return *this;
   }
   bool operator==(const RenderCounts& o) const {
-    return vertices == o.vertices && clip_vertices == o.clip_vertices &&
-           projected_vertices == o.projected_vertices && triangles == o.triangles &&
-           samples_tested == o.samples_tested && samples_inside == o.samples_inside &&
-           samples_written == o.samples_written && exposure_samples == o.exposure_samples &&
-           histogram_buckets == o.histogram_buckets && pixels_resolved == o.pixels_resolved;
+    bool equal = true;
+#define NCUBE_EQUAL(member, cost, doc) equal = equal && member == o.member;
+    NCUBE_RENDER_COUNTERS(NCUBE_EQUAL)
+#undef NCUBE_EQUAL
+    return equal;
   }
 };
 

@@ -18,35 +18,9 @@ nlohmann::json platform_values(const PlatformConfig& p) {
 }
 
 nlohmann::json cost_model_values(const CostModel& c) {
-  return {{"flops_per_shooter_candidate", c.flops_per_shooter_candidate},
-          {"flops_per_receiver", c.flops_per_receiver},
-          {"flops_per_ray", c.flops_per_ray},
-          {"flops_per_ray_patch_test", c.flops_per_ray_patch_test},
-          {"flops_per_plane_crossing", c.flops_per_plane_crossing},
-          {"flops_per_form_factor", c.flops_per_form_factor},
-          {"flops_per_element_update", c.flops_per_element_update},
-          {"message_header_bytes", c.message_header_bytes},
-          {"shooter_record_bytes", c.shooter_record_bytes},
-          {"point_bytes", c.point_bytes},
-          {"patch_geometry_bytes", c.patch_geometry_bytes},
-          {"patch_radiosity_bytes", c.patch_radiosity_bytes},
-          {"element_bytes", c.element_bytes},
-          {"flops_per_render_vertex", c.flops_per_render_vertex},
-          {"flops_per_clip_vertex", c.flops_per_clip_vertex},
-          {"flops_per_projected_vertex", c.flops_per_projected_vertex},
-          {"flops_per_triangle", c.flops_per_triangle},
-          {"flops_per_sample_tested", c.flops_per_sample_tested},
-          {"flops_per_sample_inside", c.flops_per_sample_inside},
-          {"flops_per_sample_written", c.flops_per_sample_written},
-          {"flops_per_exposure_sample", c.flops_per_exposure_sample},
-          {"flops_per_histogram_bucket", c.flops_per_histogram_bucket},
-          {"flops_per_pixel_resolved", c.flops_per_pixel_resolved},
-          {"render_element_bytes", c.render_element_bytes},
-          {"frame_sample_bytes", c.frame_sample_bytes},
-          {"pixel_bytes", c.pixel_bytes},
-          {"exposure_histogram_bytes", c.exposure_histogram_bytes},
-          {"exposure_selection_bytes", c.exposure_selection_bytes},
-          {"node_reserve_bytes", c.node_reserve_bytes}};
+  nlohmann::json values = nlohmann::json::object();
+  for (const CostParameter& p : cost_parameters()) values[p.name] = c.*p.field;
+  return values;
 }
 
 nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,

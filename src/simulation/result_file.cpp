@@ -5,31 +5,24 @@
 namespace ncube {
 namespace {
 
+// The counters of the lists (radiosity/work_counts.h, render/render_counts.h), each under
+// its member's name.
 nlohmann::json counts_to_json(const WorkCounts& c) {
-  return {{"shooter_candidates", c.shooter_candidates}, {"receivers", c.receivers},
-          {"rays", c.rays},                             {"ray_patch_tests", c.ray_patch_tests},
-          {"plane_crossings", c.plane_crossings},       {"form_factors", c.form_factors},
-          {"element_updates", c.element_updates},
-          {"octree_cells_visited", c.octree_cells_visited},
-          {"octree_overlap_tests", c.octree_overlap_tests},
-          {"octree_cells_built", c.octree_cells_built}};
+  nlohmann::json j;
+#define NCUBE_COUNT_TO_JSON(member, cost, doc) j[#member] = c.member;
+  NCUBE_WORK_COUNTERS(NCUBE_COUNT_TO_JSON)
+  return j;
+}
+
+nlohmann::json render_counts_to_json(const RenderCounts& c) {
+  nlohmann::json j;
+  NCUBE_RENDER_COUNTERS(NCUBE_COUNT_TO_JSON)
+#undef NCUBE_COUNT_TO_JSON
+  return j;
 }
 
 const char* ray_policy_name(RayTestPolicy policy) {
   return policy == RayTestPolicy::kTestAllPatches ? "all" : "first-blocker";
-}
-
-nlohmann::json render_counts_to_json(const RenderCounts& c) {
-  return {{"vertices", c.vertices},
-          {"clip_vertices", c.clip_vertices},
-          {"projected_vertices", c.projected_vertices},
-          {"triangles", c.triangles},
-          {"samples_tested", c.samples_tested},
-          {"samples_inside", c.samples_inside},
-          {"samples_written", c.samples_written},
-          {"exposure_samples", c.exposure_samples},
-          {"histogram_buckets", c.histogram_buckets},
-          {"pixels_resolved", c.pixels_resolved}};
 }
 
 // The rendering phase (section 2.3, --render-parallel): docs/result-format.md.
