@@ -3,10 +3,7 @@
 #include "simulation/iteration_time.h"
 
 namespace ncube {
-namespace {
 
-// The counters of the lists (radiosity/work_counts.h, render/render_counts.h), each under
-// its member's name.
 nlohmann::json counts_to_json(const WorkCounts& c) {
   nlohmann::json j;
 #define NCUBE_COUNT_TO_JSON(member, cost, doc) j[#member] = c.member;
@@ -20,6 +17,8 @@ nlohmann::json render_counts_to_json(const RenderCounts& c) {
 #undef NCUBE_COUNT_TO_JSON
   return j;
 }
+
+namespace {
 
 const char* ray_policy_name(RayTestPolicy policy) {
   return policy == RayTestPolicy::kTestAllPatches ? "all" : "first-blocker";

@@ -14,6 +14,11 @@ namespace ncube {
 // Version of the result file's layout; raised with every change of a field's meaning.
 constexpr int kResultSchemaVersion = 2;
 
+// The counters of the lists (radiosity/work_counts.h, render/render_counts.h), each under
+// its member's name: the result file's "counts" objects.
+nlohmann::json counts_to_json(const WorkCounts& counts);
+nlohmann::json render_counts_to_json(const RenderCounts& counts);
+
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,
                               const SimulationResult& result);
 
