@@ -13,7 +13,7 @@ namespace {
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
 
 std::vector<NodeMemory> plan(const Scene& scene, int R, int V, int block_size, bool pipelined) {
-  const ProgramSetup setup{scene, Placement{R, V}, ProgressiveOptions{}, 1.0, block_size, pipelined};
+  const ProgramSetup setup{scene, Placement{R, V}, {ProgressiveOptions{}, block_size, pipelined}, 1.0};
   return plan_memory(setup, partition_patches_by_elements(scene, R),
                      load_cost_model(repo("platforms/cost_model.json")));
 }
@@ -74,9 +74,9 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
   octree.visibility = VisibilityMethod::kOctree;
   for (const int V : {0, 2}) {
     const auto partition = partition_patches_by_elements(scene, 2);
-    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, ProgressiveOptions{}, 1.0, 3, false},
+    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, {ProgressiveOptions{}, 3, false}, 1.0},
                                    partition, c);
-    const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, octree, 1.0, 3, false}, partition, c);
+    const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, {octree, 3, false}, 1.0}, partition, c);
     ASSERT_EQ(brute.size(), with.size());
     for (std::size_t n = 0; n < with.size(); ++n) {
       const double expected = V == 0 ? 64 + 4 * 4 : (with[n].role == "visibility" ? 64 + 2 * 4 : 0);

@@ -36,6 +36,31 @@ TEST(SimulateOptions, CountsAreDecimal) {
   EXPECT_EQ(parse({"--block-size", "010"}), kExitBadInput);
 }
 
+// The defaults are the configuration's own (one per value): blocks of 100 points (section
+// 3: "blocks of e.g. 100"), not pipelined, an 800 x 600 picture; the options given reach the
+// configuration the node programs are set up from.
+TEST(SimulateOptions, DefaultsAndOptionsReachTheProgramSetup) {
+  SimulateOptions options;
+  ASSERT_EQ(parse({}, &options), -1);
+  const Scene scene;
+  const ProgramSetup defaults{scene, Placement{1, 0}, options.config, 1.0};
+  EXPECT_EQ(defaults.block_size, 100);
+  EXPECT_FALSE(defaults.pipelined);
+  EXPECT_EQ(defaults.options.samples, 64);  // the calibrated setup (docs/reproduce.md)
+  EXPECT_EQ(options.config.render.width, 800);
+  EXPECT_EQ(options.config.render.height, 600);
+  ASSERT_EQ(parse({"--block-size", "37", "--pipelined", "--samples", "16", "--image-width", "320",
+                   "--image-height", "200"},
+                  &options),
+            -1);
+  const ProgramSetup given{scene, Placement{1, 0}, options.config, 1.0};
+  EXPECT_EQ(given.block_size, 37);
+  EXPECT_TRUE(given.pipelined);
+  EXPECT_EQ(given.options.samples, 16);
+  EXPECT_EQ(options.config.render.width, 320);
+  EXPECT_EQ(options.config.render.height, 200);
+}
+
 TEST(SimulateOptions, IterationsAreMinusOneOrACount) {
   SimulateOptions options;
   ASSERT_EQ(parse({"--iterations", "-1"}, &options), -1);

@@ -7,13 +7,23 @@
 
 namespace ncube {
 
-struct ProgramSetup {
+// The options of the node programs (sections 2.2 and 3), each with its one default here (the
+// algorithm's in ProgressiveOptions); the run's configuration (SimulationConfig) is made of
+// them, and every program's setup holds them as configured.
+struct ProgramOptions {
+  ProgressiveOptions options;
+  int block_size = 100;    // visibility points per message (section 3: "blocks of e.g. 100")
+  bool pipelined = false;  // send the next block before using the answers of this one
+};
+
+struct ProgramSetup : ProgramOptions {
+  ProgramSetup(const Scene& scene, Placement placement, const ProgramOptions& options,
+               double emitted_power)
+      : ProgramOptions(options), scene(scene), placement(placement), emitted_power(emitted_power) {}
+
   const Scene& scene;
   Placement placement;
-  ProgressiveOptions options;
-  double emitted_power = 0.0;  // of the whole scene, for the convergence test
-  int block_size = 100;        // visibility points per message (section 3: "blocks of e.g. 100")
-  bool pipelined = false;      // send the next block before using the answers of this one
+  double emitted_power;  // of the whole scene, for the convergence test
 };
 
 }  // namespace ncube

@@ -55,7 +55,7 @@ struct Programs {
 std::vector<NodeMemory> memory_plan(const Scene& scene, const SimulationConfig& config,
                                     const CostModel& costs) {
   const ProgramSetup setup{scene, Placement{config.radiosity_processors, config.visibility_processors},
-                           config.options, 0.0, config.block_size, config.pipelined};
+                           config, 0.0};
   return plan_memory(setup, partition_patches_by_elements(scene, config.radiosity_processors), costs);
 }
 
@@ -112,8 +112,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   check_configuration(scene, config, platform);
   SimulationResult result;
   const int R = config.radiosity_processors, V = config.visibility_processors;
-  const ProgramSetup setup{scene,           Placement{R, V},     config.options,
-                           scene.emitted_power(), config.block_size, config.pipelined};
+  const ProgramSetup setup{scene, Placement{R, V}, config, scene.emitted_power()};
   const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
 
   // Memory: every node's modeled bytes against its capacity, before anything runs.

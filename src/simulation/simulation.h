@@ -11,6 +11,7 @@
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "nodes/node_runtime.h"
+#include "nodes/program_setup.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene.h"
 #include "simulation/render_phase.h"
@@ -24,12 +25,11 @@ struct IterationReport {
   double simulated_seconds = 0.0;
 };
 
-struct SimulationConfig {
+// The configuration of one run: the node programs' options (ProgramOptions: the algorithm's,
+// block size, pipelining), the machine's size and files, and what the run records.
+struct SimulationConfig : ProgramOptions {
   int radiosity_processors = 1;   // R
   int visibility_processors = 0;  // V, per radiosity processor
-  ProgressiveOptions options;
-  int block_size = 100;           // visibility points per message
-  bool pipelined = false;         // send the next block before using this block's answers
   bool memory_cap = true;         // false: report the memory needed, never stop for it
   bool record_trace = false;
   std::string platform_file;

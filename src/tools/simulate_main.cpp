@@ -92,7 +92,7 @@ int simulate(int argc, char** argv) {
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
                                  scene, scene.camera, result.element_radiosity,
-                                 options.image_width, options.image_height)));
+                                 options.config.render.width, options.config.render.height)));
   outputs.commit();
   if (result.status == "out_of_memory") {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",

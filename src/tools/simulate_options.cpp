@@ -125,10 +125,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   app.add_option("--trace", options.trace_file,
                  "write every node's timeline as a Chrome trace-event file (Perfetto)")
       ->check(kFileName);
-  app.add_option("--image-width", options.image_width, "picture width in pixels")
+  app.add_option("--image-width", config.render.width, "picture width in pixels")
       ->capture_default_str()
       ->check(kDecimalInteger & CLI::Range(16, 8192));
-  app.add_option("--image-height", options.image_height, "picture height in pixels")
+  app.add_option("--image-height", config.render.height, "picture height in pixels")
       ->capture_default_str()
       ->check(kDecimalInteger & CLI::Range(16, 8192));
   std::string render_parallel = "off", render_distribution = "hypercube";
@@ -183,8 +183,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;
   config.render.distribution = render_distribution == "ring" ? RenderDistribution::kRing
                                                              : RenderDistribution::kHypercube;
-  config.render.width = options.image_width;
-  config.render.height = options.image_height;
   return -1;
 }
 

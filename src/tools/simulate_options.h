@@ -14,8 +14,6 @@ struct SimulateOptions {
   std::string json_file;   // empty: no result file
   std::string image_file;  // empty: no picture
   std::string trace_file;  // empty: no timeline
-  int image_width = 800;
-  int image_height = 600;
   bool quiet = false;
   std::vector<std::string> command_line;  // argv, for the result file's provenance
 };
