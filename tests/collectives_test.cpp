@@ -17,6 +17,7 @@ struct Machine : SimulatedMachine {
   Machine() {
     costs.message_header_bytes = 8;
     costs.shooter_record_bytes = 88;
+    costs.point_bytes = 16;
     costs.flops_per_shooter_candidate = 4;
   }
 };
@@ -26,19 +27,20 @@ TEST(MessageCost, OneMessageTakesBothOverheadsPlusLatencyAndTransfer) {
   const std::vector<std::pair<int, int>> pairs = {{0, 1}, {0, 63}, {12, 50}, {7, 56}};
   std::deque<NodeRuntime> runtimes;
   std::vector<double> arrived(pairs.size(), 0.0);
-  const double payload = 1600.0;  // a block of 100 points
+  const double payload = 1600.0;  // a block of 100 points of 16 bytes
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     auto [from, to] = pairs[k];
     NodeRuntime& sender = runtimes.emplace_back(from, "radiosity", 0, m.platform, m.costs, nullptr);
     NodeRuntime& receiver = runtimes.emplace_back(to, "visibility", 0, m.platform, m.costs, nullptr);
     // One pair at a time (each starts when the previous is done) so links are not shared.
     const double start = 0.01 * double(k);
-    simgrid::s4u::Actor::create("send", m.hosts[from], [&sender, to, payload, start] {
+    simgrid::s4u::Actor::create("send", m.hosts[from], [&sender, to, start] {
       sender.start();
       simgrid::s4u::this_actor::sleep_until(start);
       auto message = std::make_unique<Message>();
       message->kind = MessageKind::kPoints;
-      sender.send(to, std::move(message), payload);
+      message->points.resize(100);
+      sender.send(to, std::move(message));
       sender.finish();
     });
     simgrid::s4u::Actor::create("receive", m.hosts[to], [&receiver, &arrived, k, start] {

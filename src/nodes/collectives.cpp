@@ -17,8 +17,7 @@ ShooterChoice ShooterSelection::reduce_to_master(const ShooterChoice& local_best
       auto message = std::make_unique<Message>();
       message->kind = MessageKind::kCandidate;
       message->candidate = best;
-      runtime_.send(placement_.radiosity_node(rank_ - bit), std::move(message),
-                    runtime_.costs().shooter_record_bytes);
+      runtime_.send(placement_.radiosity_node(rank_ - bit), std::move(message));
       return best;
     }
     if (rank_ + bit < R) {  // a child's subtree best arrives
@@ -45,8 +44,7 @@ ShooterChoice ShooterSelection::broadcast_from_master(const ShooterChoice& decis
     auto message = std::make_unique<Message>();
     message->kind = result.patch < 0 ? MessageKind::kStop : MessageKind::kShooter;
     message->candidate = result;
-    runtime_.send(placement_.radiosity_node(child), std::move(message),
-                  runtime_.costs().shooter_record_bytes);
+    runtime_.send(placement_.radiosity_node(child), std::move(message));
   }
   return result;
 }

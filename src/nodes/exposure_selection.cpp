@@ -53,7 +53,7 @@ void ExposureSelection::reduce_to_node0(int round, ExposureRound& state) {
       message->kind = MessageKind::kHistogram;
       message->block = round;
       message->exposure = state;
-      runtime_.send(node_ - bit, std::move(message), runtime_.costs().exposure_histogram_bytes);
+      runtime_.send(node_ - bit, std::move(message));
       return;
     }
     if (node_ + bit < nodes_) {  // a child subtree's histograms arrive
@@ -84,7 +84,7 @@ void ExposureSelection::broadcast_from_node0(int round, ExposureRound& state) {
     message->block = round;
     message->exposure = state;
     message->exposure.histogram.clear();
-    runtime_.send(child, std::move(message), runtime_.costs().exposure_selection_bytes);
+    runtime_.send(child, std::move(message));
   }
 }
 

@@ -1,28 +1,39 @@
 // The messages the node programs exchange, with their modeled sizes (cost_model.json).
-// The host carries real data in them; the network is charged the modeled bytes.
+// The host carries real data in them; the network is charged the modeled bytes, which
+// payload_bytes computes from each message's content (NodeRuntime::send adds the header).
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "machine/cost_model.h"
 #include "radiosity/radiosity_engine.h"
 #include "render/frame_share.h"
 
 namespace ncube {
 
+// Each kind with its modeled payload (payload_bytes; the sizes are cost_model.json's).
 enum class MessageKind {
-  kCandidate,  // a radiosity processor's best shooter candidate, on its way to the master
-  kShooter,    // the chosen shooter (geometry and unshot radiosity), on its way to all
-  kStop,       // converged or iteration limit reached: every node ends
-  kPoints,     // a block of visibility points, radiosity -> visibility processor
-  kAnswers,    // one part mask per point of a block, visibility -> radiosity processor
+  kCandidate,  // a radiosity processor's best shooter candidate, on its way to the master:
+               // one shooter record
+  kShooter,    // the chosen shooter (geometry and unshot radiosity), on its way to all:
+               // one shooter record
+  kStop,       // converged or iteration limit reached: every node ends. Sent where the
+               // shooter would be, as a shooter record with no patch
+  kPoints,     // a block of visibility points, radiosity -> visibility processor: a point
+               // record per point
+  kAnswers,    // one part mask per point of a block, visibility -> radiosity processor:
+               // ceil(M / 8) bytes per mask (part_mask_bytes)
   // The rendering phase (section 2.3):
-  kElements,   // render records of one or more nodes' shares, passed on (ring, hypercube)
-  kCredit,     // ring: "your last message was taken", so the next may come
-  kHistogram,  // a subtree's luminance histograms, towards node 0 (exposure)
-  kSelection,  // node 0's choice of a round's digits, towards every node (exposure)
-  kPixels,     // a node's finished rows, to node 0
+  kElements,   // render records of one or more nodes' shares, passed on (ring, hypercube):
+               // a render element record per element carried
+  kCredit,     // ring: "your last message was taken", so the next may come: the header only
+  kHistogram,  // a subtree's luminance histograms, towards node 0 (exposure): one round's
+               // histograms
+  kSelection,  // node 0's choice of a round's digits, towards every node (exposure): one
+               // round's selection
+  kPixels,     // a node's finished rows, to node 0: a pixel record per pixel
 };
 
 // The state of the exposure's radix select (render/exposure.h), per set: [0] the
@@ -45,9 +56,16 @@ struct Message {
   std::vector<Vec3> points;  // kPoints
   std::vector<int> point_patches;  // kPoints: the patch of each point
   std::vector<PartMask> masks;     // kAnswers
+  int mask_parts = 0;              // kAnswers: parts per mask (the shooter's M)
   std::vector<ElementShare> shares;  // kElements: the shares carried (block: the step)
   ExposureRound exposure;            // kHistogram, kSelection (block: the round)
   Image pixels;                      // kPixels: the sender's rows, in order
 };
+
+// Bytes of one part mask of M parts (one bit per part).
+double part_mask_bytes(int parts);
+
+// The modeled bytes of `message`'s content, without the header (see MessageKind).
+double payload_bytes(const Message& message, const CostModel& costs);
 
 }  // namespace ncube

@@ -53,9 +53,9 @@ void NodeRuntime::compute(const RenderCounts& counts) {
   busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
 }
 
-void NodeRuntime::send(int to, std::unique_ptr<Message> message, double payload_bytes) {
+void NodeRuntime::send(int to, std::unique_ptr<Message> message) {
   busy(platform_.send_overhead, "overhead", stats_.overhead_seconds);
-  const double bytes = payload_bytes + costs_.message_header_bytes;
+  const double bytes = payload_bytes(*message, costs_) + costs_.message_header_bytes;
   message->from = stats_.node;
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;

@@ -56,9 +56,9 @@ class NodeRuntime {
   // The same for the rendering phase's work (kept in render_counts()).
   void compute(const RenderCounts& counts);
   const RenderCounts& render_counts() const { return render_counts_; }
-  // Sends `message` to node `to`: the sender's overhead, then `payload_bytes` plus the
-  // header over the e-cube route (asynchronously: the sender goes on).
-  void send(int to, std::unique_ptr<Message> message, double payload_bytes);
+  // Sends `message` to node `to`: the sender's overhead, then its modeled bytes (its
+  // payload_bytes plus the header) over the e-cube route (asynchronously: the sender goes on).
+  void send(int to, std::unique_ptr<Message> message);
   // Waits for the next message of one of the given kinds (messages of other kinds that
   // arrive meanwhile are kept, in order, for a later receive), then pays the receiver's
   // overhead.

@@ -60,8 +60,7 @@ void RadiosityProcessor::tell_visibility_processors(const ShooterChoice& decisio
     auto message = std::make_unique<Message>();
     message->kind = decision.patch < 0 ? MessageKind::kStop : MessageKind::kShooter;
     message->candidate = decision;
-    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message),
-                  runtime_.costs().shooter_record_bytes);
+    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message));
   }
 }
 
@@ -126,8 +125,7 @@ void RadiosityProcessor::send_block(const std::vector<int>& receivers, int block
       message->points.push_back(element.centre);
       message->point_patches.push_back(element.patch);
     }
-    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message),
-                  double(last - first) * runtime_.costs().point_bytes);
+    runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message));
   }
 }
 

@@ -53,13 +53,12 @@ void RenderProcessor::distribute_over_ring() {
     message->kind = MessageKind::kElements;
     message->block = step;
     message->shares = {current};
-    runtime_.send(next, std::move(message),
-                  double(current->size()) * runtime_.costs().render_element_bytes);
+    runtime_.send(next, std::move(message));
     const std::unique_ptr<Message> arrived = runtime_.receive({MessageKind::kElements});
     if (step + 1 < N) {  // the predecessor has one more share to pass on
       auto credit = std::make_unique<Message>();
       credit->kind = MessageKind::kCredit;
-      runtime_.send(previous, std::move(credit), 0.0);
+      runtime_.send(previous, std::move(credit));
     }
     current = arrived->shares.front();
     rasterise(current);
@@ -73,14 +72,11 @@ void RenderProcessor::distribute_over_hypercube() {
   rasterise(held.front());
   std::map<int, std::unique_ptr<Message>> early;  // a later step's message that came first
   for (int d = 0; (1 << d) < setup_.nodes; ++d) {
-    double records = 0.0;
-    for (const ElementShare& share : held) records += double(share->size());
     auto message = std::make_unique<Message>();
     message->kind = MessageKind::kElements;
     message->block = d;
     message->shares = held;
-    runtime_.send(node_ ^ (1 << d), std::move(message),
-                  records * runtime_.costs().render_element_bytes);
+    runtime_.send(node_ ^ (1 << d), std::move(message));
     std::unique_ptr<Message> arrived;
     if (early.count(d)) {
       arrived = std::move(early[d]);
@@ -106,8 +102,7 @@ void RenderProcessor::collect_pieces(const Image& own_rows) {
     auto message = std::make_unique<Message>();
     message->kind = MessageKind::kPixels;
     message->pixels = own_rows;
-    runtime_.send(0, std::move(message),
-                  double(own_rows.pixels.size()) * runtime_.costs().pixel_bytes);
+    runtime_.send(0, std::move(message));
     return;
   }
   picture_ = Image(setup_.options.width, setup_.options.height);

@@ -15,7 +15,6 @@ void VisibilityProcessor::run() {
   runtime_.start();
   runtime_.compute(share_.build_work());  // section 6: the octree over the share, if any
   Shooter shooter;
-  const double mask_bytes = (setup_.options.samples + 7) / 8;
   for (;;) {
     const std::unique_ptr<Message> message =
         runtime_.receive({MessageKind::kShooter, MessageKind::kPoints, MessageKind::kStop});
@@ -37,8 +36,8 @@ void VisibilityProcessor::run() {
     runtime_.compute(work);
     XBT_DEBUG("block %d from node %d: %zu points, %llu ray-patch tests", message->block,
               message->from, message->points.size(), (unsigned long long)work.ray_patch_tests);
-    const double bytes = double(answer->masks.size()) * mask_bytes;
-    runtime_.send(message->from, std::move(answer), bytes);
+    answer->mask_parts = setup_.options.samples;
+    runtime_.send(message->from, std::move(answer));
   }
   runtime_.finish();
 }
