@@ -30,8 +30,8 @@ TEST(MessageCost, OneMessageTakesBothOverheadsPlusLatencyAndTransfer) {
   const double payload = 1600.0;  // a block of 100 points of 16 bytes
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     auto [from, to] = pairs[k];
-    NodeRuntime& sender = runtimes.emplace_back(from, "radiosity", 0, m.platform, m.costs, nullptr);
-    NodeRuntime& receiver = runtimes.emplace_back(to, "visibility", 0, m.platform, m.costs, nullptr);
+    NodeRuntime& sender = runtimes.emplace_back(from, NodeRole::kRadiosity, 0, m.platform, m.costs, nullptr);
+    NodeRuntime& receiver = runtimes.emplace_back(to, NodeRole::kVisibility, 0, m.platform, m.costs, nullptr);
     // One pair at a time (each starts when the previous is done) so links are not shared.
     const double start = 0.01 * double(k);
     simgrid::s4u::Actor::create("send", m.hosts[from], [&sender, to, start] {
@@ -72,7 +72,7 @@ TEST(MessageCost, ShooterSelectionOver64NodesTakesTheBinomialTreeTime) {
   std::vector<double> done(64, 0.0);
   std::vector<int> decided(64, -1);
   for (int rank = 0; rank < 64; ++rank) {
-    NodeRuntime& runtime = runtimes.emplace_back(rank, "radiosity", rank, m.platform, m.costs, nullptr);
+    NodeRuntime& runtime = runtimes.emplace_back(rank, NodeRole::kRadiosity, rank, m.platform, m.costs, nullptr);
     simgrid::s4u::Actor::create("rp", m.hosts[rank], [&, rank] {
       runtime.start();
       ShooterSelection selection(runtime, placement, rank);

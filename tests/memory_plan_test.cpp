@@ -30,7 +30,7 @@ TEST(MemoryPlan, WithoutVisibilityProcessorsEveryRadiosityProcessorHoldsAllGeome
                                        6 * c.element_bytes);
   EXPECT_DOUBLE_EQ(nodes[1].bytes, base + 4 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +
                                        5 * c.element_bytes);
-  EXPECT_EQ(nodes[0].role, "radiosity");
+  EXPECT_EQ(nodes[0].role, NodeRole::kRadiosity);
   EXPECT_EQ(nodes[1].node, 1);
 }
 
@@ -54,7 +54,7 @@ TEST(MemoryPlan, WithVisibilityProcessorsEachRoleHoldsItsShare) {
     EXPECT_DOUBLE_EQ(nodes[3].bytes, base + 2 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +
                                          5 * c.element_bytes + rp_blocks);
     for (int node : {1, 2, 4, 5}) {
-      EXPECT_EQ(nodes[std::size_t(node)].role, "visibility");
+      EXPECT_EQ(nodes[std::size_t(node)].role, NodeRole::kVisibility);
       EXPECT_DOUBLE_EQ(nodes[std::size_t(node)].bytes, base + 2 * c.patch_geometry_bytes + vp_blocks)
           << "node " << node;
     }
@@ -79,7 +79,7 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
     const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, {octree, 3, false}, 1.0}, partition, c);
     ASSERT_EQ(brute.size(), with.size());
     for (std::size_t n = 0; n < with.size(); ++n) {
-      const double expected = V == 0 ? 64 + 4 * 4 : (with[n].role == "visibility" ? 64 + 2 * 4 : 0);
+      const double expected = V == 0 ? 64 + 4 * 4 : (with[n].role == NodeRole::kVisibility ? 64 + 2 * 4 : 0);
       EXPECT_DOUBLE_EQ(with[n].bytes - brute[n].bytes, expected) << "V = " << V << ", node " << n;
     }
   }

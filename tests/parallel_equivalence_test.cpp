@@ -38,7 +38,7 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
   const SimulationResult parallel =
       run_simulation(scene, config, load_platform_config(repo("platforms/ncube2.json")),
                      load_cost_model(repo("platforms/cost_model.json")));
-  ASSERT_EQ(parallel.status, "ok");
+  ASSERT_EQ(parallel.status, RunStatus::kOk);
   EXPECT_EQ(parallel.iterations, iterations);
   EXPECT_EQ(parallel.shooters, sequential.shooters);
   ASSERT_EQ(parallel.iteration_seconds.size(), std::size_t(iterations));

@@ -57,7 +57,7 @@ TEST_P(RenderPhasePicture, IsTheSequentialRenderPixelForPixel) {
   const Scene scene = load_scene(repo("scenes/cornell-box.json"));
   const SimulationResult r =
       run(scene, render_config(R, V, partition, distribution, 61, 47, 6));
-  ASSERT_EQ(r.status, "ok") << r.failure;
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.failure;
   ASSERT_TRUE(r.render.ran);
   ASSERT_EQ(r.render.nodes.size(), std::size_t(R * (V + 1)));
   const Image sequential = render_solution(scene, scene.camera, r.element_radiosity, 61, 47);
@@ -122,7 +122,7 @@ TEST(RenderPhaseMessages, RingOfFourNodes) {
   const SimulationResult r = run(hand_counted_in_view(),
                                  render_config(2, 1, RowPartition::kBlocks,
                                                RenderDistribution::kRing, 16, 16, 1));
-  ASSERT_EQ(r.status, "ok") << r.failure;
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.failure;
   ASSERT_EQ(r.render.nodes.size(), 4u);
   const auto elements = [](double records) { return records * kRecord + kHeader; };
   const double credits = 2 * kHeader;
@@ -186,7 +186,7 @@ TEST(RenderPhaseMessages, HypercubeOfFourNodes) {
   const SimulationResult r = run(hand_counted_scene(),
                                  render_config(2, 1, RowPartition::kScanlines,
                                                RenderDistribution::kHypercube, 16, 16, 1));
-  ASSERT_EQ(r.status, "ok") << r.failure;
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.failure;
   const double records[4][2] = {{6, 6}, {0, 6}, {5, 5}, {0, 5}};
   const double exposure[4] = {16 * kSelection, 8 * kHistogram, 8 * kHistogram + 8 * kSelection,
                               8 * kHistogram};
@@ -231,7 +231,7 @@ TEST(RenderPhaseMemory, FrameBeyondTheNodeIsOutOfMemory) {
       scene, config, load_platform_config(repo("platforms/ncube2.json")),
       load_cost_model(repo("platforms/cost_model.json")));
   EXPECT_EQ(oom.node, 0);
-  EXPECT_EQ(oom.role, "rendering");
+  EXPECT_EQ(oom.role, NodeRole::kRendering);
   // The whole frame (86.4 MB) and the whole picture's pixels (1.44 MB) while resolving.
   EXPECT_DOUBLE_EQ(oom.needed_bytes, 786432 + 600 * 800 * 9 * 20.0 + 600 * 800 * 3);
   config.render.enabled = false;

@@ -74,7 +74,7 @@ void expect_counts(const WorkCounts& got, const WorkCounts& want, const std::str
 // patches, plus the master's comparison of rank 1's candidate in each round.
 TEST(SimulationCounts, EveryOperationWithoutVisibilityProcessors) {
   const SimulationResult r = run(2, 0);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.status, RunStatus::kOk);
   ASSERT_EQ(r.shooters, std::vector<int>({0}));
   ASSERT_EQ(r.nodes.size(), 2u);
   // rank 0: floor rays test table and wall: 20 rays x 2 = 40 tests, 20 crossings.
@@ -88,7 +88,7 @@ TEST(SimulationCounts, EveryOperationWithoutVisibilityProcessors) {
 // floor) or {2, 3} (table, wall), and traces every point of its group against it.
 TEST(SimulationCounts, EveryOperationWithVisibilityProcessors) {
   const SimulationResult r = run(2, 2);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.status, RunStatus::kOk);
   ASSERT_EQ(r.nodes.size(), 6u);  // nodes 0 (rank 0), 1, 2, 3 (rank 1), 4, 5
   expect_counts(r.nodes[0].counts, counts(2 * 2 + 2, 6, 0, 0, 0, 20, 5), "rank 0");
   // Floor points against {light, floor}: both skipped (shooter, own patch).
@@ -113,7 +113,7 @@ TEST(SimulationCounts, EveryOperationWithVisibilityProcessors) {
 // bytes + 8 header.
 TEST(SimulationMessages, PointBlocksAnswersAndTreeMessages) {
   const SimulationResult r = run(2, 2);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.status, RunStatus::kOk);
   ASSERT_EQ(r.nodes.size(), 6u);
   const double record = 88 + 8;
   for (int rank : {0, 1}) {
@@ -135,7 +135,7 @@ TEST(SimulationMessages, PointBlocksAnswersAndTreeMessages) {
 // The same blocks whether or not the next block is sent ahead (pipelined).
 TEST(SimulationMessages, PipelinedSendsTheSameBlocks) {
   const SimulationResult pipelined = run(2, 2, 2, true);
-  ASSERT_EQ(pipelined.status, "ok");
+  ASSERT_EQ(pipelined.status, RunStatus::kOk);
   EXPECT_EQ(pipelined.nodes[0].messages_sent, 2 + 4 + 6);
   EXPECT_DOUBLE_EQ(pipelined.nodes[0].bytes_sent, 6 * (88 + 8) + 208);
 }
@@ -144,7 +144,7 @@ TEST(SimulationMessages, PipelinedSendsTheSameBlocks) {
 // bytes) per visibility processor.
 TEST(SimulationMessages, BlockCountFollowsTheBlockSize) {
   const SimulationResult whole = run(2, 2, 5);
-  ASSERT_EQ(whole.status, "ok");
+  ASSERT_EQ(whole.status, RunStatus::kOk);
   EXPECT_EQ(whole.nodes[0].messages_sent, 2 + 4 + 2);
   EXPECT_DOUBLE_EQ(whole.nodes[0].bytes_sent, 6 * (88 + 8) + 2 * (5 * 16 + 8));
   EXPECT_EQ(whole.nodes[1].messages_sent, 1);
@@ -155,7 +155,7 @@ TEST(SimulationMessages, BlockCountFollowsTheBlockSize) {
 // and receives 2 decisions; rank 0 the reverse.
 TEST(SimulationMessages, TreeMessagesOnlyWithoutVisibilityProcessors) {
   const SimulationResult r = run(2, 0);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.status, RunStatus::kOk);
   for (const NodeStats& n : r.nodes) {
     EXPECT_EQ(n.messages_sent, 2) << n.node;
     EXPECT_EQ(n.messages_received, 2) << n.node;
@@ -186,7 +186,7 @@ TEST(SimulationFailure, NodeThatDoesNotFinishGivesFailedStatus) {
   config.options.samples = 4;
   const SimulationResult r = run_simulation(hand_counted_scene(), config, platform,
                                             load_cost_model(repo("platforms/cost_model.json")));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::kFailed);
   EXPECT_NE(r.failure.find("did not finish"), std::string::npos) << r.failure;
 }
 
@@ -204,9 +204,25 @@ TEST(SimulationFailure, OutOfMemoryNeedsNoElements) {
   const OutOfMemory first = first_node_out_of_memory(scene, config, platform, costs);
   EXPECT_EQ(first.node, 0);
   const SimulationResult r = run_simulation(scene, config, platform, costs);
-  EXPECT_EQ(r.status, "out_of_memory");
+  EXPECT_EQ(r.status, RunStatus::kOutOfMemory);
   EXPECT_EQ(r.out_of_memory.node, 0);
   EXPECT_DOUBLE_EQ(r.out_of_memory.needed_bytes, first.needed_bytes);
+}
+
+}  // namespace
+}  // namespace ncube
+
+namespace ncube {
+namespace {
+
+// The result file's strings for the statuses and roles (docs/result-format.md).
+TEST(SimulationNames, StatusesAndRolesKeepTheirResultFileNames) {
+  EXPECT_STREQ(status_name(RunStatus::kOk), "ok");
+  EXPECT_STREQ(status_name(RunStatus::kOutOfMemory), "out_of_memory");
+  EXPECT_STREQ(status_name(RunStatus::kFailed), "failed");
+  EXPECT_STREQ(role_name(NodeRole::kRadiosity), "radiosity");
+  EXPECT_STREQ(role_name(NodeRole::kVisibility), "visibility");
+  EXPECT_STREQ(role_name(NodeRole::kRendering), "rendering");
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ TEST(VisibilityProcessor, IsChargedTheTestsAndPlaneCrossingsOfItsShare) {
   const PlatformConfig platform = load_platform_config(repo("platforms/ncube2.json"));
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
   const SimulationResult result = run_simulation(scene, config, platform, costs);
-  ASSERT_EQ(result.status, "ok");
+  ASSERT_EQ(result.status, RunStatus::kOk);
   ASSERT_EQ(result.shooters, std::vector<int>({1}));
   ASSERT_EQ(result.nodes.size(), 3u);
 

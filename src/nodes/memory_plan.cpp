@@ -35,7 +35,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
     for (int patch : owned_patches[rank])
       owned_elements += setup.scene.patches[patch].element_count();
     const double owned = double(owned_patches[rank].size());
-    NodeMemory rp{p.radiosity_node(rank), "radiosity", rank, costs.node_reserve_bytes + records};
+    NodeMemory rp{p.radiosity_node(rank), NodeRole::kRadiosity, rank, costs.node_reserve_bytes + records};
     // Section 2.2: without visibility processors every radiosity processor holds the
     // geometry of all patches; section 3: with them, only its own.
     rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes + whole_octree;
@@ -45,7 +45,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
     nodes.push_back(rp);
     for (int j = 0; j < V; ++j) {
       const double share = double(visibility_share(setup.scene, V, j).size());
-      NodeMemory vp{p.visibility_node(rank, j), "visibility", rank,
+      NodeMemory vp{p.visibility_node(rank, j), NodeRole::kVisibility, rank,
                     costs.node_reserve_bytes + records + share * costs.patch_geometry_bytes +
                         in_flight * block * (costs.point_bytes + mask_bytes) +
                         share_octree[std::size_t(j)]};

@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "machine/cost_model.h"
+#include "nodes/node_role.h"
 #include "nodes/program_setup.h"
 
 namespace ncube {
 
 struct NodeMemory {
   int node = 0;
-  std::string role;
+  NodeRole role = NodeRole::kRadiosity;
   int rank = 0;
   double bytes = 0.0;
 };

@@ -18,11 +18,11 @@ simgrid::s4u::Mailbox* mailbox_of(int node) {
 
 }  // namespace
 
-NodeRuntime::NodeRuntime(int node, std::string role, int rank, const PlatformConfig& platform,
+NodeRuntime::NodeRuntime(int node, NodeRole role, int rank, const PlatformConfig& platform,
                          const CostModel& costs, std::vector<TraceEvent>* trace)
     : platform_(platform), costs_(costs), trace_(trace) {
   stats_.node = node;
-  stats_.role = std::move(role);
+  stats_.role = role;
   stats_.rank = rank;
 }
 

@@ -14,13 +14,14 @@
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "nodes/messages.h"
+#include "nodes/node_role.h"
 #include "radiosity/work_counts.h"
 
 namespace ncube {
 
 struct NodeStats {
   int node = 0;
-  std::string role;  // "radiosity" or "visibility"
+  NodeRole role = NodeRole::kRadiosity;
   int rank = 0;      // radiosity processor rank (of its group, for a visibility processor)
   double compute_seconds = 0.0;
   double overhead_seconds = 0.0;  // message software overhead, both directions
@@ -40,7 +41,7 @@ struct TraceEvent {
 
 class NodeRuntime {
  public:
-  NodeRuntime(int node, std::string role, int rank, const PlatformConfig& platform,
+  NodeRuntime(int node, NodeRole role, int rank, const PlatformConfig& platform,
               const CostModel& costs, std::vector<TraceEvent>* trace);
 
   // Makes this actor the permanent receiver of the node's mailbox, so that messages are

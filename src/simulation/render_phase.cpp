@@ -38,7 +38,7 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
   std::deque<RenderProcessor> programs;
   for (int node = 0; node < N; ++node) {
     const bool radiosity = node % (V + 1) == 0;
-    NodeRuntime& runtime = runtimes.emplace_back(node, radiosity ? "radiosity" : "visibility",
+    NodeRuntime& runtime = runtimes.emplace_back(node, radiosity ? NodeRole::kRadiosity : NodeRole::kVisibility,
                                                  node / (V + 1), platform, costs, trace);
     runtime.set_memory(memory[std::size_t(node)]);
     RenderProcessor& program = programs.emplace_back(setup, node, runtime);

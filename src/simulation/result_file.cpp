@@ -31,7 +31,7 @@ nlohmann::json render_to_json(const SimulationConfig& config, const RenderResult
   for (const RenderNodeStats& n : render.nodes) {
     all += n.counts;
     nodes.push_back({{"node", n.stats.node},
-                     {"role", n.stats.role},
+                     {"role", role_name(n.stats.role)},
                      {"rows", n.rows},
                      {"rasterise_seconds", n.rasterise_seconds},
                      {"compute_seconds", n.stats.compute_seconds},
@@ -81,13 +81,13 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"render_distribution", render_distribution_name(config.render.distribution)},
                  {"image_width", config.render.width},
                  {"image_height", config.render.height}};
-  j["status"] = result.status;
-  if (result.status == "out_of_memory")
+  j["status"] = status_name(result.status);
+  if (result.status == RunStatus::kOutOfMemory)
     j["out_of_memory"] = {{"node", result.out_of_memory.node},
-                          {"role", result.out_of_memory.role},
+                          {"role", role_name(result.out_of_memory.role)},
                           {"needed_bytes", result.out_of_memory.needed_bytes},
                           {"available_bytes", result.out_of_memory.available_bytes}};
-  if (result.status == "failed") j["failure"] = result.failure;
+  if (result.status == RunStatus::kFailed) j["failure"] = result.failure;
   j["iterations"] = result.iterations;
   j["converged"] = result.converged;
   j["simulated_seconds"] = result.simulated_seconds;
@@ -103,7 +103,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   nlohmann::json nodes = nlohmann::json::array();
   for (const NodeStats& n : result.nodes)
     nodes.push_back({{"node", n.node},
-                     {"role", n.role},
+                     {"role", role_name(n.role)},
                      {"rank", n.rank},
                      {"compute_seconds", n.compute_seconds},
                      {"overhead_seconds", n.overhead_seconds},

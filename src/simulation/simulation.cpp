@@ -20,6 +20,15 @@
 
 namespace ncube {
 
+const char* status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::kOk: return "ok";
+    case RunStatus::kOutOfMemory: return "out_of_memory";
+    case RunStatus::kFailed: return "failed";
+  }
+  return "?";
+}
+
 void check_configuration(const Scene& scene, const SimulationConfig& config,
                          const PlatformConfig& platform) {
   const int r = config.radiosity_processors, v = config.visibility_processors;
@@ -64,7 +73,7 @@ std::vector<NodeMemory> memory_plan(const Scene& scene, const SimulationConfig& 
 std::string failure_of(const SimulationResult& result, const std::deque<NodeRuntime>& runtimes) {
   for (const NodeRuntime& runtime : runtimes)
     if (!runtime.finished())
-      return "node " + std::to_string(runtime.stats().node) + " (" + runtime.stats().role +
+      return "node " + std::to_string(runtime.stats().node) + " (" + role_name(runtime.stats().role) +
              " processor) did not finish: the simulation stopped at " +
              std::to_string(result.simulated_seconds) + " simulated seconds with it blocked";
   const auto finite = [](double x) { return std::isfinite(x); };
@@ -101,7 +110,7 @@ OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig&
                                                      config.visibility_processors, costs);
     for (std::size_t node = 0; node < render.size(); ++node)
       if (render[node] > platform.node_memory)
-        return {int(node), "rendering", render[node], platform.node_memory};
+        return {int(node), NodeRole::kRendering, render[node], platform.node_memory};
   }
   return {};
 }
@@ -119,7 +128,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   const std::vector<NodeMemory> memory = plan_memory(setup, owned, costs);
   if (config.memory_cap) {
     result.out_of_memory = first_node_out_of_memory(scene, config, platform, costs);
-    if (result.out_of_memory.node >= 0) result.status = "out_of_memory";
+    if (result.out_of_memory.node >= 0) result.status = RunStatus::kOutOfMemory;
   }
 
   Programs programs;
@@ -130,7 +139,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     programs.runtimes.emplace_back(m.node, m.role, m.rank, platform, costs, trace);
     programs.runtimes.back().set_memory(m.bytes);
   }
-  if (result.status == "ok") {  // a node out of memory stops the run before it starts
+  if (result.status == RunStatus::kOk) {  // a node out of memory stops the run before it starts
     if (long(scene.elements.size()) != scene.element_total())
       throw std::logic_error("run_simulation: the scene's elements are not built");
     simgrid::s4u::Engine& engine = simgrid_engine(config.simgrid_arguments);
@@ -197,10 +206,10 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     result.nodes.push_back(runtime.stats());
     result.counts += runtime.stats().counts;
   }
-  if (result.status == "ok") {
+  if (result.status == RunStatus::kOk) {
     result.failure = failure_of(result, programs.runtimes);
     if (result.failure.empty()) result.failure = result.render.failure;
-    if (!result.failure.empty()) result.status = "failed";
+    if (!result.failure.empty()) result.status = RunStatus::kFailed;
   }
   result.host_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - host_start).count();

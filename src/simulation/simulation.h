@@ -46,15 +46,21 @@ struct SimulationConfig : ProgramOptions {
 
 struct OutOfMemory {
   int node = -1;
-  std::string role;
+  NodeRole role = NodeRole::kRadiosity;
   double needed_bytes = 0.0;
   double available_bytes = 0.0;
 };
 
+// How a run ended: it ran to its end, a node was out of memory before it started, or a
+// node program did not reach its end or a number was not finite.
+enum class RunStatus { kOk, kOutOfMemory, kFailed };
+// The status's name in the result file: "ok", "out_of_memory", "failed".
+const char* status_name(RunStatus status);
+
 struct SimulationResult {
-  std::string status = "ok";  // or "out_of_memory", or "failed"
-  OutOfMemory out_of_memory;  // when status is "out_of_memory"
-  std::string failure;        // when status is "failed": why
+  RunStatus status = RunStatus::kOk;
+  OutOfMemory out_of_memory;  // when status is kOutOfMemory
+  std::string failure;        // when status is kFailed: why
   int iterations = 0;
   bool converged = false;
   double simulated_seconds = 0.0;
@@ -82,7 +88,7 @@ OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig&
                                      const PlatformConfig& platform, const CostModel& costs);
 
 // Runs the simulation. Unless a node is out of memory (config.memory_cap), the scene's
-// elements must be built. Status "failed" when a node program did not reach its end (the
+// elements must be built. Status kFailed when a node program did not reach its end (the
 // simulation deadlocked) or a reported number is not finite; then `failure` says which.
 SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
                                 const PlatformConfig& platform, const CostModel& costs);

@@ -8,7 +8,7 @@ std::string trace_to_json(const SimulationResult& result) {
   nlohmann::json events = nlohmann::json::array();
   for (const NodeStats& n : result.nodes)
     events.push_back({{"name", "thread_name"}, {"ph", "M"}, {"pid", 0}, {"tid", n.node},
-                      {"args", {{"name", "node " + std::to_string(n.node) + " " + n.role + " " +
+                      {"args", {{"name", "node " + std::to_string(n.node) + " " + role_name(n.role) + " " +
                                              std::to_string(n.rank)}}}});
   for (const TraceEvent& e : result.trace)
     events.push_back({{"name", e.what}, {"cat", e.what}, {"ph", "X"}, {"pid", 0},

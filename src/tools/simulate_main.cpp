@@ -28,10 +28,10 @@ void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& con
   std::printf("configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
               config.radiosity_processors, config.visibility_processors, config.node_count(),
               config.options.samples);
-  std::printf("status                %s\n", r.status.c_str());
-  if (r.status == "out_of_memory")
+  std::printf("status                %s\n", ncube::status_name(r.status));
+  if (r.status == ncube::RunStatus::kOutOfMemory)
     std::printf("                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
-                r.out_of_memory.node, r.out_of_memory.role.c_str(), r.out_of_memory.needed_bytes,
+                r.out_of_memory.node, ncube::role_name(r.out_of_memory.role), r.out_of_memory.needed_bytes,
                 r.out_of_memory.available_bytes);
   std::printf("iterations            %d (%s)\n", r.iterations,
               r.converged ? "converged" : "not converged");
@@ -88,19 +88,19 @@ int simulate(int argc, char** argv) {
   if (!options.quiet) print_summary(scene, options.config, result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
   if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result));
-  if (!options.image_file.empty() && result.status == "ok")  // the simulated phase's picture if it ran
+  if (!options.image_file.empty() && result.status == ncube::RunStatus::kOk)  // the simulated phase's picture if it ran
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
                                  scene, scene.camera, result.element_radiosity,
                                  options.config.render.width, options.config.render.height)));
   outputs.commit();
-  if (result.status == "out_of_memory") {
+  if (result.status == ncube::RunStatus::kOutOfMemory) {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
-                 result.out_of_memory.node, result.out_of_memory.role.c_str(),
+                 result.out_of_memory.node, ncube::role_name(result.out_of_memory.role),
                  result.out_of_memory.needed_bytes, result.out_of_memory.available_bytes);
     return ncube::kExitOutOfMemory;
   }
-  if (result.status == "failed") {
+  if (result.status == ncube::RunStatus::kFailed) {
     std::fprintf(stderr, "simulate: the simulation failed: %s\n", result.failure.c_str());
     return ncube::kExitSimulationFailed;
   }
