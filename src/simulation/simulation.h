@@ -1,91 +1,17 @@
-// One simulated run: builds the nCube2 platform, places the node programs on it, runs
-// SimGrid to the end and collects what the result file reports. One per process (SimGrid
-// allows one Engine per process).
+// One simulated run: checks the configuration and the nodes' memory, builds the nCube2
+// platform, places the node programs on it, runs SimGrid to the end and collects what the
+// result file reports. One per process (SimGrid allows one Engine per process).
 #pragma once
-
-#include <functional>
-#include <map>
-#include <string>
-#include <vector>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
-#include "nodes/node_runtime.h"
-#include "nodes/program_setup.h"
-#include "radiosity/radiosity_engine.h"
 #include "scene/scene.h"
-#include "simulation/render_phase.h"
+#include "simulation/configuration_check.h"
+#include "simulation/memory_check.h"
+#include "simulation/simulation_config.h"
+#include "simulation/simulation_result.h"
 
 namespace ncube {
-
-struct IterationReport {
-  int iterations_done = 0;
-  double largest_unshot_power = 0.0;
-  double threshold_power = 0.0;  // converged below this
-  double simulated_seconds = 0.0;
-};
-
-// The configuration of one run: the node programs' options (ProgramOptions: the algorithm's,
-// block size, pipelining), the machine's size and files, and what the run records.
-struct SimulationConfig : ProgramOptions {
-  int radiosity_processors = 1;   // R
-  int visibility_processors = 0;  // V, per radiosity processor
-  bool memory_cap = true;         // false: report the memory needed, never stop for it
-  bool record_trace = false;
-  std::string platform_file;
-  std::string cost_model_file;
-  // Called as each iteration is decided (the master's view); may be empty.
-  std::function<void(const IterationReport&)> on_iteration;
-  // SimGrid's own command-line arguments (--cfg=name:value, --log=...), given to its Engine.
-  std::vector<std::string> simgrid_arguments;
-  // The rendering phase after the radiosity run (section 2.3), when enabled.
-  RenderOptions render;
-
-  int node_count() const { return radiosity_processors * (visibility_processors + 1); }
-};
-
-struct OutOfMemory {
-  int node = -1;
-  NodeRole role = NodeRole::kRadiosity;
-  double needed_bytes = 0.0;
-  double available_bytes = 0.0;
-};
-
-// How a run ended: it ran to its end, a node was out of memory before it started, or a
-// node program did not reach its end or a number was not finite.
-enum class RunStatus { kOk, kOutOfMemory, kFailed };
-// The status's name in the result file: "ok", "out_of_memory", "failed".
-const char* status_name(RunStatus status);
-
-struct SimulationResult {
-  RunStatus status = RunStatus::kOk;
-  OutOfMemory out_of_memory;  // when status is kOutOfMemory
-  std::string failure;        // when status is kFailed: why
-  int iterations = 0;
-  bool converged = false;
-  double simulated_seconds = 0.0;
-  std::vector<double> iteration_seconds;  // simulated seconds of each iteration, at the master
-  std::vector<int> shooters;
-  std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
-  std::vector<Rgb> element_radiosity;  // for rendering
-  WorkCounts counts;                   // all nodes together
-  std::vector<NodeStats> nodes;        // in node order
-  std::vector<TraceEvent> trace;       // when config.record_trace
-  RenderResult render;                 // when config.render.enabled and the run got that far
-  double host_seconds = 0.0;
-  // The SimGrid settings the run used (the platform's defaults, overridden by --cfg).
-  std::map<std::string, std::string> simgrid_config;
-};
-
-// Throws InputError for a configuration the simulator cannot run.
-void check_configuration(const Scene& scene, const SimulationConfig& config,
-                         const PlatformConfig& platform);
-
-// The first node (in node order) whose modeled memory exceeds the platform's node memory;
-// node -1 when every node fits. Needs the patches' element counts only, not the elements,
-// so it can run before the host allocates them.
-OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig& config,
-                                     const PlatformConfig& platform, const CostModel& costs);
 
 // Runs the simulation. Unless a node is out of memory (config.memory_cap), the scene's
 // elements must be built. Status kFailed when a node program did not reach its end (the

@@ -1,0 +1,89 @@
+#include "simulation/node_programs.h"
+
+#include <memory>
+#include <numeric>
+
+#include <simgrid/s4u/Actor.hpp>
+#include <simgrid/s4u/Engine.hpp>
+
+namespace ncube {
+
+void create_runtimes(NodePrograms& programs, const std::vector<NodeMemory>& memory,
+                     const PlatformConfig& platform, const CostModel& costs,
+                     std::vector<TraceEvent>* trace) {
+  for (const NodeMemory& m : memory) {
+    programs.runtimes.emplace_back(m.node, m.role, m.rank, platform, costs, trace);
+    programs.runtimes.back().set_memory(m.bytes);
+  }
+}
+
+void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
+                          const std::vector<std::vector<int>>& owned,
+                          const std::vector<simgrid::s4u::Host*>& hosts) {
+  const Scene& scene = setup.scene;
+  const int R = setup.placement.radiosity_processors, V = setup.placement.visibility_processors;
+  const ProgressiveOptions& o = setup.options;
+  if (V == 0) {
+    std::vector<int> all_patches(scene.patches.size());
+    std::iota(all_patches.begin(), all_patches.end(), 0);
+    programs.occluders.emplace_back(scene, all_patches, o.ray_policy, o.visibility);
+  }
+  for (int j = 0; j < V; ++j)
+    programs.occluders.emplace_back(scene, visibility_share(scene, V, j), o.ray_policy,
+                                    o.visibility);
+  const Occluders* all = V == 0 ? &programs.occluders.front() : nullptr;
+  int next_runtime = 0;
+  for (int rank = 0; rank < R; ++rank) {
+    NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
+    RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[rank]);
+    RadiosityProcessor& rp =
+        programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
+    simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
+                                hosts[setup.placement.radiosity_node(rank)], [&rp] { rp.run(); });
+    for (int j = 0; j < V; ++j) {
+      const Occluders& share = programs.occluders[std::size_t(j)];
+      VisibilityProcessor& vp =
+          programs.visibility.emplace_back(setup, programs.runtimes[next_runtime++], share);
+      simgrid::s4u::Actor::create(
+          "visibility-" + std::to_string(rank) + "." + std::to_string(j),
+          hosts[setup.placement.visibility_node(rank, j)], [&vp] { vp.run(); });
+    }
+  }
+}
+
+void report_iterations(const NodePrograms& programs, const SimulationConfig& config,
+                       double emitted_power) {
+  if (!config.on_iteration) return;
+  const RadiosityProcessor& master = programs.radiosity.front();
+  const double threshold = emitted_power * config.options.convergence_fraction;
+  auto reported = std::make_shared<std::size_t>(0);
+  simgrid::s4u::Engine::on_time_advance_cb([&master, &config, threshold, reported](double) {
+    if (master.iteration_ends().size() == *reported) return;
+    *reported = master.iteration_ends().size();
+    config.on_iteration({int(*reported), master.largest_unshot_power(), threshold,
+                         simgrid::s4u::Engine::get_clock()});
+  });
+}
+
+void collect_solution(const Scene& scene, const NodePrograms& programs,
+                      std::vector<Rgb>& element_radiosity, std::vector<Rgb>& patch_radiosity) {
+  // Every element and patch is owned by exactly one radiosity processor.
+  element_radiosity.assign(scene.elements.size(), Rgb(0.0));
+  patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
+  for (const RadiosityEngine& engine : programs.engines) {
+    for (int e : engine.owned_elements()) element_radiosity[e] = engine.element_radiosity(e);
+    for (int p : engine.owned_patches()) patch_radiosity[p] = engine.patch_radiosity(p);
+  }
+}
+
+std::string unfinished_node(const NodePrograms& programs, double simulated_seconds) {
+  for (const NodeRuntime& runtime : programs.runtimes)
+    if (!runtime.finished())
+      return "node " + std::to_string(runtime.stats().node) + " (" +
+             role_name(runtime.stats().role) +
+             " processor) did not finish: the simulation stopped at " +
+             std::to_string(simulated_seconds) + " simulated seconds with it blocked";
+  return "";
+}
+
+}  // namespace ncube

@@ -1,0 +1,57 @@
+// The node programs of one radiosity run on the simulated machine (sections 2.2 and 3): a
+// runtime per node, a radiosity processor per rank with its engine, V visibility processors
+// per rank with their occluder shares, each an actor on its host.
+#pragma once
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include <simgrid/s4u/Host.hpp>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+#include "nodes/memory_plan.h"
+#include "nodes/node_runtime.h"
+#include "nodes/program_setup.h"
+#include "nodes/radiosity_processor.h"
+#include "nodes/visibility_processor.h"
+#include "radiosity/occluders.h"
+#include "radiosity/radiosity_engine.h"
+#include "simulation/simulation_config.h"
+
+namespace ncube {
+
+// Everything the node programs of one run are made of; lives until the run is over.
+struct NodePrograms {
+  std::deque<NodeRuntime> runtimes;  // in node order
+  std::deque<RadiosityEngine> engines;
+  std::deque<Occluders> occluders;
+  std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
+  std::deque<VisibilityProcessor> visibility;
+};
+
+// One runtime per node of `memory` (node order), each holding its planned bytes.
+void create_runtimes(NodePrograms& programs, const std::vector<NodeMemory>& memory,
+                     const PlatformConfig& platform, const CostModel& costs,
+                     std::vector<TraceEvent>* trace);
+
+// Builds the programs over the runtimes and creates their actors on `hosts`: radiosity
+// processor `rank` owns the patches owned[rank]; the occluder sets are read-only and the
+// same for every group, so they are built once and shared.
+void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
+                          const std::vector<std::vector<int>>& owned,
+                          const std::vector<simgrid::s4u::Host*>& hosts);
+
+// Calls config.on_iteration (if set) as the master decides each iteration.
+void report_iterations(const NodePrograms& programs, const SimulationConfig& config,
+                       double emitted_power);
+
+// Each element's and patch's radiosity, from the radiosity processor that owns it.
+void collect_solution(const Scene& scene, const NodePrograms& programs,
+                      std::vector<Rgb>& element_radiosity, std::vector<Rgb>& patch_radiosity);
+
+// Why a node program did not reach its end ("" if every one did).
+std::string unfinished_node(const NodePrograms& programs, double simulated_seconds);
+
+}  // namespace ncube

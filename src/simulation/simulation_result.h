@@ -1,0 +1,49 @@
+// What one simulated run reports (the result file's content: simulation/result_file.h).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "nodes/node_role.h"
+#include "nodes/node_runtime.h"
+#include "radiosity/work_counts.h"
+#include "scene/scene.h"
+#include "simulation/render_phase.h"
+
+namespace ncube {
+
+struct OutOfMemory {
+  int node = -1;
+  NodeRole role = NodeRole::kRadiosity;
+  double needed_bytes = 0.0;
+  double available_bytes = 0.0;
+};
+
+// How a run ended: it ran to its end, a node was out of memory before it started, or a
+// node program did not reach its end or a number was not finite.
+enum class RunStatus { kOk, kOutOfMemory, kFailed };
+// The status's name in the result file: "ok", "out_of_memory", "failed".
+const char* status_name(RunStatus status);
+
+struct SimulationResult {
+  RunStatus status = RunStatus::kOk;
+  OutOfMemory out_of_memory;  // when status is kOutOfMemory
+  std::string failure;        // when status is kFailed: why
+  int iterations = 0;
+  bool converged = false;
+  double simulated_seconds = 0.0;
+  std::vector<double> iteration_seconds;  // simulated seconds of each iteration, at the master
+  std::vector<int> shooters;
+  std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
+  std::vector<Rgb> element_radiosity;  // for rendering
+  WorkCounts counts;                   // all nodes together
+  std::vector<NodeStats> nodes;        // in node order
+  std::vector<TraceEvent> trace;       // when config.record_trace
+  RenderResult render;                 // when config.render.enabled and the run got that far
+  double host_seconds = 0.0;
+  // The SimGrid settings the run used (the platform's defaults, overridden by --cfg).
+  std::map<std::string, std::string> simgrid_config;
+};
+
+}  // namespace ncube
