@@ -11,6 +11,8 @@ double CostModel::flops(const WorkCounts& c) const {
          flops_per_plane_crossing * double(c.plane_crossings) +
          flops_per_form_factor * double(c.form_factors) +
          flops_per_element_update * double(c.element_updates) +
+         flops_per_subdivision_test * double(c.subdivision_tests) +
+         flops_per_element_created * double(c.elements_created) +
          flops_per_octree_cell_visited * double(c.octree_cells_visited) +
          flops_per_octree_overlap_test * double(c.octree_overlap_tests) +
          flops_per_octree_cell_built * double(c.octree_cells_built);
@@ -40,6 +42,8 @@ CostModel load_cost_model(const std::string& path) {
                                             {"flops_per_plane_crossing", 0, false, kFlops},
                                             {"flops_per_form_factor", 0, false, kFlops},
                                             {"flops_per_element_update", 0, false, kFlops},
+                                            {"flops_per_subdivision_test", 0, false, kFlops},
+                                            {"flops_per_element_created", 0, false, kFlops},
                                             {"flops_per_octree_cell_visited", 0, false, kFlops},
                                             {"flops_per_octree_overlap_test", 0, false, kFlops},
                                             {"flops_per_octree_cell_built", 0, false, kFlops},
@@ -51,6 +55,8 @@ CostModel load_cost_model(const std::string& path) {
                                             {"patch_geometry_bytes", 1, true, kBytes},
                                             {"patch_radiosity_bytes", 1, true, kBytes},
                                             {"element_bytes", 1, true, kBytes},
+                                            {"load_record_bytes", 1, true, kBytes},
+                                            {"transfer_order_bytes", 1, true, kBytes},
                                             {"flops_per_render_vertex", 0, false, kFlops},
                                             {"flops_per_clip_vertex", 0, false, kFlops},
                                             {"flops_per_projected_vertex", 0, false, kFlops},
@@ -75,6 +81,8 @@ CostModel load_cost_model(const std::string& path) {
   m.flops_per_plane_crossing = v.at("flops_per_plane_crossing");
   m.flops_per_form_factor = v.at("flops_per_form_factor");
   m.flops_per_element_update = v.at("flops_per_element_update");
+  m.flops_per_subdivision_test = v.at("flops_per_subdivision_test");
+  m.flops_per_element_created = v.at("flops_per_element_created");
   m.flops_per_octree_cell_visited = v.at("flops_per_octree_cell_visited");
   m.flops_per_octree_overlap_test = v.at("flops_per_octree_overlap_test");
   m.flops_per_octree_cell_built = v.at("flops_per_octree_cell_built");
@@ -86,6 +94,8 @@ CostModel load_cost_model(const std::string& path) {
   m.patch_geometry_bytes = v.at("patch_geometry_bytes");
   m.patch_radiosity_bytes = v.at("patch_radiosity_bytes");
   m.element_bytes = v.at("element_bytes");
+  m.load_record_bytes = v.at("load_record_bytes");
+  m.transfer_order_bytes = v.at("transfer_order_bytes");
   m.node_reserve_bytes = v.at("node_reserve_bytes");
   m.flops_per_render_vertex = v.at("flops_per_render_vertex");
   m.flops_per_clip_vertex = v.at("flops_per_clip_vertex");

@@ -17,6 +17,9 @@ struct CostModel {
   double flops_per_plane_crossing = 0;     // the rest of a test whose ray crosses the plane
   double flops_per_form_factor = 0;        // one point-to-part contour integral
   double flops_per_element_update = 0;     // adding the shot light to one element
+  // Adaptive subdivision (section 4.1, --subdivide).
+  double flops_per_subdivision_test = 0;   // an element's corner radiosities compared
+  double flops_per_element_created = 0;    // one child element's geometry made by a cut
   // Octree visibility (section 6, --visibility octree).
   double flops_per_octree_cell_visited = 0;  // slab test of a ray segment against a cell
   double flops_per_octree_overlap_test = 0;  // building: a patch's box against a cell's
@@ -44,6 +47,8 @@ struct CostModel {
   double octree_cell_bytes = 0;        // one octree cell: bounds, children, patch list
   double octree_reference_bytes = 0;   // one entry of a leaf's patch list
   double node_reserve_bytes = 0;       // program, operating system and stack on every node
+  double load_record_bytes = 0;        // a radiosity processor's load, with its candidate (4.2)
+  double transfer_order_bytes = 0;     // one balancing order, with the shooter (4.2)
   double render_element_bytes = 0;     // one element as the renderer sends and holds it
   double frame_sample_bytes = 0;       // one sample of the frame and z-buffer
   double pixel_bytes = 0;              // one finished pixel, as collected at node 0

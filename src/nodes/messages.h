@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "nodes/load_balancing.h"
 #include "radiosity/radiosity_engine.h"
 #include "render/frame_share.h"
 
@@ -17,6 +18,7 @@ enum class MessageKind {
   kStop,       // converged or iteration limit reached: every node ends
   kPoints,     // a block of visibility points, radiosity -> visibility processor
   kAnswers,    // one part mask per point of a block, visibility -> radiosity processor
+  kPatches,    // patches with their elements, from one radiosity processor to another (4.2)
   // The rendering phase (section 2.3):
   kElements,   // render records of one or more nodes' shares, passed on (ring, hypercube)
   kCredit,     // ring: "your last message was taken", so the next may come
@@ -41,6 +43,10 @@ struct Message {
   MessageKind kind = MessageKind::kStop;
   int from = -1;             // sending node
   ShooterChoice candidate;   // kCandidate, kShooter
+  std::vector<ProcessorLoad> loads;  // kCandidate: the subtree's loads (subdivision or balancing on)
+  std::vector<Transfer> transfers;   // kShooter: the master's balancing orders (4.2)
+  bool out_of_memory = false;        // kStop: a processor cannot make its cuts (4.1, 4.2)
+  std::vector<StoredPatch> patches;  // kPatches
   int block = -1;            // kPoints, kAnswers
   std::vector<Vec3> points;  // kPoints
   std::vector<int> point_patches;  // kPoints: the patch of each point

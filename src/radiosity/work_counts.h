@@ -18,6 +18,8 @@ struct WorkCounts {
   std::uint64_t octree_cells_built = 0;    // building the octree: cells created
   std::uint64_t form_factors = 0;        // point-to-part contour integrals (visible parts)
   std::uint64_t element_updates = 0;     // receiving elements whose radiosity was updated
+  std::uint64_t subdivision_tests = 0;   // section 4.1: elements whose corners were compared
+  std::uint64_t elements_created = 0;    // section 4.1: child elements made by cuts
 
   WorkCounts& operator+=(const WorkCounts& o) {
     shooter_candidates += o.shooter_candidates;
@@ -30,6 +32,8 @@ struct WorkCounts {
     octree_cells_built += o.octree_cells_built;
     form_factors += o.form_factors;
     element_updates += o.element_updates;
+    subdivision_tests += o.subdivision_tests;
+    elements_created += o.elements_created;
     return *this;
   }
   bool operator==(const WorkCounts& o) const {
@@ -39,7 +43,8 @@ struct WorkCounts {
            octree_cells_visited == o.octree_cells_visited &&
            octree_overlap_tests == o.octree_overlap_tests &&
            octree_cells_built == o.octree_cells_built &&
-           form_factors == o.form_factors && element_updates == o.element_updates;
+           form_factors == o.form_factors && element_updates == o.element_updates &&
+           subdivision_tests == o.subdivision_tests && elements_created == o.elements_created;
   }
 };
 

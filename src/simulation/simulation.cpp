@@ -81,13 +81,31 @@ std::string failure_of(const SimulationResult& result, const std::deque<NodeRunt
 }
 
 void collect_solution(const Scene& scene, const Programs& programs, SimulationResult& result) {
-  // Every element and patch is owned by exactly one radiosity processor.
-  result.element_radiosity.assign(scene.elements.size(), Rgb(0.0));
+  // Every patch is held by exactly one radiosity processor (section 4).
+  result.solution.assign(scene.patches.size(), PatchSolution{});
   result.patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
   for (const RadiosityEngine& engine : programs.engines) {
-    for (int e : engine.owned_elements()) result.element_radiosity[e] = engine.element_radiosity(e);
-    for (int p : engine.owned_patches()) result.patch_radiosity[p] = engine.patch_radiosity(p);
+    result.held_patches.push_back(engine.store().patch_indices());
+    for (PatchSolution& p : engine.store().solution()) {
+      result.patch_radiosity[std::size_t(p.patch)] = engine.patch_radiosity(p.patch);
+      result.solution[std::size_t(p.patch)] = std::move(p);
+    }
   }
+  // The level-0 view: a cut element shows the area-weighted mean of its descendants.
+  result.element_radiosity.assign(std::size_t(scene.element_total()), Rgb(0.0));
+  std::vector<double> area(result.element_radiosity.size(), 0.0);
+  for (const PatchSolution& p : result.solution) {
+    const Patch& patch = scene.patches[std::size_t(p.patch)];
+    for (std::size_t k = 0; k < p.cells.size(); ++k) {
+      const ElementCell& c = p.cells[k];
+      const std::size_t e = std::size_t(patch.first_element) +
+                            std::size_t(c.j >> c.level) * std::size_t(patch.nu) + std::size_t(c.i >> c.level);
+      const double a = c.level == 0 ? 1.0 : cell_polygon(patch, c).area();
+      result.element_radiosity[e] += p.radiosity[k] * a;
+      area[e] += a;
+    }
+  }
+  for (std::size_t e = 0; e < area.size(); ++e) result.element_radiosity[e] /= area[e];
 }
 
 }  // namespace
@@ -113,7 +131,8 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   SimulationResult result;
   const int R = config.radiosity_processors, V = config.visibility_processors;
   const ProgramSetup setup{scene,           Placement{R, V},     config.options,
-                           scene.emitted_power(), config.block_size, config.pipelined};
+                           scene.emitted_power(), config.block_size, config.pipelined,
+                           config.memory_cap,     config.balancing};
   const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
 
   // Memory: every node's modeled bytes against its capacity, before anything runs.
@@ -132,8 +151,6 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     programs.runtimes.back().set_memory(m.bytes);
   }
   if (result.status == "ok") {  // a node out of memory stops the run before it starts
-    if (long(scene.elements.size()) != scene.element_total())
-      throw std::logic_error("run_simulation: the scene's elements are not built");
     simgrid::s4u::Engine& engine = simgrid_engine(config.simgrid_arguments);
     std::vector<simgrid::s4u::Host*> hosts;
     if (platform.format == "simgrid-xml") {
@@ -153,7 +170,7 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     int next_runtime = 0;
     for (int rank = 0; rank < R; ++rank) {
       NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
-      RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[rank]);
+      RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[std::size_t(rank)]);
       RadiosityProcessor& rp =
           programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
       simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
@@ -190,6 +207,14 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
       previous = end;
     }
     collect_solution(scene, programs, result);
+    result.elements_per_iteration = master.elements_per_iteration();
+    for (const RadiosityProcessor& rp : programs.radiosity) result.patches_moved += rp.patches_sent();
+    if (master.out_of_memory().node >= 0) {  // a processor could not make its cuts (4.1, 4.2)
+      result.status = "out_of_memory";
+      const NodeStats& node = programs.runtimes[std::size_t(master.out_of_memory().node)].stats();
+      result.out_of_memory = {node.node, node.role, master.out_of_memory().needed_bytes,
+                              platform.node_memory};
+    }
     if (config.render.enabled && failure_of(result, programs.runtimes).empty())
       result.render = run_render_phase(scene, config.render, R, V, result.element_radiosity, hosts,
                                        platform, costs, trace);

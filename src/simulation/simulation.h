@@ -10,6 +10,7 @@
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "nodes/load_balancing.h"
 #include "nodes/node_runtime.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene.h"
@@ -31,6 +32,7 @@ struct SimulationConfig {
   int block_size = 100;           // visibility points per message
   bool pipelined = false;         // send the next block before using this block's answers
   bool memory_cap = true;         // false: report the memory needed, never stop for it
+  BalancingOptions balancing;     // dynamic load balancing (section 4.2), off by default
   bool record_trace = false;
   std::string platform_file;
   std::string cost_model_file;
@@ -61,7 +63,16 @@ struct SimulationResult {
   std::vector<double> iteration_seconds;  // simulated seconds of each iteration, at the master
   std::vector<int> shooters;
   std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
-  std::vector<Rgb> element_radiosity;  // for rendering
+  // Every patch's elements and radiosities as the radiosity processors hold them at the end
+  // (one entry per scene patch, in scene order).
+  std::vector<PatchSolution> solution;
+  std::vector<Rgb> element_radiosity;  // per level-0 element of the scene (area-weighted mean
+                                       // of its descendants when cut), for rendering
+  std::vector<std::vector<int>> held_patches;  // per radiosity processor, at the end
+  // At the master, per iteration: each radiosity processor's elements when it began
+  // (subdivision or balancing on).
+  std::vector<std::vector<long>> elements_per_iteration;
+  long patches_moved = 0;  // by load balancing (section 4.2)
   WorkCounts counts;                   // all nodes together
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace
