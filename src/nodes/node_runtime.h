@@ -29,6 +29,7 @@ struct NodeStats {
   double bytes_sent = 0.0;
   long messages_received = 0;
   double peak_memory_bytes = 0.0;
+  double memory_bytes_at_end = 0.0;  // when the program finished (4.1, 4.2: may differ from the start)
   WorkCounts counts;
 };
 
