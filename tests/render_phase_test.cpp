@@ -60,7 +60,7 @@ TEST_P(RenderPhasePicture, IsTheSequentialRenderPixelForPixel) {
   ASSERT_EQ(r.status, "ok") << r.failure;
   ASSERT_TRUE(r.render.ran);
   ASSERT_EQ(r.render.nodes.size(), std::size_t(R * (V + 1)));
-  const Image sequential = render_solution(scene, scene.camera, r.element_radiosity, 61, 47);
+  const Image sequential = render_solution(scene, scene.camera, uniform_solution(scene, r.element_radiosity), 61, 47);
   ASSERT_EQ(r.render.picture.width, 61);
   ASSERT_EQ(r.render.picture.height, 47);
   int lit = 0;
@@ -208,19 +208,21 @@ TEST(RenderPhaseMessages, HypercubeOfFourNodes) {
 TEST(RenderPhaseMemory, RingHoldsTwoSharesHypercubeAll) {
   const Scene scene = hand_counted_scene();
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  const std::vector<PatchSolution> solution =
+      uniform_solution(scene, std::vector<Rgb>(std::size_t(scene.element_total()), Rgb(0.0)));
   RenderOptions options{true, RowPartition::kBlocks, RenderDistribution::kRing, 16, 16};
   const double base = 786432 + 11520;
-  const std::vector<double> ring = render_memory(scene, options, 4, 0, costs);
+  const std::vector<double> ring = render_memory(scene, options, 4, 0, solution, costs);
   ASSERT_EQ(ring.size(), 4u);
   EXPECT_DOUBLE_EQ(ring[0], base + 7 * 104);
   EXPECT_DOUBLE_EQ(ring[1], base + 8 * 104);
   options.distribution = RenderDistribution::kHypercube;
-  for (double bytes : render_memory(scene, options, 4, 0, costs)) EXPECT_DOUBLE_EQ(bytes, base + 11 * 104);
+  for (double bytes : render_memory(scene, options, 4, 0, solution, costs)) EXPECT_DOUBLE_EQ(bytes, base + 11 * 104);
   // 800 x 600 in 4 parts: resolving, a node holds its frame share (150 rows x 800 x 9 x 20
   // bytes = 21.6 MB) and its finished rows (150 x 800 x 3 = 360,000 bytes), more than the
   // frame share and the 11 records while distributing.
   options = {true, RowPartition::kScanlines, RenderDistribution::kHypercube, 800, 600};
-  EXPECT_DOUBLE_EQ(render_memory(scene, options, 4, 0, costs)[1], 786432 + 21600000 + 360000);
+  EXPECT_DOUBLE_EQ(render_memory(scene, options, 4, 0, solution, costs)[1], 786432 + 21600000 + 360000);
 }
 
 TEST(RenderPhaseMemory, FrameBeyondTheNodeIsOutOfMemory) {

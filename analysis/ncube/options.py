@@ -61,6 +61,8 @@ OPTIONS = {
                           "picture width (the rendering phase)"),
     "image_height": Option("--image-height", int, 600, "image_height", _at_least(16),
                            "picture height (the rendering phase)"),
+    "outline_elements": Option("--outline-elements", bool, False, "outline_elements", None,
+                               "draw the element edges in the picture"),
 }
 # Not options of a cell's configuration but of how it is run or what it writes.
 FILE_OPTIONS = ("platform", "cost_model")

@@ -45,6 +45,7 @@ struct CostModel {
   double octree_reference_bytes = 0;   // one entry of a leaf's patch list
   double node_reserve_bytes = 0;       // program, operating system and stack on every node
   double render_element_bytes = 0;     // one element as the renderer sends and holds it
+  double render_vertex_bytes = 0;      // one more boundary point (T-vertex) of such an element
   double frame_sample_bytes = 0;       // one sample of the frame and z-buffer
   double pixel_bytes = 0;              // one finished pixel, as collected at node 0
   double exposure_histogram_bytes = 0; // a round's luminance histograms and maxima
