@@ -363,6 +363,38 @@ TEST(RenderPhaseAdaptiveMesh, ParallelIsTheSequentialPicture) {
   }
 }
 
+// Two coplanar, overlapping patches, both subdivided, on different nodes: every sample where
+// they overlap is a depth tie (or nearly), which the drawing key must settle as the
+// sequential scene-order drawing does, whatever order the records arrive in.
+TEST(RenderPhaseAdaptiveMesh, DepthTiesOfSubdividedPatchesResolveAsInSceneOrder) {
+  SimulatedMachine machine;
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  Scene scene;
+  for (const Vec3& centre : {Vec3(0, 0, -5), Vec3(0.5, 0.3, -5)})
+    scene.patches.push_back(hand_counted_patch(centre - Vec3(1, 1, 0), Vec3(2, 0, 0), Vec3(0, 2, 0),
+                                               centre.x > 0 ? 0.0 : 1.0, 3, 2));
+  scene.build_elements();
+  scene.camera.eye = Vec3(0.0);
+  scene.camera.look_at = Vec3(0, 0, -1);
+  scene.camera.up = Vec3(0, 1, 0);
+  scene.camera.fov_deg = 90.0;
+  std::vector<Rgb> radiosity;
+  for (long e = 0; e < scene.element_total(); ++e)
+    radiosity.push_back(e < 6 ? Rgb(1.0, 0.1 * double(e), 0.0) : Rgb(0.0, 0.1 * double(e), 1.0));
+  std::vector<PatchSolution> solution = uniform_solution(scene, radiosity);
+  subdivide(solution, 0, 4, Rgb(0.9, 0.2, 0.0));
+  subdivide(solution, 1, 0, Rgb(0.0, 0.2, 0.9));
+  subdivide(solution, 1, 3, Rgb(0.0, 0.7, 0.5));
+  const Image sequential = render_solution(scene, scene.camera, solution, 40, 30);
+  for (RenderDistribution distribution : {RenderDistribution::kRing, RenderDistribution::kHypercube}) {
+    const RenderOptions options{true, RowPartition::kScanlines, distribution, 40, 30};
+    const RenderResult r = run_render_phase(scene, options, 2, 0, solution, machine.hosts,
+                                            machine.platform, costs, true, nullptr);
+    ASSERT_TRUE(r.ran && r.failure.empty()) << r.failure;
+    EXPECT_EQ(r.picture.pixels, sequential.pixels) << render_distribution_name(distribution);
+  }
+}
+
 TEST(RenderPhaseConfiguration, HypercubeNeedsAPowerOfTwo) {
   const Scene scene = hand_counted_scene();
   const PlatformConfig platform = load_platform_config(repo("platforms/ncube2.json"));
