@@ -68,6 +68,7 @@ CostModel load_cost_model(const std::string& path) {
                                             {"flops_per_histogram_bucket", 0, false, kFlops},
                                             {"flops_per_pixel_resolved", 0, false, kFlops},
                                             {"render_element_bytes", 1, true, kBytes},
+                                            {"render_vertex_bytes", 1, true, kBytes},
                                             {"frame_sample_bytes", 1, true, kBytes},
                                             {"pixel_bytes", 1, true, kBytes},
                                             {"exposure_histogram_bytes", 1, true, kBytes},
@@ -108,6 +109,7 @@ CostModel load_cost_model(const std::string& path) {
   m.flops_per_histogram_bucket = v.at("flops_per_histogram_bucket");
   m.flops_per_pixel_resolved = v.at("flops_per_pixel_resolved");
   m.render_element_bytes = v.at("render_element_bytes");
+  m.render_vertex_bytes = v.at("render_vertex_bytes");
   m.frame_sample_bytes = v.at("frame_sample_bytes");
   m.pixel_bytes = v.at("pixel_bytes");
   m.exposure_histogram_bytes = v.at("exposure_histogram_bytes");

@@ -50,6 +50,7 @@ struct CostModel {
   double load_record_bytes = 0;        // a radiosity processor's load, with its candidate (4.2)
   double transfer_order_bytes = 0;     // one balancing order, with the shooter (4.2)
   double render_element_bytes = 0;     // one element as the renderer sends and holds it
+  double render_vertex_bytes = 0;      // one more boundary point (T-vertex) of such an element
   double frame_sample_bytes = 0;       // one sample of the frame and z-buffer
   double pixel_bytes = 0;              // one finished pixel, as collected at node 0
   double exposure_histogram_bytes = 0; // a round's luminance histograms and maxima

@@ -13,7 +13,7 @@ RenderProcessor::RenderProcessor(const RenderSetup& setup, int node, NodeRuntime
 void RenderProcessor::run() {
   runtime_.start();
   frame_.emplace(setup_.scene, setup_.scene.camera, setup_.options.width, setup_.options.height,
-                 setup_.rows_of(node_));
+                 setup_.rows_of(node_), setup_.options.outline_elements);
   // Every element reaches every node, which draws it into the rows of its part.
   if (setup_.options.distribution == RenderDistribution::kRing)
     distribute_over_ring();
@@ -53,8 +53,8 @@ void RenderProcessor::distribute_over_ring() {
     message->kind = MessageKind::kElements;
     message->block = step;
     message->shares = {current};
-    runtime_.send(next, std::move(message),
-                  double(current->size()) * runtime_.costs().render_element_bytes);
+    const double bytes = render_record_bytes(*current, runtime_.costs());
+    runtime_.send(next, std::move(message), bytes);
     const std::unique_ptr<Message> arrived = runtime_.receive({MessageKind::kElements});
     if (step + 1 < N) {  // the predecessor has one more share to pass on
       auto credit = std::make_unique<Message>();
@@ -73,14 +73,13 @@ void RenderProcessor::distribute_over_hypercube() {
   rasterise(held.front());
   std::map<int, std::unique_ptr<Message>> early;  // a later step's message that came first
   for (int d = 0; (1 << d) < setup_.nodes; ++d) {
-    double records = 0.0;
-    for (const ElementShare& share : held) records += double(share->size());
+    double bytes = 0.0;
+    for (const ElementShare& share : held) bytes += render_record_bytes(*share, runtime_.costs());
     auto message = std::make_unique<Message>();
     message->kind = MessageKind::kElements;
     message->block = d;
     message->shares = held;
-    runtime_.send(node_ ^ (1 << d), std::move(message),
-                  records * runtime_.costs().render_element_bytes);
+    runtime_.send(node_ ^ (1 << d), std::move(message), bytes);
     std::unique_ptr<Message> arrived;
     if (early.count(d)) {
       arrived = std::move(early[d]);

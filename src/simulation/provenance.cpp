@@ -42,6 +42,7 @@ nlohmann::json cost_model_values(const CostModel& c) {
           {"flops_per_histogram_bucket", c.flops_per_histogram_bucket},
           {"flops_per_pixel_resolved", c.flops_per_pixel_resolved},
           {"render_element_bytes", c.render_element_bytes},
+          {"render_vertex_bytes", c.render_vertex_bytes},
           {"frame_sample_bytes", c.frame_sample_bytes},
           {"pixel_bytes", c.pixel_bytes},
           {"exposure_histogram_bytes", c.exposure_histogram_bytes},

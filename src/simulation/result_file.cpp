@@ -96,7 +96,8 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                   config.render.enabled ? row_partition_name(config.render.partition) : "off"},
                  {"render_distribution", render_distribution_name(config.render.distribution)},
                  {"image_width", config.render.width},
-                 {"image_height", config.render.height}};
+                 {"image_height", config.render.height},
+                 {"outline_elements", config.render.outline_elements}};
   j["status"] = result.status;
   if (result.status == "out_of_memory")
     j["out_of_memory"] = {{"node", result.out_of_memory.node},

@@ -114,9 +114,9 @@ OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig&
                                      const PlatformConfig& platform, const CostModel& costs) {
   for (const NodeMemory& m : memory_plan(scene, config, costs))
     if (m.bytes > platform.node_memory) return {m.node, m.role, m.bytes, platform.node_memory};
-  if (config.render.enabled) {  // the rendering phase's peak (section 2.3)
-    const std::vector<double> render = render_memory(scene, config.render, config.radiosity_processors,
-                                                     config.visibility_processors, costs);
+  if (config.render.enabled) {  // the rendering phase's peak without its records (section 2.3)
+    const std::vector<double> render = render_memory_without_records(
+        config.render, config.radiosity_processors, config.visibility_processors, costs);
     for (std::size_t node = 0; node < render.size(); ++node)
       if (render[node] > platform.node_memory)
         return {int(node), "rendering", render[node], platform.node_memory};
@@ -215,9 +215,15 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
       result.out_of_memory = {node.node, node.role, master.out_of_memory().needed_bytes,
                               platform.node_memory};
     }
-    if (config.render.enabled && failure_of(result, programs.runtimes).empty())
-      result.render = run_render_phase(scene, config.render, R, V, result.element_radiosity, hosts,
-                                       platform, costs, trace);
+    if (config.render.enabled && result.status == "ok" && failure_of(result, programs.runtimes).empty()) {
+      result.render = run_render_phase(scene, config.render, R, V, result.solution, hosts, platform,
+                                       costs, config.memory_cap, trace, &result.held_patches);
+      if (result.render.out_of_memory_node >= 0) {  // its records do not fit (section 2.3)
+        result.status = "out_of_memory";
+        result.out_of_memory = {result.render.out_of_memory_node, "rendering",
+                                result.render.out_of_memory_bytes, platform.node_memory};
+      }
+    }
   }
   for (const NodeRuntime& runtime : programs.runtimes) {
     result.nodes.push_back(runtime.stats());

@@ -88,7 +88,8 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
 
 // The first node (in node order) whose modeled memory exceeds the platform's node memory;
 // node -1 when every node fits. Needs the patches' element counts only, not the elements,
-// so it can run before the host allocates them.
+// so it can run before the host allocates them. The rendering phase's records are checked
+// when it starts, from the solution (run_render_phase); here only the rest of its peak.
 OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig& config,
                                      const PlatformConfig& platform, const CostModel& costs);
 

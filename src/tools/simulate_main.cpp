@@ -91,8 +91,9 @@ int simulate(int argc, char** argv) {
   if (!options.image_file.empty() && result.status == "ok")  // the simulated phase's picture if it ran
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
-                                 scene, scene.camera, result.element_radiosity,
-                                 options.image_width, options.image_height)));
+                                 scene, scene.camera, result.solution,
+                                 options.image_width, options.image_height,
+                                 options.config.render.outline_elements)));
   outputs.commit();
   if (result.status == "out_of_memory") {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",

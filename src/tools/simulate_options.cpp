@@ -165,6 +165,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "how the elements reach every node in the rendering phase: ring or hypercube")
       ->capture_default_str()
       ->check(CLI::IsMember({"ring", "hypercube"}));
+  app.add_flag("--outline-elements", config.render.outline_elements,
+               "draw each element's edges as thin dark lines in the picture (to see the mesh)");
   app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
   std::vector<std::string> cfg, log;
   app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "
