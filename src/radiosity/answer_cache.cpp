@@ -85,14 +85,17 @@ AnswerCache::Block* AnswerCache::find_block(std::uint64_t hash, const Vec3* poin
   return nullptr;
 }
 
-AnswerCache::Target* AnswerCache::find_target(std::uint64_t hash, const Shooter& shooter) const {
-  auto [begin, end] = targets_.equal_range(hash);
-  for (auto it = begin; it != end; ++it) {
-    Target& t = *it->second;
-    if (t.patch == shooter.patch && t.part_count == shooter.part_count &&
-        same_bits(t.targets.data(), shooter.targets.data(), std::size_t(shooter.part_count)))
-      return &t;
-  }
+bool AnswerCache::Target::is(const Shooter& shooter) const {
+  return patch == shooter.patch && part_count == shooter.part_count &&
+         same_bits(targets.data(), shooter.targets.data(), std::size_t(part_count));
+}
+
+AnswerCache::Target* AnswerCache::find_target(const Shooter& shooter) const {
+  // Every block of a shot has the same shooter: the last one found is compared first.
+  if (last_target_ && last_target_->is(shooter)) return last_target_;
+  auto [begin, end] = targets_.equal_range(hash_shooter(shooter));
+  for (auto it = begin; it != end; ++it)
+    if (it->second->is(shooter)) return last_target_ = it->second.get();
   return nullptr;
 }
 
@@ -103,7 +106,7 @@ bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* po
   const std::lock_guard<std::mutex> lock(mutex_);
   const Block* block = find_block(hash_points(points, receiver_patches, count), points,
                                   receiver_patches, count);
-  const Target* target = block ? find_target(hash_shooter(shooter), shooter) : nullptr;
+  const Target* target = block ? find_target(shooter) : nullptr;
   const auto it = target ? index_.find(Key{set, target, block}) : index_.end();
   if (it == index_.end()) {
     ++misses_;
@@ -145,14 +148,17 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
   if (budget_ == 0 || entry_bytes + block_bytes + target_bytes > budget_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
   const std::uint64_t block_hash = hash_points(points, receiver_patches, count);
-  const std::uint64_t target_hash = hash_shooter(shooter);
   Block* block = find_block(block_hash, points, receiver_patches, count);
-  Target* target = find_target(target_hash, shooter);
+  Target* target = find_target(shooter);
   if (block && target && index_.count(Key{set, target, block})) return;  // held already
-  // Make room first (the keys found above may go with the entries evicted).
-  evict_until(budget_ - entry_bytes - (block ? 0 : block_bytes) - (target ? 0 : target_bytes));
-  block = find_block(block_hash, points, receiver_patches, count);
-  target = find_target(target_hash, shooter);
+  // Make room first; the keys found may go with the entries evicted, and then need room too.
+  for (;;) {
+    const std::size_t needed = entry_bytes + (block ? 0 : block_bytes) + (target ? 0 : target_bytes);
+    if (bytes_ + needed <= budget_) break;
+    evict_until(budget_ - needed);
+    block = find_block(block_hash, points, receiver_patches, count);
+    target = find_target(shooter);
+  }
   if (!block) {
     auto b = std::make_unique<Block>();
     b->hash = block_hash;
@@ -163,6 +169,7 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
     bytes_ += block_bytes;
   }
   if (!target) {
+    const std::uint64_t target_hash = hash_shooter(shooter);
     auto t = std::make_unique<Target>();
     t->hash = target_hash;
     t->patch = shooter.patch;
@@ -195,6 +202,7 @@ void AnswerCache::release(Entry& entry) {
       }
   }
   if (--entry.target->users == 0) {
+    if (last_target_ == entry.target) last_target_ = nullptr;
     auto [begin, end] = targets_.equal_range(entry.target->hash);
     for (auto it = begin; it != end; ++it)
       if (it->second.get() == entry.target) {

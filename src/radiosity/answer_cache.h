@@ -70,6 +70,7 @@ class AnswerCache {
     int patch, part_count;
     std::vector<Vec3> targets;
     int users = 0;
+    bool is(const Shooter& shooter) const;  // the same patch and targets, bit for bit
   };
   // Most answers are "every part visible" or "none": two bits per point say which, and
   // only the other masks are kept (0: none, 1: all parts, 2: the next of `partial`).
@@ -96,7 +97,7 @@ class AnswerCache {
 
   Block* find_block(std::uint64_t hash, const Vec3* points, const int* patches,
                     std::size_t count) const;
-  Target* find_target(std::uint64_t hash, const Shooter& shooter) const;
+  Target* find_target(const Shooter& shooter) const;
   void release(Entry& entry);
   void evict_until(std::size_t bytes);
 
@@ -105,6 +106,7 @@ class AnswerCache {
   std::uint64_t hits_ = 0, misses_ = 0;
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Block>> blocks_;
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Target>> targets_;
+  mutable Target* last_target_ = nullptr;
   std::list<Entry> lru_;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index_;
   std::mutex mutex_;
