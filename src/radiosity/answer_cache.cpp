@@ -52,7 +52,7 @@ bool same_bits(const Vec3* a, const Vec3* b, std::size_t count) {
 }  // namespace
 
 std::size_t AnswerCache::default_budget_bytes() {
-  std::size_t megabytes = 256;
+  std::size_t megabytes = 512;
   if (const char* text = std::getenv("NCUBE_ANSWER_CACHE_MB")) {
     char* end = nullptr;
     const unsigned long long value = std::strtoull(text, &end, 10);
@@ -73,15 +73,28 @@ std::size_t AnswerCache::KeyHash::operator()(const Key& k) const {
                          std::uint64_t(reinterpret_cast<std::uintptr_t>(k.block))));
 }
 
-AnswerCache::Block* AnswerCache::find_block(std::uint64_t hash, const Vec3* points,
-                                            const int* patches, std::size_t count) const {
+bool AnswerCache::Block::is(const Vec3* other_points, const int* other_patches,
+                            std::size_t count) const {
+  return points.size() == count && same_bits(points.data(), other_points, count) &&
+         std::memcmp(patches.data(), other_patches, count * sizeof(int)) == 0;
+}
+
+AnswerCache::Block* AnswerCache::find_block(const Vec3* points, const int* patches,
+                                            std::size_t count, std::uint64_t& hash) const {
+  // The V shares of a group are asked about the same block one after the other: the
+  // blocks found last are compared first (blocks of other groups differ at their first point).
+  for (Block* b : recent_blocks_)
+    if (b && b->is(points, patches, count)) {
+      hash = b->hash;
+      return b;
+    }
+  hash = hash_points(points, patches, count);
   auto [begin, end] = blocks_.equal_range(hash);
-  for (auto it = begin; it != end; ++it) {
-    Block& b = *it->second;
-    if (b.points.size() == count && same_bits(b.points.data(), points, count) &&
-        std::memcmp(b.patches.data(), patches, count * sizeof(int)) == 0)
-      return &b;
-  }
+  for (auto it = begin; it != end; ++it)
+    if (it->second->is(points, patches, count)) {
+      recent_blocks_[next_recent_++ % recent_blocks_.size()] = it->second.get();
+      return it->second.get();
+    }
   return nullptr;
 }
 
@@ -104,8 +117,8 @@ bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* po
                        WorkCounts& counts) {
   if (budget_ == 0) return false;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const Block* block = find_block(hash_points(points, receiver_patches, count), points,
-                                  receiver_patches, count);
+  std::uint64_t block_hash;
+  const Block* block = find_block(points, receiver_patches, count, block_hash);
   const Target* target = block ? find_target(shooter) : nullptr;
   const auto it = target ? index_.find(Key{set, target, block}) : index_.end();
   if (it == index_.end()) {
@@ -147,8 +160,8 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
       sizeof(Target) + kNodeOverhead + std::size_t(shooter.part_count) * sizeof(Vec3);
   if (budget_ == 0 || entry_bytes + block_bytes + target_bytes > budget_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const std::uint64_t block_hash = hash_points(points, receiver_patches, count);
-  Block* block = find_block(block_hash, points, receiver_patches, count);
+  std::uint64_t block_hash;
+  Block* block = find_block(points, receiver_patches, count, block_hash);
   Target* target = find_target(shooter);
   if (block && target && index_.count(Key{set, target, block})) return;  // held already
   // Make room first; the keys found may go with the entries evicted, and then need room too.
@@ -156,7 +169,7 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
     const std::size_t needed = entry_bytes + (block ? 0 : block_bytes) + (target ? 0 : target_bytes);
     if (bytes_ + needed <= budget_) break;
     evict_until(budget_ - needed);
-    block = find_block(block_hash, points, receiver_patches, count);
+    block = find_block(points, receiver_patches, count, block_hash);
     target = find_target(shooter);
   }
   if (!block) {
@@ -166,6 +179,7 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
     b->patches.assign(receiver_patches, receiver_patches + count);
     block = b.get();
     blocks_.emplace(block_hash, std::move(b));
+    recent_blocks_[next_recent_++ % recent_blocks_.size()] = block;
     bytes_ += block_bytes;
   }
   if (!target) {
@@ -193,6 +207,8 @@ void AnswerCache::release(Entry& entry) {
   bytes_ -= entry.bytes;
   if (--entry.block->users == 0) {
     auto [begin, end] = blocks_.equal_range(entry.block->hash);
+    for (Block*& recent : recent_blocks_)
+      if (recent == entry.block) recent = nullptr;
     for (auto it = begin; it != end; ++it)
       if (it->second.get() == entry.block) {
         bytes_ -= sizeof(Block) + kNodeOverhead +

@@ -10,6 +10,7 @@
 // loop, whether computed now or remembered.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <list>
@@ -25,7 +26,7 @@ namespace ncube {
 
 class AnswerCache {
  public:
-  // Choice: 256 MiB by default, enough for every answer of the scene2 run at R=8, V=7
+  // Choice: 512 MiB by default, twice what every answer of the scene2 run at R=8, V=7 takes
   // (docs/performance.md); NCUBE_ANSWER_CACHE_MB overrides it (0 turns the cache off).
   static std::size_t default_budget_bytes();
 
@@ -64,6 +65,7 @@ class AnswerCache {
     std::vector<Vec3> points;
     std::vector<int> patches;
     int users = 0;
+    bool is(const Vec3* other_points, const int* other_patches, std::size_t count) const;
   };
   struct Target {
     std::uint64_t hash;
@@ -95,8 +97,9 @@ class AnswerCache {
     std::size_t operator()(const Key& k) const;
   };
 
-  Block* find_block(std::uint64_t hash, const Vec3* points, const int* patches,
-                    std::size_t count) const;
+  // The block with these points and patches (bit for bit), or null; `hash`: its hash.
+  Block* find_block(const Vec3* points, const int* patches, std::size_t count,
+                    std::uint64_t& hash) const;
   Target* find_target(const Shooter& shooter) const;
   void release(Entry& entry);
   void evict_until(std::size_t bytes);
@@ -107,6 +110,8 @@ class AnswerCache {
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Block>> blocks_;
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Target>> targets_;
   mutable Target* last_target_ = nullptr;
+  mutable std::array<Block*, 16> recent_blocks_{};
+  mutable std::size_t next_recent_ = 0;
   std::list<Entry> lru_;  // most recently used first
   std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index_;
   std::mutex mutex_;
