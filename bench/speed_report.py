@@ -3,16 +3,21 @@
 figure, not a test; docs/performance.md shows its output).
 
   bench/speed_report.py [--old OLD_BUILD_DIR] [--repeat N] [--scale] [--converge]
+  bench/speed_report.py --converge-only [--old OLD_BUILD_DIR] [--repeat N] [--threads N]
 
 OLD_BUILD_DIR holds an older build's simulate (e.g. main at c39b79f built in a worktree:
 git worktree add /tmp/speed-old c39b79f && cmake -S /tmp/speed-old -B /tmp/speed-old/build
 && cmake --build /tmp/speed-old/build). Host seconds per iteration are the difference of
 runs with more and fewer iterations (set-up not counted), the minimum over --repeat runs
 (the host may be shared). Writes bench/measured/*.json; --scale also docs/performance_scale.png.
+The runs to convergence (--converge, --converge-only) run old and new in turn, report wall
+seconds and peak resident memory, and check that both result files agree byte for byte apart
+from host seconds, the code version and the paths of the input files.
 """
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -23,17 +28,51 @@ NEW = os.path.join(ROOT, "build", "simulate")
 RESULTS = os.path.join(ROOT, "bench", "measured")
 
 
-def run(binary, args, env=None):
-    """Runs simulate; returns (result file, wall seconds)."""
+def run(binary, args, env=None, keep_text=False):
+    """Runs simulate; returns (result file, wall seconds), with keep_text also the file's text
+    and the run's peak resident memory in MiB."""
     with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as f:
         out = f.name
     start = time.perf_counter()
-    subprocess.run([binary] + args + ["--json", out, "--quiet"], check=True, env=env)
+    # argv[0] is the same for every binary: the result file records the command line.
+    process = subprocess.Popen(["simulate"] + args + ["--json", out, "--quiet"],
+                               executable=binary, env=env)
+    _, status, usage = os.wait4(process.pid, 0)
     wall = time.perf_counter() - start
+    if status != 0:
+        raise RuntimeError(f"{binary} {' '.join(args)} failed ({status})")
     with open(out) as f:
-        result = json.load(f)
+        text = f.read()
     os.unlink(out)
-    return result, wall
+    if keep_text:
+        return json.loads(text), wall, text, usage.ru_maxrss / 1024
+    return json.loads(text), wall
+
+
+def without_host_fields(text):
+    """The result file's text without what may differ between two builds and runs: host
+    seconds, the code version, the command line (temporary output path) and the input files'
+    paths (each build's own source tree). Everything else is compared byte for byte."""
+    text = re.sub(r'"command_line": \[.*?\]', "", text, flags=re.S)
+    return re.sub(r'"(host_seconds|code_version|file)": [^\n]*', "", text)
+
+
+def convergence(old, threads):
+    """scene2 at R=8, V=7 with the calibrated defaults to convergence, old and new in turn;
+    wall seconds, peak memory, and whether the result files agree apart from host fields."""
+    scene2 = ["scene2.json", "--R", "8", "--V", "7"] + ([] if threads is None else ["--threads", str(threads)])
+    rows, texts = {}, {}
+    for label, binary in (("old", old), ("new", NEW)):
+        if binary is None:
+            continue
+        result, wall, text, rss = run(binary, scene2, keep_text=True)
+        texts[label] = without_host_fields(text)
+        rows[label] = {"iterations": result["iterations"], "converged": result["converged"],
+                       "wall_seconds": wall, "host_seconds": result["host_seconds"],
+                       "peak_resident_MiB": rss}
+    if len(texts) == 2:
+        rows["identical_apart_from_host_fields"] = texts["old"] == texts["new"]
+    return rows
 
 
 def per_iteration(binary, args, few, many, repeat, threads=None):
@@ -81,10 +120,7 @@ def comparison(old, repeat, converge):
             report[label]["scene3_R1_rays_per_second_1_thread"] = rays / t3_one
     report["embree_alone_rtcOccluded16_rays_per_second_1_thread"] = embree_alone()
     if converge:
-        result, wall = run(NEW, scene2)
-        report["new"]["scene2_R8_V7_to_convergence"] = {
-            "iterations": result["iterations"], "converged": result["converged"],
-            "wall_seconds": wall, "host_seconds": result["host_seconds"]}
+        report["scene2_R8_V7_to_convergence"] = convergence(old, None)
     report["load_average_at_end"] = load_average()
     return report
 
@@ -153,9 +189,23 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--scale", action="store_true")
     parser.add_argument("--converge", action="store_true")
+    parser.add_argument("--converge-only", action="store_true",
+                        help="only the run to convergence (old and new in turn), to "
+                             "bench/measured/convergence.json")
+    parser.add_argument("--threads", type=int, help="--threads for --converge-only (default: all cores)")
     args = parser.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     old = os.path.join(args.old, "simulate") if args.old else None
+    if args.converge_only:
+        report = {"load_average_at_start": load_average(), "cores": os.cpu_count(),
+                  "threads": args.threads or "all cores"}
+        for r in range(args.repeat):
+            report[f"run_{r + 1}"] = convergence(old, args.threads)
+            print(json.dumps(report[f"run_{r + 1}"]), flush=True)
+        report["load_average_at_end"] = load_average()
+        json.dump(report, open(os.path.join(RESULTS, "convergence.json"), "w"), indent=1)
+        print(json.dumps(report, indent=1))
+        return 0
     report = comparison(old, args.repeat, args.converge)
     json.dump(report, open(os.path.join(RESULTS, "comparison.json"), "w"), indent=1)
     print(json.dumps(report, indent=1))

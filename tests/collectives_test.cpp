@@ -77,8 +77,9 @@ TEST(MessageCost, ShooterSelectionOver64NodesTakesTheBinomialTreeTime) {
       runtime.start();
       ShooterSelection selection(runtime, placement, rank);
       ShooterChoice mine{rank, double((rank * 37) % 64), Rgb(1.0)};  // rank 19 has power 63 (19 x 37 = 11 x 64 + 63)
-      const ShooterChoice best = selection.reduce_to_master(mine);
-      decided[rank] = selection.broadcast_from_master(best).patch;
+      std::vector<ProcessorLoad> loads;
+      const ShooterChoice best = selection.reduce_to_master(mine, loads);
+      decided[rank] = selection.broadcast_from_master(Decision{best, {}, false}).shooter.patch;
       done[rank] = simgrid::s4u::Engine::get_clock();
       runtime.finish();
     });

@@ -65,8 +65,8 @@ TEST(FrameShare, ArrivalOrderDoesNotMatter) {
   std::vector<Rgb> radiosity;
   for (std::size_t k = 0; k < scene.elements.size(); ++k)
     radiosity.push_back(k < 6 ? Rgb(1.0, 0.1 * k, 0.0) : Rgb(0.0, 0.1 * k, 1.0));
-  std::vector<RenderElement> elements = render_elements(scene, radiosity, {0, 1});
-  const Image sequential = render_solution(scene, straight_camera(), radiosity, 40, 30);
+  std::vector<RenderElement> elements = render_elements(scene, uniform_solution(scene, radiosity), {0, 1});
+  const Image sequential = render_solution(scene, straight_camera(), uniform_solution(scene, radiosity), 40, 30);
   std::reverse(elements.begin(), elements.end());
   FrameShare frame(scene, straight_camera(), 40, 30, RowShare::whole(30));
   RenderCounts counts;
@@ -86,7 +86,7 @@ TEST(FrameShare, DepthTieGoesToTheLowerElement) {
   scene.build_elements();
   const std::vector<Rgb> radiosity = {Rgb(1.0, 0.0, 0.0), Rgb(0.0, 0.0, 1.0)};
   for (bool reversed : {false, true}) {
-    std::vector<RenderElement> elements = render_elements(scene, radiosity, {0, 1});
+    std::vector<RenderElement> elements = render_elements(scene, uniform_solution(scene, radiosity), {0, 1});
     if (reversed) std::reverse(elements.begin(), elements.end());
     FrameShare frame(scene, straight_camera(), 40, 30, RowShare::whole(30));
     RenderCounts counts;
@@ -109,7 +109,7 @@ TEST(FrameShare, CountsOfOneSquare) {
   scene.build_elements();
   FrameShare frame(scene, straight_camera(), 40, 30, RowShare::whole(30));
   RenderCounts counts;
-  frame.draw(render_elements(scene, {Rgb(1.0)}, {0}).front(), counts);
+  frame.draw(render_elements(scene, uniform_solution(scene, {Rgb(1.0)}), {0}).front(), counts);
   EXPECT_EQ(counts.vertices, 4u);
   EXPECT_EQ(counts.clip_vertices, 0u);
   EXPECT_EQ(counts.projected_vertices, 4u);
@@ -123,7 +123,7 @@ TEST(FrameShare, CountsOfOneSquare) {
   // 9 sample rows of 18 samples per triangle.
   FrameShare band(scene, straight_camera(), 40, 30, RowShare{30, 6, 2, RowPartition::kBlocks});
   RenderCounts part;
-  band.draw(render_elements(scene, {Rgb(1.0)}, {0}).front(), part);
+  band.draw(render_elements(scene, uniform_solution(scene, {Rgb(1.0)}), {0}).front(), part);
   EXPECT_EQ(part.samples_tested, 2u * 9u * 18u);
   EXPECT_EQ(part.triangles, 2u);
 }
@@ -138,7 +138,7 @@ TEST(FrameShare, ClippedVerticesAreCounted) {
   scene.build_elements();
   FrameShare frame(scene, straight_camera(), 40, 30, RowShare::whole(30));
   RenderCounts counts;
-  frame.draw(render_elements(scene, {Rgb(1.0)}, {0}).front(), counts);
+  frame.draw(render_elements(scene, uniform_solution(scene, {Rgb(1.0)}), {0}).front(), counts);
   EXPECT_EQ(counts.vertices, 4u);
   EXPECT_EQ(counts.clip_vertices, 2u);
   EXPECT_EQ(counts.projected_vertices, 4u);  // 2 in front + 2 on the near plane
@@ -152,7 +152,7 @@ TEST(FrameShare, PartsCountTheirOwnRowsOnly) {
   scene.patches = {square(Vec3(0, 0, -5), 1.0, 3, 2)};
   scene.build_elements();
   const std::vector<Rgb> radiosity(scene.elements.size(), Rgb(1.0));
-  const std::vector<RenderElement> elements = render_elements(scene, radiosity, {0});
+  const std::vector<RenderElement> elements = render_elements(scene, uniform_solution(scene, radiosity), {0});
   RenderCounts whole;
   FrameShare all(scene, straight_camera(), 40, 30, RowShare::whole(30));
   for (const RenderElement& e : elements) all.draw(e, whole);

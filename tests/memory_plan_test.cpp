@@ -12,8 +12,16 @@ namespace {
 
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
 
+ProgramOptions program_options(const ProgressiveOptions& algorithm, int block_size, bool pipelined) {
+  ProgramOptions options;
+  options.options = algorithm;
+  options.block_size = block_size;
+  options.pipelined = pipelined;
+  return options;
+}
+
 std::vector<NodeMemory> plan(const Scene& scene, int R, int V, int block_size, bool pipelined) {
-  const ProgramSetup setup{scene, Placement{R, V}, {ProgressiveOptions{}, block_size, pipelined}, 1.0};
+  const ProgramSetup setup{scene, Placement{R, V}, program_options({}, block_size, pipelined), 1.0};
   return plan_memory(setup, partition_patches_by_elements(scene, R),
                      load_cost_model(repo("platforms/cost_model.json")));
 }
@@ -74,9 +82,9 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
   octree.visibility = VisibilityMethod::kOctree;
   for (const int V : {0, 2}) {
     const auto partition = partition_patches_by_elements(scene, 2);
-    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, {ProgressiveOptions{}, 3, false}, 1.0},
+    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options({}, 3, false), 1.0},
                                    partition, c);
-    const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, {octree, 3, false}, 1.0}, partition, c);
+    const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options(octree, 3, false), 1.0}, partition, c);
     ASSERT_EQ(brute.size(), with.size());
     for (std::size_t n = 0; n < with.size(); ++n) {
       const double expected = V == 0 ? 64 + 4 * 4 : (with[n].role == NodeRole::kVisibility ? 64 + 2 * 4 : 0);

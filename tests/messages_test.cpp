@@ -2,6 +2,8 @@
 // from the record sizes of platforms/cost_model.json.
 #include "nodes/messages.h"
 
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 namespace ncube {
@@ -30,6 +32,14 @@ TEST(Messages, EachKindHasItsHandCountedSize) {
   EXPECT_EQ(payload_bytes(of(MessageKind::kCandidate), c), 88);
   EXPECT_EQ(payload_bytes(of(MessageKind::kShooter), c), 88);
   EXPECT_EQ(payload_bytes(of(MessageKind::kStop), c), 88);
+  // Sections 4.1, 4.2: a candidate carrying 3 loads of 5 ints: 88 + 3 x 20 = 148; a shooter
+  // carrying 2 balancing orders of 4 ints: 88 + 2 x 16 = 120.
+  Message candidate = of(MessageKind::kCandidate);
+  candidate.loads.resize(3);
+  EXPECT_EQ(payload_bytes(candidate, c), 148);
+  Message shooter = of(MessageKind::kShooter);
+  shooter.transfers.resize(2);
+  EXPECT_EQ(payload_bytes(shooter, c), 120);
   // A block of 37 points of 3 floats and a patch index: 37 x 16 = 592 bytes.
   Message points = of(MessageKind::kPoints);
   points.points.resize(37);
@@ -42,11 +52,29 @@ TEST(Messages, EachKindHasItsHandCountedSize) {
   EXPECT_EQ(payload_bytes(answers, c), 296);
   answers.mask_parts = 16;
   EXPECT_EQ(payload_bytes(answers, c), 74);
-  // Two shares of 3 and 4 render records of 104 bytes: 7 x 104 = 728.
+  // Load balancing (4.2): two patches of 6 and 10 element records, each with its radiosity
+  // data (48) and 184 bytes per record: 48 + 6 x 184 + 48 + 10 x 184 = 3040; with their
+  // geometry (68 each, V > 0) 3176.
+  Message patches = of(MessageKind::kPatches);
+  patches.patches.resize(2);
+  patches.patch_records = {6, 10};
+  EXPECT_EQ(payload_bytes(patches, c), 3040);
+  patches.patch_geometry = true;
+  EXPECT_EQ(payload_bytes(patches, c), 3176);
+  patches.patch_records.pop_back();
+  EXPECT_THROW(payload_bytes(patches, c), std::logic_error);
+  // Two shares of 3 and 4 render records of 104 bytes: 7 x 104 = 728; one of the records
+  // with 2 T-vertices on its boundary (4 corners and 2 more points) adds 2 x 24: 776.
+  RenderElement quad;
+  quad.boundary.resize(4);
+  std::vector<RenderElement> with_t_vertices(4, quad);
   Message elements = of(MessageKind::kElements);
-  elements.shares = {std::make_shared<const std::vector<RenderElement>>(3),
-                     std::make_shared<const std::vector<RenderElement>>(4)};
+  elements.shares = {std::make_shared<const std::vector<RenderElement>>(3, quad),
+                     std::make_shared<const std::vector<RenderElement>>(with_t_vertices)};
   EXPECT_EQ(payload_bytes(elements, c), 728);
+  with_t_vertices[1].boundary.resize(6);
+  elements.shares[1] = std::make_shared<const std::vector<RenderElement>>(with_t_vertices);
+  EXPECT_EQ(payload_bytes(elements, c), 776);
   // A credit is its header only.
   EXPECT_EQ(payload_bytes(of(MessageKind::kCredit), c), 0);
   // Exposure: 2 x (256 x 4 + 8) = 2064 up, 2 x (8 + 4 + 8) = 40 down.

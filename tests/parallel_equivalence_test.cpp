@@ -18,10 +18,12 @@ namespace {
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
 
 void expect_same_as_sequential(const std::string& scene_name, int R, int V, int iterations,
-                               bool pipelined = false, int block_size = 100) {
+                               bool pipelined = false, int block_size = 100,
+                               bool subdivide = false, bool balance = false) {
   const Scene scene = load_scene(repo("scenes/" + scene_name));
   ProgressiveOptions options;
   options.max_iterations = iterations;
+  options.subdivision.enabled = subdivide;
 
   std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
@@ -35,6 +37,8 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
   config.options = options;
   config.pipelined = pipelined;
   config.block_size = block_size;
+  config.balancing.enabled = balance;
+  config.memory_cap = !subdivide;  // the sequential solver has no memory limit
   const SimulationResult parallel =
       run_simulation(scene, config, load_platform_config(repo("platforms/ncube2.json")),
                      load_cost_model(repo("platforms/cost_model.json")));
@@ -47,6 +51,22 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(parallel.patch_radiosity[p][c], expected[c], 1e-12 * (1.0 + expected[c]))
           << "patch " << p;
+  }
+  // Section 4.1: the same elements, cut the same way, with the same radiosities.
+  for (int p = 0; p < int(scene.patches.size()); ++p) {
+    const StoredPatch& expected = reference.store().patches()[std::size_t(p)];
+    const PatchSolution& got = parallel.solution[std::size_t(p)];
+    ASSERT_EQ(got.cells.size(), expected.elements.size()) << "patch " << p;
+    for (std::size_t k = 0; k < got.cells.size(); ++k) {
+      ASSERT_EQ(got.cells[k], expected.elements[k].cell);
+      ASSERT_EQ(got.radiosity[k], expected.elements[k].radiosity);
+    }
+  }
+  if (subdivide) {
+    EXPECT_GT(sequential.elements.back(), scene.element_total()) << "nothing was cut";
+  }
+  if (balance) {
+    EXPECT_GT(parallel.patches_moved, 0) << "balancing moved nothing: the test shows nothing";
   }
 }
 
@@ -62,6 +82,18 @@ TEST(ParallelEquivalence, Scene0R52V0OnePatchEach) {
   expect_same_as_sequential("scene0.json", 52, 0, 25);
 }
 TEST(ParallelEquivalence, Scene1R4V3) { expect_same_as_sequential("scene1.json", 4, 3, 4); }
+
+// Sections 4.1 and 4.2: with adaptive subdivision the radiosity processors cut their
+// elements exactly as the sequential solver does, and moving patches changes nothing.
+TEST(ParallelEquivalence, SubdivisionCornellBoxR4V3) {
+  expect_same_as_sequential("cornell-box.json", 4, 3, 15, false, 100, true);
+}
+TEST(ParallelEquivalence, SubdivisionScene1R8V0Balanced) {
+  expect_same_as_sequential("scene1.json", 8, 0, 12, false, 100, true, true);
+}
+TEST(ParallelEquivalence, SubdivisionScene1R4V1PipelinedBalanced) {
+  expect_same_as_sequential("scene1.json", 4, 1, 6, true, 37, true, true);
+}
 
 }  // namespace
 }  // namespace ncube

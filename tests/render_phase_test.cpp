@@ -8,9 +8,12 @@
 #include <tuple>
 
 #include "hand_counted_scene.h"
+#include "simulated_machine.h"
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "render/rasterizer.h"
+#include "render/render_records.h"
+#include "simulation/render_phase.h"
 #include "scene/scene_loader.h"
 #include "simulation/simulation.h"
 #include "util/input_error.h"
@@ -60,7 +63,7 @@ TEST_P(RenderPhasePicture, IsTheSequentialRenderPixelForPixel) {
   ASSERT_EQ(r.status, RunStatus::kOk) << r.failure;
   ASSERT_TRUE(r.render.ran);
   ASSERT_EQ(r.render.nodes.size(), std::size_t(R * (V + 1)));
-  const Image sequential = render_solution(scene, scene.camera, r.element_radiosity, 61, 47);
+  const Image sequential = render_solution(scene, scene.camera, uniform_solution(scene, r.element_radiosity), 61, 47);
   ASSERT_EQ(r.render.picture.width, 61);
   ASSERT_EQ(r.render.picture.height, 47);
   int lit = 0;
@@ -208,19 +211,21 @@ TEST(RenderPhaseMessages, HypercubeOfFourNodes) {
 TEST(RenderPhaseMemory, RingHoldsTwoSharesHypercubeAll) {
   const Scene scene = hand_counted_scene();
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  const std::vector<PatchSolution> solution =
+      uniform_solution(scene, std::vector<Rgb>(std::size_t(scene.element_total()), Rgb(0.0)));
   RenderOptions options{true, RowPartition::kBlocks, RenderDistribution::kRing, 16, 16};
   const double base = 786432 + 11520;
-  const std::vector<double> ring = render_memory(scene, options, 4, 0, costs);
+  const std::vector<double> ring = render_memory(scene, options, 4, 0, solution, costs);
   ASSERT_EQ(ring.size(), 4u);
   EXPECT_DOUBLE_EQ(ring[0], base + 7 * 104);
   EXPECT_DOUBLE_EQ(ring[1], base + 8 * 104);
   options.distribution = RenderDistribution::kHypercube;
-  for (double bytes : render_memory(scene, options, 4, 0, costs)) EXPECT_DOUBLE_EQ(bytes, base + 11 * 104);
+  for (double bytes : render_memory(scene, options, 4, 0, solution, costs)) EXPECT_DOUBLE_EQ(bytes, base + 11 * 104);
   // 800 x 600 in 4 parts: resolving, a node holds its frame share (150 rows x 800 x 9 x 20
   // bytes = 21.6 MB) and its finished rows (150 x 800 x 3 = 360,000 bytes), more than the
   // frame share and the 11 records while distributing.
   options = {true, RowPartition::kScanlines, RenderDistribution::kHypercube, 800, 600};
-  EXPECT_DOUBLE_EQ(render_memory(scene, options, 4, 0, costs)[1], 786432 + 21600000 + 360000);
+  EXPECT_DOUBLE_EQ(render_memory(scene, options, 4, 0, solution, costs)[1], 786432 + 21600000 + 360000);
 }
 
 TEST(RenderPhaseMemory, FrameBeyondTheNodeIsOutOfMemory) {
@@ -237,6 +242,157 @@ TEST(RenderPhaseMemory, FrameBeyondTheNodeIsOutOfMemory) {
   config.render.enabled = false;
   EXPECT_EQ(first_node_out_of_memory(scene, config, load_platform_config(repo("platforms/ncube2.json")),
                                      load_cost_model(repo("platforms/cost_model.json"))).node, -1);
+}
+
+// ------------------------------------------------ the adaptive mesh (section 4.1)
+
+// Replaces element k of patch p's solution by its four children, with radiosities `b` + 0.1 c
+// for child c.
+void subdivide(std::vector<PatchSolution>& solution, int p, std::size_t k, const Rgb& b) {
+  PatchSolution& s = solution[std::size_t(p)];
+  const std::array<ElementCell, 4> children = s.cells[k].children();
+  s.cells.erase(s.cells.begin() + long(k));
+  s.radiosity.erase(s.radiosity.begin() + long(k));
+  for (int c = 3; c >= 0; --c) {
+    s.cells.insert(s.cells.begin() + long(k), children[std::size_t(c)]);
+    s.radiosity.insert(s.radiosity.begin() + long(k), b + Rgb(0.1 * c));
+  }
+}
+
+// The hand-counted scene's wall (patch 3, 1 x 2 elements) with its first element cut in four:
+// 5 records, and the wall's second element carries the children's shared corner on its edge
+// (1 T-vertex). A record is 104 bytes, a T-vertex 24 more (platforms/cost_model.json).
+std::vector<PatchSolution> hand_counted_with_a_cut_wall(const Scene& scene) {
+  std::vector<PatchSolution> solution =
+      uniform_solution(scene, std::vector<Rgb>(std::size_t(scene.element_total()), Rgb(0.3)));
+  subdivide(solution, 3, 0, Rgb(0.5));
+  return solution;
+}
+constexpr double kTVertex = 24;
+
+// Memory with the cut wall, R = 4, V = 0 as above: node 2 (the wall's rank) starts with 5
+// records and 1 T-vertex, 544 bytes. Ring 0 -> 1 -> 3 -> 2 -> 0: node 0 holds its own 5 with
+// node 2's arriving, node 1 node 0's 5 with node 2's passing on (both 10 records and the
+// T-vertex); hypercube: all 14 records and the T-vertex.
+TEST(RenderPhaseMemory, TVerticesAddTheirBytes) {
+  const Scene scene = hand_counted_scene();
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  const std::vector<PatchSolution> solution = hand_counted_with_a_cut_wall(scene);
+  RenderOptions options{true, RowPartition::kBlocks, RenderDistribution::kRing, 16, 16};
+  const double base = 786432 + 11520;
+  const std::vector<double> ring = render_memory(scene, options, 4, 0, solution, costs);
+  EXPECT_DOUBLE_EQ(ring[0], base + 10 * kRecord + kTVertex);
+  EXPECT_DOUBLE_EQ(ring[1], base + 10 * kRecord + kTVertex);
+  options.distribution = RenderDistribution::kHypercube;
+  for (double bytes : render_memory(scene, options, 4, 0, solution, costs))
+    EXPECT_DOUBLE_EQ(bytes, base + 14 * kRecord + kTVertex);
+}
+
+// The hypercube of four nodes above (R = 2, V = 1) with the cut wall: node 2's share (table
+// and wall) is now 8 records and the T-vertex.
+TEST(RenderPhaseMessages, TVerticesAreSent) {
+  SimulatedMachine machine;
+  const Scene scene = hand_counted_scene();
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  const RenderOptions options{true, RowPartition::kScanlines, RenderDistribution::kHypercube, 16, 16};
+  const RenderResult r = run_render_phase(scene, options, 2, 1, hand_counted_with_a_cut_wall(scene),
+                                          machine.hosts, machine.platform, costs, true, nullptr);
+  ASSERT_TRUE(r.ran) << r.failure;
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  const double records[4][2] = {{6, 6}, {0, 6}, {8, 8}, {0, 8}};
+  const double t_vertices[4][2] = {{0, 0}, {0, 0}, {1, 1}, {0, 1}};
+  const double exposure[4] = {16 * kSelection, 8 * kHistogram, 8 * kHistogram + 8 * kSelection,
+                              8 * kHistogram};
+  for (int node = 0; node < 4; ++node) {
+    const double piece = node == 0 ? 0.0 : kPiece;
+    EXPECT_DOUBLE_EQ(r.nodes[std::size_t(node)].stats.bytes_sent,
+                     (records[node][0] + records[node][1]) * kRecord +
+                         (t_vertices[node][0] + t_vertices[node][1]) * kTVertex + 2 * kHeader +
+                         exposure[node] + piece) << node;
+  }
+}
+
+// Out of memory at render time, from the solution's records: a node that fits the
+// level-0 records but not the subdivided ones stops the phase, naming the node.
+TEST(RenderPhaseMemory, RecordsBeyondTheNodeStopThePhase) {
+  SimulatedMachine machine;
+  const Scene scene = hand_counted_scene();
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  const RenderOptions options{true, RowPartition::kBlocks, RenderDistribution::kHypercube, 16, 16};
+  const std::vector<PatchSolution> solution = hand_counted_with_a_cut_wall(scene);
+  PlatformConfig platform = machine.platform;
+  // Room for the level-0 records (11) but not for the cut wall's (14 and a T-vertex).
+  platform.node_memory = 786432 + 11520 + 12 * kRecord;
+  const RenderResult r = run_render_phase(scene, options, 2, 1, solution, machine.hosts, platform,
+                                          costs, true, nullptr);
+  EXPECT_FALSE(r.ran);
+  EXPECT_EQ(r.out_of_memory_node, 0);
+  EXPECT_DOUBLE_EQ(r.out_of_memory_bytes, 786432 + 11520 + 14 * kRecord + kTVertex);
+}
+
+// The picture of the rendering phase with a subdivided solution (T-vertices on many
+// patches) is the sequential render pixel for pixel, for both partitions and distributions.
+TEST(RenderPhaseAdaptiveMesh, ParallelIsTheSequentialPicture) {
+  SimulatedMachine machine;
+  const Scene scene = load_scene(repo("scenes/cornell-box.json"));
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  std::vector<Rgb> radiosity;
+  for (long e = 0; e < scene.element_total(); ++e)
+    radiosity.push_back(Rgb(0.2 + 0.05 * double(e % 7), 0.3, 0.1 + 0.02 * double(e % 11)));
+  std::vector<PatchSolution> solution = uniform_solution(scene, radiosity);
+  for (std::size_t p = 0; p < solution.size(); p += 2) {
+    subdivide(solution, int(p), 0, Rgb(0.6, 0.2, 0.4));
+    subdivide(solution, int(p), 1, Rgb(0.1, 0.5, 0.3));  // a child, next to its siblings
+  }
+  int t_vertices = 0;
+  std::vector<int> all(scene.patches.size());
+  for (std::size_t p = 0; p < all.size(); ++p) all[p] = int(p);
+  for (const RenderElement& e : render_elements(scene, solution, all)) t_vertices += e.t_vertices();
+  ASSERT_GT(t_vertices, 10);
+  const Image sequential = render_solution(scene, scene.camera, solution, 61, 47);
+  for (const RenderOptions& options :
+       {RenderOptions{true, RowPartition::kBlocks, RenderDistribution::kRing, 61, 47},
+        RenderOptions{true, RowPartition::kScanlines, RenderDistribution::kHypercube, 61, 47}}) {
+    const RenderResult r = run_render_phase(scene, options, 4, 1, solution, machine.hosts,
+                                            machine.platform, costs, true, nullptr);
+    ASSERT_TRUE(r.ran && r.failure.empty()) << r.failure;
+    EXPECT_EQ(encode_png(r.picture), encode_png(sequential));
+    for (int y = 0; y < 47; ++y)
+      for (int x = 0; x < 61; ++x)
+        ASSERT_EQ(r.picture.at(x, y), sequential.at(x, y)) << "pixel " << x << ", " << y;
+  }
+}
+
+// Two coplanar, overlapping patches, both subdivided, on different nodes: every sample where
+// they overlap is a depth tie (or nearly), which the drawing key must settle as the
+// sequential scene-order drawing does, whatever order the records arrive in.
+TEST(RenderPhaseAdaptiveMesh, DepthTiesOfSubdividedPatchesResolveAsInSceneOrder) {
+  SimulatedMachine machine;
+  const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
+  Scene scene;
+  for (const Vec3& centre : {Vec3(0, 0, -5), Vec3(0.5, 0.3, -5)})
+    scene.patches.push_back(hand_counted_patch(centre - Vec3(1, 1, 0), Vec3(2, 0, 0), Vec3(0, 2, 0),
+                                               centre.x > 0 ? 0.0 : 1.0, 3, 2));
+  scene.build_elements();
+  scene.camera.eye = Vec3(0.0);
+  scene.camera.look_at = Vec3(0, 0, -1);
+  scene.camera.up = Vec3(0, 1, 0);
+  scene.camera.fov_deg = 90.0;
+  std::vector<Rgb> radiosity;
+  for (long e = 0; e < scene.element_total(); ++e)
+    radiosity.push_back(e < 6 ? Rgb(1.0, 0.1 * double(e), 0.0) : Rgb(0.0, 0.1 * double(e), 1.0));
+  std::vector<PatchSolution> solution = uniform_solution(scene, radiosity);
+  subdivide(solution, 0, 4, Rgb(0.9, 0.2, 0.0));
+  subdivide(solution, 1, 0, Rgb(0.0, 0.2, 0.9));
+  subdivide(solution, 1, 3, Rgb(0.0, 0.7, 0.5));
+  const Image sequential = render_solution(scene, scene.camera, solution, 40, 30);
+  for (RenderDistribution distribution : {RenderDistribution::kRing, RenderDistribution::kHypercube}) {
+    const RenderOptions options{true, RowPartition::kScanlines, distribution, 40, 30};
+    const RenderResult r = run_render_phase(scene, options, 2, 0, solution, machine.hosts,
+                                            machine.platform, costs, true, nullptr);
+    ASSERT_TRUE(r.ran && r.failure.empty()) << r.failure;
+    EXPECT_EQ(r.picture.pixels, sequential.pixels) << render_distribution_name(distribution);
+  }
 }
 
 TEST(RenderPhaseConfiguration, HypercubeNeedsAPowerOfTwo) {

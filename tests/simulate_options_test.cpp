@@ -37,8 +37,9 @@ TEST(SimulateOptions, CountsAreDecimal) {
 }
 
 // The defaults are the configuration's own (one per value): blocks of 100 points (section
-// 3: "blocks of e.g. 100"), not pipelined, an 800 x 600 picture; the options given reach the
-// configuration the node programs are set up from.
+// 3: "blocks of e.g. 100"), not pipelined, memory capped, no subdivision, no balancing, an
+// 800 x 600 picture; the options given reach the configuration the node programs are set up
+// from, and the loads travel with the candidates when subdivision or balancing is on.
 TEST(SimulateOptions, DefaultsAndOptionsReachTheProgramSetup) {
   SimulateOptions options;
   ASSERT_EQ(parse({}, &options), -1);
@@ -47,16 +48,29 @@ TEST(SimulateOptions, DefaultsAndOptionsReachTheProgramSetup) {
   EXPECT_EQ(defaults.block_size, 100);
   EXPECT_FALSE(defaults.pipelined);
   EXPECT_EQ(defaults.options.samples, 64);  // the calibrated setup (docs/reproduce.md)
+  EXPECT_TRUE(defaults.memory_cap);
+  EXPECT_FALSE(defaults.options.subdivision.enabled);  // sections 4.1 and 4.2 off by default
+  EXPECT_FALSE(defaults.balancing.enabled);
+  EXPECT_DOUBLE_EQ(defaults.balancing.threshold, 0.2);
+  EXPECT_FALSE(defaults.loads_change());
   EXPECT_EQ(options.config.render.width, 800);
   EXPECT_EQ(options.config.render.height, 600);
   ASSERT_EQ(parse({"--block-size", "37", "--pipelined", "--samples", "16", "--image-width", "320",
-                   "--image-height", "200"},
+                   "--image-height", "200", "--unlimited-memory", "--balance",
+                   "--balance-threshold", "0.5"},
                   &options),
             -1);
   const ProgramSetup given{scene, Placement{1, 0}, options.config, 1.0};
   EXPECT_EQ(given.block_size, 37);
   EXPECT_TRUE(given.pipelined);
   EXPECT_EQ(given.options.samples, 16);
+  EXPECT_FALSE(given.memory_cap);
+  EXPECT_TRUE(given.balancing.enabled);
+  EXPECT_DOUBLE_EQ(given.balancing.threshold, 0.5);
+  EXPECT_TRUE(given.loads_change());
+  SimulateOptions subdividing;
+  ASSERT_EQ(parse({"--subdivide"}, &subdividing), -1);
+  EXPECT_TRUE(ProgramSetup(scene, Placement{1, 0}, subdividing.config, 1.0).loads_change());
   EXPECT_EQ(options.config.render.width, 320);
   EXPECT_EQ(options.config.render.height, 200);
 }

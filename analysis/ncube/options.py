@@ -51,6 +51,17 @@ OPTIONS = {
                          "visibility points per message"),
     "pipelined": Option("--pipelined", bool, False, "pipelined"),
     "unlimited_memory": Option("--unlimited-memory", bool, False, "memory_cap"),
+    # Adaptive subdivision and load balancing (sections 4.1, 4.2).
+    "subdivide": Option("--subdivide", bool, False, "subdivide"),
+    "subdivide_contrast": Option("--subdivide-contrast", float, 0.5, "subdivide_contrast",
+                                 _fraction, "cut above this corner contrast"),
+    "subdivide_max_level": Option("--subdivide-max-level", int, 3, "subdivide_max_level",
+                                  _at_least(0), "deepest element level"),
+    "subdivide_min_area": Option("--subdivide-min-area", float, 0.0, "subdivide_min_area", None,
+                                 "smallest element area"),
+    "balance": Option("--balance", bool, False, "balance"),
+    "balance_threshold": Option("--balance-threshold", float, 0.2, "balance_threshold", None,
+                                "significantly more than the mean: (1 + this) x"),
     # The rendering phase (section 2.3).
     "render_parallel": Option("--render-parallel", str, "off", "render_parallel",
                               _one_of("off", "blocks", "scanlines"), "off, blocks or scanlines"),
@@ -61,6 +72,8 @@ OPTIONS = {
                           "picture width (the rendering phase)"),
     "image_height": Option("--image-height", int, 600, "image_height", _at_least(16),
                            "picture height (the rendering phase)"),
+    "outline_elements": Option("--outline-elements", bool, False, "outline_elements", None,
+                               "draw the element edges in the picture"),
 }
 # Not options of a cell's configuration but of how it is run or what it writes.
 FILE_OPTIONS = ("platform", "cost_model")

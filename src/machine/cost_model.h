@@ -24,7 +24,10 @@ namespace ncube {
   X(octree_cell_bytes, 1, 1e9, "one octree cell: bounds, children, patch list")                 \
   X(octree_reference_bytes, 1, 1e9, "one entry of a leaf's patch list")                         \
   X(node_reserve_bytes, 0, 0x1p50, "program, operating system and stack on every node")         \
+  X(load_record_bytes, 1, 1e9, "a radiosity processor's load, with its candidate (4.1, 4.2)")   \
+  X(transfer_order_bytes, 1, 1e9, "one balancing order, with the shooter (4.2)")                \
   X(render_element_bytes, 1, 1e9, "one element as the renderer sends and holds it")             \
+  X(render_vertex_bytes, 1, 1e9, "one more boundary point (T-vertex) of such an element")       \
   X(frame_sample_bytes, 1, 1e9, "one sample of the frame and z-buffer")                         \
   X(pixel_bytes, 1, 1e9, "one finished pixel, as collected at node 0")                          \
   X(exposure_histogram_bytes, 1, 1e9, "a round's luminance histograms and maxima")              \

@@ -1,5 +1,6 @@
 #include "nodes/memory_plan.h"
 
+#include "nodes/messages.h"
 #include "radiosity/octree.h"
 
 namespace ncube {
@@ -16,7 +17,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   const Placement& p = setup.placement;
   const int V = p.visibility_processors;
   const double patches = double(setup.scene.patches.size());
-  const double mask_bytes = (setup.options.samples + 7) / 8;
+  const double mask_bytes = part_mask_bytes(setup.options.samples);
   const double block = setup.block_size;
   const double in_flight = setup.pipelined ? 2.0 : 1.0;
   // Two shooter records: the one being shot and the one being chosen.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "machine/cost_model.h"
+#include "nodes/load_balancing.h"
 #include "radiosity/radiosity_engine.h"
 #include "render/frame_share.h"
 
@@ -16,18 +17,21 @@ namespace ncube {
 // Each kind with its modeled payload (payload_bytes; the sizes are cost_model.json's).
 enum class MessageKind {
   kCandidate,  // a radiosity processor's best shooter candidate, on its way to the master:
-               // one shooter record
+               // one shooter record, and a load record per load carried (4.1, 4.2)
   kShooter,    // the chosen shooter (geometry and unshot radiosity), on its way to all:
-               // one shooter record
-  kStop,       // converged or iteration limit reached: every node ends. Sent where the
-               // shooter would be, as a shooter record with no patch
+               // one shooter record, and a transfer order per balancing order (4.2)
+  kStop,       // converged, iteration limit reached or out of memory: every node ends. Sent
+               // where the shooter would be, as a shooter record with no patch
   kPoints,     // a block of visibility points, radiosity -> visibility processor: a point
                // record per point
   kAnswers,    // one part mask per point of a block, visibility -> radiosity processor:
                // ceil(M / 8) bytes per mask (part_mask_bytes)
+  kPatches,    // patches with their elements, from one radiosity processor to another (4.2):
+               // each patch's bytes as held (patch_record_bytes)
   // The rendering phase (section 2.3):
   kElements,   // render records of one or more nodes' shares, passed on (ring, hypercube):
-               // a render element record per element carried
+               // a render element record per element carried, a render vertex per T-vertex
+               // on its boundary (render_record_bytes)
   kCredit,     // ring: "your last message was taken", so the next may come: the header only
   kHistogram,  // a subtree's luminance histograms, towards node 0 (exposure): one round's
                // histograms
@@ -52,6 +56,12 @@ struct Message {
   MessageKind kind = MessageKind::kStop;
   int from = -1;             // sending node
   ShooterChoice candidate;   // kCandidate, kShooter
+  std::vector<ProcessorLoad> loads;  // kCandidate: the subtree's loads (subdivision or balancing on)
+  std::vector<Transfer> transfers;   // kShooter: the master's balancing orders (4.2)
+  bool out_of_memory = false;        // kStop: a processor cannot make its cuts (4.1, 4.2)
+  std::vector<StoredPatch> patches;  // kPatches
+  std::vector<long> patch_records;   // kPatches: each patch's element records (patch_records)
+  bool patch_geometry = false;       // kPatches: the patches' geometry travels with them (V > 0)
   int block = -1;            // kPoints, kAnswers
   std::vector<Vec3> points;  // kPoints
   std::vector<int> point_patches;  // kPoints: the patch of each point

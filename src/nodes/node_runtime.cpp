@@ -31,6 +31,7 @@ void NodeRuntime::start() { mailbox_of(stats_.node)->set_receiver(simgrid::s4u::
 void NodeRuntime::finish() {
   mailbox_of(stats_.node)->set_receiver(nullptr);
   finished_ = true;
+  stats_.memory_bytes_at_end = memory_;
 }
 
 double NodeRuntime::now() const { return simgrid::s4u::Engine::get_clock(); }

@@ -30,6 +30,7 @@ struct NodeStats {
   double bytes_sent = 0.0;
   long messages_received = 0;
   double peak_memory_bytes = 0.0;
+  double memory_bytes_at_end = 0.0;  // when the program finished (4.1, 4.2: may differ from the start)
   WorkCounts counts;
 };
 
@@ -65,7 +66,15 @@ class NodeRuntime {
   // overhead.
   std::unique_ptr<Message> receive(std::initializer_list<MessageKind> kinds);
 
-  void set_memory(double bytes) { stats_.peak_memory_bytes = bytes; }
+  // The node's modeled bytes in use: set when the program is placed, changed as it runs
+  // (sections 4.1, 4.2: cuts, patches given and received); the peak is reported.
+  void set_memory(double bytes) { memory_ = stats_.peak_memory_bytes = bytes; }
+  void change_memory(double delta) {
+    memory_ += delta;
+    if (memory_ > stats_.peak_memory_bytes) stats_.peak_memory_bytes = memory_;
+  }
+  double memory() const { return memory_; }
+  double node_memory() const { return platform_.node_memory; }
   double now() const;
   const NodeStats& stats() const { return stats_; }
   const CostModel& costs() const { return costs_; }
@@ -80,6 +89,7 @@ class NodeRuntime {
   std::deque<std::unique_ptr<Message>> deferred_;
   RenderCounts render_counts_;
   bool finished_ = false;
+  double memory_ = 0.0;
 };
 
 }  // namespace ncube

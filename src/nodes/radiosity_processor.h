@@ -1,8 +1,11 @@
-// A radiosity processor (paper sections 2.2, 3 and 4): owns a set of patches with their
+// A radiosity processor (paper sections 2.2, 3 and 4): holds a set of patches with their
 // elements. Every iteration it offers its best patch, learns the shooter chosen by the
 // master, and shoots it to its own elements: it finds the visible parts of the shooter from
 // each element, by tracing the rays itself (V = 0) or by asking its visibility processors
-// (V > 0), and adds the light through the form factors of the visible parts.
+// (V > 0), and adds the light through the form factors of the visible parts. With adaptive
+// subdivision (4.1) it then cuts the elements where the light changes too fast and shoots
+// the current shooter to the new ones; with load balancing (4.2) it gives patches to, or
+// takes patches from, other radiosity processors as the master orders.
 #pragma once
 
 #include <vector>
@@ -12,6 +15,12 @@
 #include "nodes/program_setup.h"
 
 namespace ncube {
+
+// At the master: why the run ended out of memory (node -1: it did not).
+struct RunOutOfMemory {
+  int node = -1;
+  double needed_bytes = 0.0;
+};
 
 class RadiosityProcessor {
  public:
@@ -25,15 +34,26 @@ class RadiosityProcessor {
   const std::vector<double>& iteration_ends() const { return iteration_ends_; }
   const std::vector<int>& shooters() const { return shooters_; }
   bool converged() const { return converged_; }
+  const RunOutOfMemory& out_of_memory() const { return out_of_memory_; }
   // At the master: the largest unshot power at the last decision (for progress reports).
   double largest_unshot_power() const { return largest_unshot_power_; }
+  // At the master, per iteration: every radiosity processor's elements at its start.
+  const std::vector<std::vector<long>>& elements_per_iteration() const { return elements_; }
+  // Patches this processor gave away and received (4.2).
+  long patches_sent() const { return patches_sent_; }
+  long patches_received() const { return patches_received_; }
 
  private:
-  ShooterChoice decide(const ShooterChoice& global_best);
-  void tell_visibility_processors(const ShooterChoice& decision);
+  ProcessorLoad load() const;
+  Decision decide(const ShooterChoice& global_best, const std::vector<ProcessorLoad>& loads);
+  void tell_visibility_processors(const Decision& decision);
+  void carry_out(const std::vector<Transfer>& transfers, int shooter);
   void shoot(const Shooter& shooter);
-  void shoot_with_visibility_processors(const Shooter& shooter);
-  void send_block(const std::vector<int>& receivers, int block);
+  void find_visible_parts_and_gather(const Shooter& shooter, const std::vector<ElementRef>& receivers);
+  void gather_with_visibility_processors(const Shooter& shooter,
+                                         const std::vector<ElementRef>& receivers);
+  void send_block(const std::vector<Vec3>& points, const std::vector<int>& patches, int block);
+  bool holds_geometry_of_all_patches() const { return setup_.placement.visibility_processors == 0; }
 
   const ProgramSetup& setup_;
   int rank_;
@@ -44,7 +64,11 @@ class RadiosityProcessor {
   std::vector<double> iteration_ends_;
   std::vector<int> shooters_;
   bool converged_ = false;
+  RunOutOfMemory out_of_memory_;
   double largest_unshot_power_ = 0.0;
+  std::vector<std::vector<long>> elements_;
+  double wanted_bytes_ = 0.0;  // bytes of the cuts the last shot could not make
+  long patches_sent_ = 0, patches_received_ = 0;
 };
 
 }  // namespace ncube

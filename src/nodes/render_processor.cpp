@@ -13,7 +13,7 @@ RenderProcessor::RenderProcessor(const RenderSetup& setup, int node, NodeRuntime
 void RenderProcessor::run() {
   runtime_.start();
   frame_.emplace(setup_.scene, setup_.scene.camera, setup_.options.width, setup_.options.height,
-                 setup_.rows_of(node_));
+                 setup_.rows_of(node_), setup_.options.outline_elements);
   // Every element reaches every node, which draws it into the rows of its part.
   if (setup_.options.distribution == RenderDistribution::kRing)
     distribute_over_ring();

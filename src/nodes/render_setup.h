@@ -26,6 +26,7 @@ struct RenderOptions {
   RowPartition partition = RowPartition::kBlocks;
   RenderDistribution distribution = RenderDistribution::kHypercube;
   int width = 800, height = 600;
+  bool outline_elements = false;  // --outline-elements: the picture shows the element edges
 };
 
 struct RenderSetup {
@@ -47,26 +48,28 @@ int ring_node(int position, int nodes);
 int ring_position(int node, int nodes);
 
 // The start records of every node: radiosity processor r's owned patches (in scene order),
-// nothing on a visibility processor.
+// nothing on a visibility processor. `solution` as for render_elements.
 std::vector<ElementShare> starting_shares(const Scene& scene,
-                                          const std::vector<Rgb>& element_radiosity,
+                                          const std::vector<PatchSolution>& solution,
                                           const std::vector<std::vector<int>>& owned_patches,
                                           int visibility_processors);
 
-// The records each node starts with, counted from the patches' element counts only (the
-// memory check runs before the host builds the elements).
-std::vector<double> starting_record_counts(const Scene& scene,
-                                           const std::vector<std::vector<int>>& owned_patches,
-                                           int visibility_processors);
+// Modeled bytes of render records as sent and held: render_element_bytes for a record with
+// its corners, render_vertex_bytes more for each T-vertex on its boundary.
+double render_record_bytes(const std::vector<RenderElement>& records, const CostModel& costs);
+// The same for each node's starting share.
+std::vector<double> share_bytes(const std::vector<ElementShare>& shares, const CostModel& costs);
 
-// Each node's peak bytes in the rendering phase: the largest of
+// Each node's peak bytes in the rendering phase, from the bytes of each node's starting
+// share: the largest of
 //  - distributing and rasterising: reserve + its frame share (rows x width x 9 samples) +
 //    the records it holds at once (ring: the share it passes on and the one arriving, at
 //    most; hypercube: in the end all of them);
 //  - resolving: reserve + its frame share + its finished rows;
 //  - node 0 collecting: reserve + the whole picture's pixels.
+// With no records (all shares 0 bytes) it is the part that does not depend on the solution.
 std::vector<double> plan_render_memory(const RenderOptions& options, int nodes,
-                                       const std::vector<double>& starting_records,
+                                       const std::vector<double>& starting_share_bytes,
                                        const CostModel& costs);
 
 }  // namespace ncube

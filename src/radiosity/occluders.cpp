@@ -5,13 +5,16 @@
 #include <map>
 #include <mutex>
 
+#include "radiosity/answer_cache.h"
 #include "radiosity/host_threads.h"
 #include "radiosity/octree.h"
 
 namespace ncube {
 Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
                      VisibilityMethod method)
-    : policy_(policy), position_of_scene_patch_(scene.patches.size(), -1) {
+    : policy_(policy),
+      position_of_scene_patch_(scene.patches.size(), -1),
+      cache_id_(AnswerCache::new_set_id()) {
   if (method == VisibilityMethod::kOctree) octree_ = std::make_unique<const Octree>(scene, patch_indices);
   side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
   // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
@@ -91,6 +94,7 @@ WorkCounts Occluders::build_work() const {
 
 Occluders::~Occluders() {
   if (set_bit_ >= 0) blockers_->unregister_set(set_bit_);
+  blockers_->answer_cache().forget_set(cache_id_);
 }
 
 const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
@@ -298,6 +302,19 @@ PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const
 void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
                                 const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                                 int threads) const {
+  // A block asked about before for the same shooter: the same answers and counts as then
+  // (answer_cache.h; the points are compared, not assumed unchanged).
+  AnswerCache& cache = blockers_->answer_cache();
+  if (cache.find(cache_id_, shooter, points, receiver_patches, count, masks, counts)) return;
+  WorkCounts block_counts;
+  answer_block(points, receiver_patches, count, shooter, masks, block_counts, threads);
+  counts += block_counts;
+  cache.store(cache_id_, shooter, points, receiver_patches, count, masks, block_counts);
+}
+
+void Occluders::answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
+                             const Shooter& shooter, PartMask* masks, WorkCounts& counts,
+                             int threads) const {
   if (octree_) {
     octree_->unblocked_parts(points, receiver_patches, count, shooter, masks, counts, threads);
     return;

@@ -84,6 +84,10 @@ class Occluders {
     std::vector<std::int64_t> behind_prefix, in_front_prefix;
   };
   const TargetSides& target_sides(const Shooter& shooter) const;
+  // The batch call's work when the answer cache does not hold the block.
+  void answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
+                    const Shooter& shooter, PartMask* masks, WorkCounts& counts,
+                    int threads) const;
   // The answer for one point; reads only constant data (safe on several threads). `lists`
   // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
   // `masks`: the same as bits of registered sets (this set's is set_bit_).
@@ -149,6 +153,7 @@ class Occluders {
   bool whole_scene_ = false;  // every scene patch is in the set
   int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
   std::unique_ptr<const Octree> octree_;  // answers all batch queries when set
+  std::uint64_t cache_id_;                // this set's answers in blockers_'s answer cache
 };
 
 }  // namespace ncube

@@ -1,6 +1,7 @@
 #include "radiosity/radiosity_engine.h"
 
 #include <bitset>
+#include <stdexcept>
 #include <glm/geometric.hpp>
 
 #include "radiosity/form_factor.h"
@@ -8,93 +9,159 @@
 
 namespace ncube {
 
-RadiosityEngine::RadiosityEngine(const Scene& scene, std::vector<int> owned_patches)
-    : scene_(scene),
-      owned_(std::move(owned_patches)),
-      radiosity_(scene.elements.size(), Rgb(0.0)),
-      unshot_(scene.patches.size(), Rgb(0.0)) {
-  for (int p : owned_) {
-    const Patch& patch = scene.patches[p];
-    unshot_[p] = patch.emission;
-    for (int e = patch.first_element; e < patch.first_element + patch.element_count(); ++e) {
-      owned_elements_.push_back(e);
-      radiosity_[e] = patch.emission;
-    }
-  }
-}
+RadiosityEngine::RadiosityEngine(const Scene& scene, const std::vector<int>& owned_patches)
+    : store_(scene, owned_patches) {}
 
 ShooterChoice RadiosityEngine::best_shooter(WorkCounts& counts) const {
   ShooterChoice best;
-  for (int p : owned_) {
-    const Rgb& u = unshot_[p];
-    ShooterChoice candidate{p, (u.r + u.g + u.b) * scene_.patches[p].area, u};
+  for (const StoredPatch& s : store_.patches()) {
+    const Rgb& u = s.unshot;
+    ShooterChoice candidate{s.patch, (u.r + u.g + u.b) * scene().patches[std::size_t(s.patch)].area, u};
     if (candidate.better_than(best)) best = candidate;
   }
-  counts.shooter_candidates += owned_.size();
+  counts.shooter_candidates += store_.patches().size();
   return best;
 }
 
-std::vector<int> RadiosityEngine::receivers(const Shooter& shooter, bool skip_facing_away,
-                                            WorkCounts& counts) const {
-  std::vector<int> result;
-  for (int e : owned_elements_) {
-    const Element& element = scene_.elements[e];
-    if (element.patch == shooter.patch) continue;  // a patch does not light itself
-    if (!skip_facing_away ||
-        faces_shooter(element.centre, scene_.patches[element.patch].normal, shooter))
-      result.push_back(e);
+std::vector<ElementRef> RadiosityEngine::receivers(const Shooter& shooter, bool skip_facing_away,
+                                                   WorkCounts& counts) const {
+  std::vector<ElementRef> result;
+  const auto& patches = store_.patches();
+  for (int slot = 0; slot < int(patches.size()); ++slot) {
+    const StoredPatch& s = patches[std::size_t(slot)];
+    counts.receivers += s.elements.size();
+    if (s.patch == shooter.patch) continue;  // a patch does not light itself
+    const Vec3& normal = scene().patches[std::size_t(s.patch)].normal;
+    for (int k = 0; k < int(s.elements.size()); ++k)
+      if (!skip_facing_away || faces_shooter(s.elements[std::size_t(k)].centre, normal, shooter))
+        result.push_back({slot, k});
   }
-  counts.receivers += owned_elements_.size();
   return result;
 }
 
-void RadiosityEngine::gather(const Shooter& shooter, const std::vector<int>& receivers,
+void RadiosityEngine::visibility_points(const std::vector<ElementRef>& receivers,
+                                        std::vector<Vec3>& points, std::vector<int>& patches) const {
+  points.resize(receivers.size());
+  patches.resize(receivers.size());
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    points[k] = store_.element(receivers[k]).centre;
+    patches[k] = store_.patches()[std::size_t(receivers[k].slot)].patch;
+  }
+}
+
+void RadiosityEngine::gather(const Shooter& shooter, const std::vector<ElementRef>& receivers,
                              const std::vector<PartMask>& masks, WorkCounts& counts, int threads) {
+  const auto in_front = [&shooter](const Vec3& p) {
+    return glm::dot(shooter.normal, p - shooter.polygon[0]) > 0.0;
+  };
   std::vector<double> form_factors(receivers.size(), 0.0);
   parallel_chunks(threads, receivers.size(), 64, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const Element& element = scene_.elements[receivers[k]];
+      const StoredElement& element = store_.element(receivers[k]);
       // The shooter emits from its front only: a receiver behind its plane gets nothing.
-      if (!(glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0)) continue;
+      if (!in_front(element.centre)) continue;
+      const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
       form_factors[k] = visible_parts_form_factor(
-          element.centre, scene_.patches[element.patch].normal, shooter, masks[k]);
+          element.centre, scene().patches[std::size_t(patch)].normal, shooter, masks[k]);
     }
   });
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    const Element& element = scene_.elements[receivers[k]];
-    const Patch& patch = scene_.patches[element.patch];
-    const PartMask mask =
-        glm::dot(shooter.normal, element.centre - shooter.polygon[0]) > 0.0 ? masks[k] : 0;
+    StoredPatch& s = store_.patches()[std::size_t(receivers[k].slot)];
+    StoredElement& element = s.elements[std::size_t(receivers[k].index)];
+    const Patch& patch = scene().patches[std::size_t(s.patch)];
+    const PartMask mask = in_front(element.centre) ? masks[k] : 0;
     counts.form_factors += std::bitset<64>(mask).count();
     // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
     const Rgb gained = patch.reflectance * shooter.unshot * form_factors[k];
-    radiosity_[receivers[k]] += gained;
-    unshot_[element.patch] += gained * (element.area / patch.area);
+    element.radiosity += gained;
+    element.shot_gain = gained;
+    s.unshot += gained * (element.area / patch.area);
     ++counts.element_updates;
   }
 }
 
+std::vector<ElementRef> RadiosityEngine::subdivide(const std::vector<ElementRef>& shot,
+                                                   const SubdivisionOptions& options, long room,
+                                                   bool& out_of_room, WorkCounts& counts) {
+  std::vector<ElementRef> children;
+  std::size_t next = 0;
+  while (next < shot.size()) {  // one patch (slot) at a time; `shot` is in store order
+    const int slot = shot[next].slot;
+    StoredPatch& s = store_.patches()[std::size_t(slot)];
+    const Patch& patch = scene().patches[std::size_t(s.patch)];
+    std::vector<Rgb> radiosity;
+    radiosity.reserve(s.elements.size());
+    for (const StoredElement& e : s.elements) radiosity.push_back(e.radiosity);
+    const PatchMesh& mesh = store_.mesh(slot);
+    std::vector<int> cuts;  // ascending
+    for (; next < shot.size() && shot[next].slot == slot; ++next) {
+      const int k = shot[next].index;
+      const StoredElement& e = s.elements[std::size_t(k)];
+      ++counts.subdivision_tests;
+      if (!should_cut(options, mesh, radiosity, std::size_t(k), e.cell, e.area)) continue;
+      if (room < 4) {
+        out_of_room = true;
+        continue;
+      }
+      room -= 4;
+      cuts.push_back(k);
+    }
+    // Take back each cut element's share of this shot, then cut from the back so that the
+    // indices still to cut stay valid.
+    for (int k : cuts) {
+      const StoredElement& e = s.elements[std::size_t(k)];
+      s.unshot -= e.shot_gain * (e.area / patch.area);
+    }
+    for (auto it = cuts.rbegin(); it != cuts.rend(); ++it) {
+      const StoredElement& e = s.elements[std::size_t(*it)];
+      store_.cut(slot, *it, e.radiosity - e.shot_gain);
+      counts.elements_created += 4;
+    }
+    for (std::size_t t = 0; t < cuts.size(); ++t)
+      for (int m = 0; m < 4; ++m) children.push_back({slot, cuts[t] + 3 * int(t) + m});
+  }
+  return children;
+}
+
+void RadiosityEngine::clear_unshot(int patch) {
+  store_.patches()[std::size_t(store_.slot_of(patch))].unshot = Rgb(0.0);
+}
+
+const Rgb& RadiosityEngine::unshot(int patch) const {
+  const int slot = store_.slot_of(patch);
+  if (slot < 0) throw std::logic_error("RadiosityEngine::unshot: patch not held");
+  return store_.patches()[std::size_t(slot)].unshot;
+}
+
 Rgb RadiosityEngine::patch_radiosity(int patch) const {
-  const Patch& p = scene_.patches[patch];
+  const int slot = store_.slot_of(patch);
+  if (slot < 0) throw std::logic_error("RadiosityEngine::patch_radiosity: patch not held");
+  const StoredPatch& s = store_.patches()[std::size_t(slot)];
   Rgb sum(0.0);
-  for (int e = p.first_element; e < p.first_element + p.element_count(); ++e)
-    sum += radiosity_[e] * scene_.elements[e].area;
-  return sum / p.area;
+  for (const StoredElement& e : s.elements) sum += e.radiosity * e.area;
+  return sum / scene().patches[std::size_t(patch)].area;
+}
+
+const Rgb& RadiosityEngine::element_radiosity(int e) const {
+  const int patch = scene().elements[std::size_t(e)].patch;
+  const int slot = store_.slot_of(patch);
+  const StoredPatch& s = store_.patches()[std::size_t(slot)];
+  const std::size_t index = std::size_t(e - scene().patches[std::size_t(patch)].first_element);
+  if (slot < 0 || s.elements.size() != std::size_t(scene().patches[std::size_t(patch)].element_count()))
+    throw std::logic_error("RadiosityEngine::element_radiosity: patch not held, or cut");
+  return s.elements[index].radiosity;
 }
 
 bool has_converged(const ShooterChoice& best, double emitted_power, double fraction) {
   return best.patch < 0 || best.power < fraction * emitted_power;
 }
 
-std::vector<PartMask> visible_parts(const Scene& scene, const Occluders& occluders,
-                                    const std::vector<int>& receivers, const Shooter& shooter,
-                                    WorkCounts& counts, int threads) {
-  std::vector<Vec3> points(receivers.size());
-  std::vector<int> patches(receivers.size());
-  for (std::size_t k = 0; k < receivers.size(); ++k) {
-    points[k] = scene.elements[receivers[k]].centre;
-    patches[k] = scene.elements[receivers[k]].patch;
-  }
+std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const Occluders& occluders,
+                                    const std::vector<ElementRef>& receivers,
+                                    const Shooter& shooter, WorkCounts& counts, int threads) {
+  std::vector<Vec3> points;
+  std::vector<int> patches;
+  engine.visibility_points(receivers, points, patches);
   std::vector<PartMask> masks(receivers.size());
   occluders.unblocked_parts(points.data(), patches.data(), receivers.size(), shooter, masks.data(),
                             counts, threads);
@@ -114,13 +181,21 @@ ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occlude
     }
     if (options.max_iterations >= 0 && run.iterations >= options.max_iterations) break;
     const Shooter shooter = make_shooter(engine.scene(), best.patch, best.unshot, options.samples);
-    const std::vector<int> receivers = engine.receivers(shooter, options.skip_facing_away, counts);
-    const std::vector<PartMask> masks =
-        visible_parts(engine.scene(), occluders, receivers, shooter, counts, options.host_threads);
-    engine.gather(shooter, receivers, masks, counts, options.host_threads);
+    std::vector<ElementRef> receivers = engine.receivers(shooter, options.skip_facing_away, counts);
+    // Section 4.1: shoot, then cut where the light changes too fast and shoot the current
+    // shooter to the new elements, until no element is cut.
+    while (!receivers.empty()) {
+      const std::vector<PartMask> masks =
+          visible_parts(engine, occluders, receivers, shooter, counts, options.host_threads);
+      engine.gather(shooter, receivers, masks, counts, options.host_threads);
+      if (!options.subdivision.enabled) break;
+      bool out_of_room = false;
+      receivers = engine.subdivide(receivers, options.subdivision, 1L << 62, out_of_room, counts);
+    }
     engine.clear_unshot(best.patch);
     ++run.iterations;
     run.shooters.push_back(best.patch);
+    run.elements.push_back(engine.store().element_count());
     run.per_iteration.push_back(counts);
     run.total += counts;
   }

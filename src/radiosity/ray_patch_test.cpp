@@ -13,9 +13,4 @@ PatchCandidate make_candidate(const Polygon& polygon, const Vec3& normal, int sc
   return c;
 }
 
-bool segment_crosses(const PatchCandidate& c, const Vec3& from, const Vec3& delta) {
-  Vec3 x;
-  return segment_meets_plane(c, from, delta, x) && plane_point_inside(c, x);
-}
-
 }  // namespace ncube

@@ -48,7 +48,10 @@ inline bool plane_point_inside(const PatchCandidate& c, const Vec3& x) {
 }
 
 // Does the segment from + t * delta, t in (kRayEpsilon, 1 - kRayEpsilon), cross the
-// candidate's polygon (edges included)?
-bool segment_crosses(const PatchCandidate& c, const Vec3& from, const Vec3& delta);
+// candidate's polygon (edges included)? Inline: Embree's filter calls it for every hit.
+inline bool segment_crosses(const PatchCandidate& c, const Vec3& from, const Vec3& delta) {
+  Vec3 x;
+  return segment_meets_plane(c, from, delta, x) && plane_point_inside(c, x);
+}
 
 }  // namespace ncube

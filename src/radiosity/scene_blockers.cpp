@@ -98,10 +98,11 @@ SceneBlockers::Entry* SceneBlockers::find(int kind, const Vec3* points,
   const int m = shooter.part_count;
   for (auto it = memo_.begin(); it != memo_.end(); ++it) {
     const Entry& e = *it;
+    // The points first: the blocks of one shot share their shooter, not their points.
     if (e.kind != kind || (kind == 1 && e.version != version_) ||
         e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
-        !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
         !std::equal(e.points.begin(), e.points.end(), points) ||
+        !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
         !std::equal(e.receiver_patches.begin(), e.receiver_patches.end(), receiver_patches))
       continue;
     if (it != memo_.begin()) {  // most recent first

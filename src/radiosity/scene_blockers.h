@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "radiosity/answer_cache.h"
 #include "radiosity/embree_scene.h"
 #include "scene/scene.h"
 
@@ -31,6 +32,9 @@ class SceneBlockers {
   double scale() const { return scale_; }
   // The Embree scene of all patches; positions are scene patch indices.
   const EmbreeScene& embree() const { return *embree_; }
+  // The answers of this scene's occluder sets across iterations (answer_cache.h), under
+  // one budget for all of them.
+  AnswerCache& answer_cache() const { return answer_cache_; }
 
   // For point k (on scene patch receiver_patches[k]) and shooter part r: every scene patch,
   // other than the point's and the shooter's, that the segment crosses by the exact test:
@@ -81,6 +85,7 @@ class SceneBlockers {
   std::vector<PatchCandidate> candidates_;  // scene order
   std::unique_ptr<EmbreeScene> embree_;
   mutable std::deque<Entry> memo_;          // most recent first
+  mutable AnswerCache answer_cache_{AnswerCache::default_budget_bytes()};
   mutable std::vector<std::uint64_t> sets_of_patch_;  // per scene patch: registered sets
   mutable std::uint64_t registered_ = 0, version_ = 0;
 };

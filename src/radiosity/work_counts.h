@@ -24,6 +24,9 @@ namespace ncube {
     "edge tests")                                                                               \
   X(form_factors, flops_per_form_factor, "point-to-part contour integrals (visible parts)")      \
   X(element_updates, flops_per_element_update, "receiving elements whose radiosity was updated") \
+  X(subdivision_tests, flops_per_subdivision_test,                                              \
+    "section 4.1: elements whose corner radiosities were compared")                             \
+  X(elements_created, flops_per_element_created, "section 4.1: child elements made by cuts")    \
   X(octree_cells_visited, flops_per_octree_cell_visited,                                        \
     "octree cells slab-tested against a ray (octree.h)")                                        \
   X(octree_overlap_tests, flops_per_octree_overlap_test,                                        \

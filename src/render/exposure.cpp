@@ -11,7 +11,6 @@ constexpr double kPercentileValue = 0.9;  // ... maps to this linear value (befo
 
 }  // namespace
 
-double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 std::uint64_t percentile_rank(std::uint64_t count) {
   return count == 0 ? 0 : std::uint64_t(kPercentile * double(count - 1));

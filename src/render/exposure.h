@@ -12,7 +12,6 @@
 
 namespace ncube {
 
-double luminance(const Rgb& c);
 
 // The order statistic the exposure uses, over one set of luminances.
 struct LuminanceSelection {

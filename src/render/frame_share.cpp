@@ -41,100 +41,27 @@ glm::dvec2 CameraView::to_screen(const Vec3& c) const {
 
 namespace {
 
-struct CameraVertex {
-  Vec3 position;  // camera space
-  Rgb radiosity;
-};
-
 double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-}
-
-// Index of grid vertex (i, j) of a patch. A triangle's top row of grid vertices is one
-// point (v2), so they all share the index of (0, nv).
-int grid_vertex(const Patch& patch, int i, int j) {
-  return patch.polygon.count == 3 && j == patch.nv ? patch.nv * (patch.nu + 1)
-                                                   : j * (patch.nu + 1) + i;
-}
-
-// The corners of element (i, j) in grid_cell's vertex order; a last-row triangle has 3.
-int cell_corners(const Patch& patch, int i, int j, int corners[4]) {
-  corners[0] = grid_vertex(patch, i, j);
-  corners[1] = grid_vertex(patch, i + 1, j);
-  corners[2] = grid_vertex(patch, i + 1, j + 1);
-  corners[3] = grid_vertex(patch, i, j + 1);
-  return patch.polygon.count == 3 && j == patch.nv - 1 ? 3 : 4;
-}
-
-// Radiosity at each grid vertex: the mean of the patch's elements sharing it.
-std::vector<Rgb> vertex_radiosity(const Patch& patch, const std::vector<Rgb>& element_radiosity) {
-  std::vector<Rgb> sum(std::size_t(patch.nu + 1) * (patch.nv + 1), Rgb(0.0));
-  std::vector<int> count(sum.size(), 0);
-  for (int j = 0; j < patch.nv; ++j)
-    for (int i = 0; i < patch.nu; ++i) {
-      const Rgb& b = element_radiosity[std::size_t(patch.first_element) + j * patch.nu + i];
-      int corners[4];
-      const int n = cell_corners(patch, i, j, corners);
-      for (int c = 0; c < n; ++c) {
-        sum[corners[c]] += b;
-        ++count[corners[c]];
-      }
-    }
-  for (std::size_t k = 0; k < sum.size(); ++k)
-    if (count[k] > 0) sum[k] /= double(count[k]);
-  return sum;
 }
 
 double srgb_encode(double c) {
   return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
-constexpr int kMaxFanVertices = 8;  // a quad clipped by one plane has at most 5
+// Outlines: a sample within half a sample of its element's edge (a line one sample wide, in
+// screen space whatever the distance) is drawn black.
+constexpr double kOutlineHalfWidth = 0.5;
 
 }  // namespace
 
-std::vector<RenderElement> render_elements(const Scene& scene,
-                                           const std::vector<Rgb>& element_radiosity,
-                                           const std::vector<int>& patches) {
-  if (element_radiosity.size() != scene.elements.size())
-    throw InputError("render: " + std::to_string(element_radiosity.size()) +
-                     " radiosities for " + std::to_string(scene.elements.size()) + " elements");
-  std::vector<RenderElement> records;
-  for (int p : patches) {
-    const Patch& patch = scene.patches[std::size_t(p)];
-    const std::vector<Rgb> corner = vertex_radiosity(patch, element_radiosity);
-    const bool emitter = patch.emission.r > 0.0 || patch.emission.g > 0.0 || patch.emission.b > 0.0;
-    for (int j = 0; j < patch.nv; ++j)
-      for (int i = 0; i < patch.nu; ++i) {
-        RenderElement r;
-        r.element = patch.first_element + j * patch.nu + i;
-        const Element& element = scene.elements[std::size_t(r.element)];
-        int corners[4];
-        r.corners = cell_corners(patch, i, j, corners);
-        for (int c = 0; c < r.corners; ++c) {
-          r.position[c] = element.polygon[c];
-          r.radiosity[c] = corner[corners[c]];
-        }
-        r.emitter = emitter;
-        records.push_back(r);
-      }
-  }
-  return records;
-}
-
-// Perspective-correct interpolation: 1/z and radiosity/z are linear in screen space.
-struct FrameShare::ScreenVertex {
-  glm::dvec2 p;
-  double w;  // 1/z
-  Rgb rw;    // radiosity/z
-};
-
 FrameShare::FrameShare(const Scene& scene, const Camera& camera, int width, int height,
-                       RowShare rows)
+                       RowShare rows, bool outline_elements)
     : view_(camera, width * kSamplesPerAxis, height * kSamplesPerAxis),
       width_(width * kSamplesPerAxis),
       height_(height * kSamplesPerAxis),
-      rows_(rows) {
+      rows_(rows),
+      outline_elements_(outline_elements) {
   // The near plane scales with the scene so that any unit of length works.
   const double extent = scene_bounds(scene).diagonal();
   near_ = extent > 0.0 ? 1e-6 * extent : 1e-9;
@@ -143,20 +70,29 @@ FrameShare::FrameShare(const Scene& scene, const Camera& camera, int width, int 
   radiosity_.assign(n, Rgb(0.0));
   key_.assign(n, 0);
   emitter_.assign(n, 0);
+  if (outline_elements_) outline_.assign(n, 0);
 }
 
 // Samples are at sample centres; the inclusive edge test leaves no cracks between
 // neighbours (a shared edge is drawn twice with the same values). Only the sample rows of
 // the owned picture rows are visited.
 void FrameShare::draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, std::int64_t key,
-                               bool emitter, RenderCounts& counts) {
+                               bool emitter, unsigned element_edges, RenderCounts& counts) {
   ++counts.triangles;
   double area = edge(a.p, b.p, c.p);
   if (!std::isfinite(area) || area == 0.0) return;
   if (area < 0.0) {  // back side: both sides are drawn
     std::swap(b, c);
     area = -area;
+    element_edges = (element_edges & 2u) | ((element_edges & 1u) << 2) | ((element_edges & 4u) >> 2);
   }
+  // Outlines: the edge function over an edge's length is the distance to it, in samples.
+  const bool outline_ab = outline_elements_ && (element_edges & 1u),
+             outline_bc = outline_elements_ && (element_edges & 2u),
+             outline_ca = outline_elements_ && (element_edges & 4u);
+  const double half_ab = outline_ab ? kOutlineHalfWidth * glm::length(b.p - a.p) : 0.0,
+               half_bc = outline_bc ? kOutlineHalfWidth * glm::length(c.p - b.p) : 0.0,
+               half_ca = outline_ca ? kOutlineHalfWidth * glm::length(a.p - c.p) : 0.0;
   const auto range = [](double lo, double hi, int size, int& first, int& last) {
     first = int(std::clamp(std::ceil(lo - 0.5), 0.0, double(size)));
     last = int(std::clamp(std::floor(hi - 0.5), -1.0, double(size - 1)));
@@ -188,6 +124,9 @@ void FrameShare::draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, s
         key_[k] = key;
         radiosity_[k] = (ea * a.rw + eb * b.rw + ec * c.rw) / (area * w);
         emitter_[k] = emitter;
+        if (outline_elements_)
+          outline_[k] = (outline_ab && ec <= half_ab) || (outline_bc && ea <= half_bc) ||
+                        (outline_ca && eb <= half_ca);
       }
     }
   }
@@ -195,36 +134,73 @@ void FrameShare::draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, s
 
 // Clips against the near plane z = near (Sutherland-Hodgman), projects, draws as a fan.
 void FrameShare::draw(const RenderElement& element, RenderCounts& counts) {
-  CameraVertex in[4];
-  for (int c = 0; c < element.corners; ++c)
-    in[c] = {view_.to_camera(element.position[c]), element.radiosity[c]};
-  counts.vertices += std::uint64_t(element.corners);
-  CameraVertex out[kMaxFanVertices];
-  int m = 0;
-  const int n = element.corners;
-  for (int i = 0; i < n; ++i) {
-    const CameraVertex& s = in[i];
-    const CameraVertex& e = in[(i + 1) % n];
+  const std::size_t n = element.boundary.size();
+  in_.clear();
+  for (const MeshVertex& v : element.boundary)
+    in_.push_back({view_.to_camera(v.position), v.radiosity});
+  counts.vertices += std::uint64_t(n);
+  out_.clear();
+  out_on_boundary_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CameraVertex& s = in_[i];
+    const CameraVertex& e = in_[(i + 1) % n];
     const bool s_in = s.position.z >= near_, e_in = e.position.z >= near_;
-    if (s_in) out[m++] = s;
+    if (s_in) {
+      out_.push_back(s);
+      out_on_boundary_.push_back(1);
+    }
     if (s_in != e_in) {
       const double t = (near_ - s.position.z) / (e.position.z - s.position.z);
-      out[m++] = {s.position + t * (e.position - s.position),
-                  s.radiosity + t * (e.radiosity - s.radiosity)};
+      out_.push_back({s.position + t * (e.position - s.position),
+                      s.radiosity + t * (e.radiosity - s.radiosity)});
+      // Leaving the near side, the next edge runs along the near plane, not the element's.
+      out_on_boundary_.push_back(!e_in ? 0 : 1);
       ++counts.clip_vertices;
     }
   }
+  const std::size_t m = out_.size();
   if (m < 3) return;
-  ScreenVertex sv[kMaxFanVertices];
-  for (int i = 0; i < m; ++i) {
-    const double w = 1.0 / out[i].position.z;
-    sv[i] = {view_.to_screen(out[i].position), w, out[i].radiosity * w};
+  // A T-vertex lies on the line of its edge: in a fan from a corner the pieces of that
+  // corner's own edges would be degenerate triangles, their T-vertices' radiosities lost.
+  // The centre (mean of the boundary points, position and radiosity: exact for a radiosity
+  // linear over the element) sees every piece of the boundary. It is taken unclipped; when
+  // it is behind the near plane the clipped polygon is fanned from its first vertex.
+  CameraVertex centre{Vec3(0.0), Rgb(0.0)};
+  bool centre_fan = element.t_vertices() > 0;
+  if (centre_fan) {
+    for (const CameraVertex& v : in_) {
+      centre.position += v.position;
+      centre.radiosity += v.radiosity;
+    }
+    centre.position /= double(n);
+    centre.radiosity /= double(n);
+    centre_fan = centre.position.z >= near_;
+    counts.vertices += 1;
   }
+  screen_.clear();
+  const auto project = [this](const CameraVertex& v) {
+    const double w = 1.0 / v.position.z;
+    return ScreenVertex{view_.to_screen(v.position), w, v.radiosity * w};
+  };
+  for (const CameraVertex& v : out_) screen_.push_back(project(v));
   counts.projected_vertices += std::uint64_t(m);
   // Drawing key: element, then triangle of its fan, so ties resolve as in scene order.
-  for (int i = 1; i + 1 < m; ++i)
-    draw_triangle(sv[0], sv[i], sv[i + 1], std::int64_t(element.element) * kMaxFanVertices + i,
-                  element.emitter, counts);
+  const std::int64_t element_key = std::int64_t(element.element) << 32;
+  if (centre_fan) {
+    const ScreenVertex c = project(centre);
+    ++counts.projected_vertices;
+    for (std::size_t i = 0; i < m; ++i)
+      draw_triangle(c, screen_[i], screen_[(i + 1) % m], element_key + std::int64_t(i),
+                    element.emitter, out_on_boundary_[i] ? 2u : 0u, counts);
+    return;
+  }
+  for (std::size_t i = 1; i + 1 < m; ++i) {
+    const unsigned edges = (i == 1 && out_on_boundary_[0] ? 1u : 0u) |
+                           (out_on_boundary_[i] ? 2u : 0u) |
+                           (i + 2 == m && out_on_boundary_[m - 1] ? 4u : 0u);
+    draw_triangle(screen_[0], screen_[i], screen_[i + 1], element_key + std::int64_t(i),
+                  element.emitter, edges, counts);
+  }
 }
 
 std::uint64_t FrameShare::visible_samples() const {
@@ -243,7 +219,7 @@ Image FrameShare::resolve(double scale, RenderCounts& counts) const {
         for (int sx = 0; sx < kSamplesPerAxis; ++sx) {
           const std::size_t k = (std::size_t(local) * kSamplesPerAxis + sy) * width_ +
                                 std::size_t(x) * kSamplesPerAxis + sx;
-          sum += glm::clamp(radiosity_[k] * scale, 0.0, 1.0);
+          if (!outline_elements_ || !outline_[k]) sum += glm::clamp(radiosity_[k] * scale, 0.0, 1.0);
         }
       sum /= double(kSamplesPerAxis * kSamplesPerAxis);
       image.at(x, local) = glm::vec3(float(srgb_encode(sum.r)), float(srgb_encode(sum.g)),

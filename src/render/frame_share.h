@@ -11,6 +11,7 @@
 
 #include "render/image.h"
 #include "render/render_counts.h"
+#include "render/render_records.h"
 #include "render/row_share.h"
 #include "scene/scene.h"
 
@@ -30,29 +31,18 @@ struct CameraView {
   glm::dvec2 to_screen(const Vec3& c) const;
 };
 
-// One element as the renderer needs it: its corners with the Gouraud radiosities there.
-struct RenderElement {
-  int element = 0;  // scene element index; a depth tie goes to the lower index (drawing order)
-  int corners = 4;  // 3 for the last row of a triangle's grid
-  Vec3 position[4];
-  Rgb radiosity[4];
-  bool emitter = false;
-};
-
-// The records of the given patches' elements, in scene order. A corner's radiosity is the
-// mean of the patch's elements sharing that grid vertex (the apex of a triangle is shared by
-// its whole last row).
-std::vector<RenderElement> render_elements(const Scene& scene,
-                                           const std::vector<Rgb>& element_radiosity,
-                                           const std::vector<int>& patches);
-
 class FrameShare {
  public:
-  // Throws InputError for a bad picture size or a degenerate camera.
-  FrameShare(const Scene& scene, const Camera& camera, int width, int height, RowShare rows);
+  // Throws InputError for a bad picture size or a degenerate camera. With
+  // `outline_elements`, the resolved picture shows each element's edges as dark lines.
+  FrameShare(const Scene& scene, const Camera& camera, int width, int height, RowShare rows,
+             bool outline_elements = false);
 
   // Draws one element into the owned rows, in any order: the nearest surface wins, a depth
-  // tie the lower (element, triangle) drawing key, as when drawn in scene order.
+  // tie the lower (element, triangle) drawing key, as when drawn in scene order. An element
+  // without T-vertices is a fan from its first (clipped) vertex; one with T-vertices a fan
+  // from its centre, so that every piece of its boundary is a triangle's edge and the
+  // shading along it is the neighbours' (docs/model.md, "Rendering").
   void draw(const RenderElement& element, RenderCounts& counts);
 
   // Calls f(radiosity, emitter) for every sample that shows a surface.
@@ -61,16 +51,27 @@ class FrameShare {
   std::uint64_t visible_samples() const;
 
   // The owned rows, in order, tone mapped with exposure `scale`: clamp per sample, average
-  // 3 x 3, sRGB encode (width x rows().count() pixels).
+  // 3 x 3, sRGB encode (width x rows().count() pixels). Outline samples are black.
   Image resolve(double scale, RenderCounts& counts) const;
 
   const RowShare& rows() const { return rows_; }
   std::size_t samples() const { return inv_depth_.size(); }
 
  private:
-  struct ScreenVertex;
+  struct CameraVertex {
+    Vec3 position;  // camera space
+    Rgb radiosity;
+  };
+  // Perspective-correct interpolation: 1/z and radiosity/z are linear in screen space.
+  struct ScreenVertex {
+    glm::dvec2 p;
+    double w;  // 1/z
+    Rgb rw;    // radiosity/z
+  };
+  // `element_edges`: which of the edges ab (1), bc (2), ca (4) lie on the element's boundary
+  // (for outlines).
   void draw_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, std::int64_t key,
-                     bool emitter, RenderCounts& counts);
+                     bool emitter, unsigned element_edges, RenderCounts& counts);
 
   CameraView view_;
   double near_ = 0.0;
@@ -80,6 +81,12 @@ class FrameShare {
   std::vector<Rgb> radiosity_;
   std::vector<std::int64_t> key_;  // drawing key of the nearest surface
   std::vector<char> emitter_;
+  bool outline_elements_ = false;
+  std::vector<char> outline_;  // the sample lies on an edge of its element (when outlining)
+  // Scratch space of draw(), kept to spare an allocation per element.
+  std::vector<CameraVertex> in_, out_;
+  std::vector<char> out_on_boundary_;  // the edge from out_[k] to out_[k + 1] is the element's
+  std::vector<ScreenVertex> screen_;
 };
 
 template <class F>

@@ -27,11 +27,12 @@ double frame_exposure(const FrameShare& frame) {
 }
 
 Image render_solution(const Scene& scene, const Camera& camera,
-                      const std::vector<Rgb>& element_radiosity, int width, int height) {
+                      const std::vector<PatchSolution>& solution, int width, int height,
+                      bool outline_elements) {
   std::vector<int> all_patches(scene.patches.size());
   std::iota(all_patches.begin(), all_patches.end(), 0);
-  const std::vector<RenderElement> elements = render_elements(scene, element_radiosity, all_patches);
-  FrameShare frame(scene, camera, width, height, RowShare::whole(height));
+  const std::vector<RenderElement> elements = render_elements(scene, solution, all_patches);
+  FrameShare frame(scene, camera, width, height, RowShare::whole(height), outline_elements);
   RenderCounts counts;
   for (const RenderElement& element : elements) frame.draw(element, counts);
   return frame.resolve(frame_exposure(frame), counts);

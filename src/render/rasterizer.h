@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "render/image.h"
+#include "render/render_records.h"
 #include "scene/scene.h"
 
 namespace ncube {
@@ -21,13 +22,17 @@ namespace ncube {
 // if the point is not in front of the eye. Throws InputError for a degenerate camera.
 std::optional<glm::dvec2> project(const Camera& camera, int width, int height, const Vec3& point);
 
-// The scene seen by `camera`, each element shaded with element_radiosity (one per
-// scene.elements entry). Both sides of every polygon are drawn; the background is black.
+// The scene seen by `camera`, each element of `solution` (one entry per scene patch, in
+// order; see render_records.h) drawn with its whole boundary and Gouraud-shaded with its
+// nodal radiosities. Both sides of every polygon are drawn; the background is black.
 // Tone mapping: exposure so that the 95th percentile of the luminance of the visible
 // non-emitting surface (all visible surface if no such) maps to 0.9, then clamp to [0, 1]
-// and sRGB encode. The output is a deterministic function of the inputs.
+// and sRGB encode. With `outline_elements`, each element's edges are thin black lines (the
+// exposure is that of the picture without them). The output is a deterministic function of
+// the inputs.
 Image render_solution(const Scene& scene, const Camera& camera,
-                      const std::vector<Rgb>& element_radiosity, int width, int height);
+                      const std::vector<PatchSolution>& solution, int width, int height,
+                      bool outline_elements = false);
 
 // The exposure scale of a frame that holds the whole picture (the tone mapping above).
 double frame_exposure(const FrameShare& frame);

@@ -5,6 +5,8 @@
 
 namespace ncube {
 
+double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
 void Scene::derive_patch_fields() {
   int first = 0;
   for (Patch& patch : patches) {

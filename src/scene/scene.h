@@ -13,6 +13,9 @@ namespace ncube {
 
 using Rgb = glm::dvec3;
 
+// Luminance of a radiosity (Rec. 709 weights): the exposure and the subdivision criterion.
+double luminance(const Rgb& c);
+
 struct Camera {
   Vec3 eye{0.0};
   Vec3 look_at{0.0, 0.0, -1.0};

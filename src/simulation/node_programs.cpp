@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <numeric>
+#include <utility>
 
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Engine.hpp>
@@ -35,7 +36,7 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
-    RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[rank]);
+    RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[std::size_t(rank)]);
     RadiosityProcessor& rp =
         programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
     simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
@@ -66,14 +67,37 @@ void report_iterations(const NodePrograms& programs, const SimulationConfig& con
 }
 
 void collect_solution(const Scene& scene, const NodePrograms& programs,
-                      std::vector<Rgb>& element_radiosity, std::vector<Rgb>& patch_radiosity) {
-  // Every element and patch is owned by exactly one radiosity processor.
-  element_radiosity.assign(scene.elements.size(), Rgb(0.0));
+                      std::vector<PatchSolution>& solution, std::vector<Rgb>& patch_radiosity,
+                      std::vector<std::vector<int>>& held_patches) {
+  // Every patch is held by exactly one radiosity processor (section 4).
+  solution.assign(scene.patches.size(), PatchSolution{});
   patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
+  held_patches.clear();
   for (const RadiosityEngine& engine : programs.engines) {
-    for (int e : engine.owned_elements()) element_radiosity[e] = engine.element_radiosity(e);
-    for (int p : engine.owned_patches()) patch_radiosity[p] = engine.patch_radiosity(p);
+    held_patches.push_back(engine.store().patch_indices());
+    for (PatchSolution& p : engine.store().solution()) {
+      patch_radiosity[std::size_t(p.patch)] = engine.patch_radiosity(p.patch);
+      solution[std::size_t(p.patch)] = std::move(p);
+    }
   }
+}
+
+std::vector<Rgb> level_zero_radiosity(const Scene& scene, const std::vector<PatchSolution>& solution) {
+  std::vector<Rgb> radiosity(std::size_t(scene.element_total()), Rgb(0.0));
+  std::vector<double> area(radiosity.size(), 0.0);
+  for (const PatchSolution& p : solution) {
+    const Patch& patch = scene.patches[std::size_t(p.patch)];
+    for (std::size_t k = 0; k < p.cells.size(); ++k) {
+      const ElementCell& c = p.cells[k];
+      const std::size_t e = std::size_t(patch.first_element) +
+                            std::size_t(c.j >> c.level) * std::size_t(patch.nu) + std::size_t(c.i >> c.level);
+      const double a = c.level == 0 ? 1.0 : cell_polygon(patch, c).area();
+      radiosity[e] += p.radiosity[k] * a;
+      area[e] += a;
+    }
+  }
+  for (std::size_t e = 0; e < area.size(); ++e) radiosity[e] /= area[e];
+  return radiosity;
 }
 
 std::string unfinished_node(const NodePrograms& programs, double simulated_seconds) {

@@ -1,6 +1,6 @@
-// The node programs of one radiosity run on the simulated machine (sections 2.2 and 3): a
-// runtime per node, a radiosity processor per rank with its engine, V visibility processors
-// per rank with their occluder shares, each an actor on its host.
+// The node programs of one radiosity run on the simulated machine (sections 2.2, 3 and 4): a
+// runtime per node, a radiosity processor per rank with its engine (and its element store),
+// V visibility processors per rank with their occluder shares, each an actor on its host.
 #pragma once
 
 #include <deque>
@@ -47,9 +47,16 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
 void report_iterations(const NodePrograms& programs, const SimulationConfig& config,
                        double emitted_power);
 
-// Each element's and patch's radiosity, from the radiosity processor that owns it.
+// The solution as the radiosity processors' element stores hold it at the end (section 4):
+// every patch's elements and radiosities and its radiosity (one entry per scene patch, in
+// scene order), and the patches each radiosity processor holds (in rank order).
 void collect_solution(const Scene& scene, const NodePrograms& programs,
-                      std::vector<Rgb>& element_radiosity, std::vector<Rgb>& patch_radiosity);
+                      std::vector<PatchSolution>& solution, std::vector<Rgb>& patch_radiosity,
+                      std::vector<std::vector<int>>& held_patches);
+
+// The radiosity of every level-0 element of the scene: a cut element's is the area-weighted
+// mean of its descendants'.
+std::vector<Rgb> level_zero_radiosity(const Scene& scene, const std::vector<PatchSolution>& solution);
 
 // Why a node program did not reach its end ("" if every one did).
 std::string unfinished_node(const NodePrograms& programs, double simulated_seconds);

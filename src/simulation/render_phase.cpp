@@ -19,21 +19,40 @@ void check_render_configuration(const RenderOptions& options, int nodes) {
 }
 
 std::vector<double> render_memory(const Scene& scene, const RenderOptions& options, int R, int V,
+                                  const std::vector<PatchSolution>& solution,
                                   const CostModel& costs) {
   const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
-  return plan_render_memory(options, R * (V + 1), starting_record_counts(scene, owned, V), costs);
+  return plan_render_memory(options, R * (V + 1),
+                            share_bytes(starting_shares(scene, solution, owned, V), costs), costs);
+}
+
+std::vector<double> render_memory_without_records(const RenderOptions& options, int R, int V,
+                                                  const CostModel& costs) {
+  const int N = R * (V + 1);
+  return plan_render_memory(options, N, std::vector<double>(std::size_t(N), 0.0), costs);
 }
 
 RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, int R, int V,
-                              const std::vector<Rgb>& element_radiosity,
+                              const std::vector<PatchSolution>& solution,
                               const std::vector<simgrid::s4u::Host*>& hosts,
                               const PlatformConfig& platform, const CostModel& costs,
-                              std::vector<TraceEvent>* trace) {
+                              bool memory_cap, std::vector<TraceEvent>* trace,
+                              const std::vector<std::vector<int>>* held_patches) {
   const int N = R * (V + 1);
-  const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
-  const RenderSetup setup{scene, options, N,
-                          starting_shares(scene, element_radiosity, owned, V)};
-  const std::vector<double> memory = render_memory(scene, options, R, V, costs);
+  const std::vector<std::vector<int>> owned =
+      held_patches ? *held_patches : partition_patches_by_elements(scene, R);
+  const RenderSetup setup{scene, options, N, starting_shares(scene, solution, owned, V)};
+  // Memory, from the records the solution has now (subdivision changes them as it runs).
+  const std::vector<double> memory =
+      plan_render_memory(options, N, share_bytes(setup.shares, costs), costs);
+  RenderResult result;
+  if (memory_cap)
+    for (int node = 0; node < N; ++node)
+      if (memory[std::size_t(node)] > platform.node_memory) {
+        result.out_of_memory_node = node;
+        result.out_of_memory_bytes = memory[std::size_t(node)];
+        return result;
+      }
   std::deque<NodeRuntime> runtimes;
   std::deque<RenderProcessor> programs;
   for (int node = 0; node < N; ++node) {
@@ -45,7 +64,6 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
     simgrid::s4u::Actor::create("render-" + std::to_string(node), hosts[std::size_t(node)],
                                 [&program] { program.run(); });
   }
-  RenderResult result;
   result.ran = true;
   const double start = simgrid::s4u::Engine::get_clock();
   simgrid::s4u::Engine::get_instance()->run();

@@ -76,11 +76,18 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"block_size", config.block_size},
                  {"pipelined", config.pipelined},
                  {"memory_cap", config.memory_cap},
+                 {"subdivide", config.options.subdivision.enabled},
+                 {"subdivide_contrast", config.options.subdivision.contrast},
+                 {"subdivide_max_level", config.options.subdivision.max_level},
+                 {"subdivide_min_area", config.options.subdivision.min_area},
+                 {"balance", config.balancing.enabled},
+                 {"balance_threshold", config.balancing.threshold},
                  {"render_parallel",
                   config.render.enabled ? row_partition_name(config.render.partition) : "off"},
                  {"render_distribution", render_distribution_name(config.render.distribution)},
                  {"image_width", config.render.width},
-                 {"image_height", config.render.height}};
+                 {"image_height", config.render.height},
+                 {"outline_elements", config.render.outline_elements}};
   j["status"] = status_name(result.status);
   if (result.status == RunStatus::kOutOfMemory)
     j["out_of_memory"] = {{"node", result.out_of_memory.node},
@@ -96,6 +103,13 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   j["seconds_per_iteration"] = per_iteration ? nlohmann::json(*per_iteration) : nlohmann::json();
   j["iterations_measured"] = iterations_measured(result.iteration_seconds);
   j["shooters"] = result.shooters;
+  // Sections 4.1, 4.2: the elements each radiosity processor held at each shooter selection
+  // (with subdivision or balancing on), the elements at the end, and the patches moved.
+  j["elements_per_iteration"] = result.elements_per_iteration;
+  long elements = 0;
+  for (const PatchSolution& p : result.solution) elements += long(p.cells.size());
+  j["elements_at_end"] = elements;
+  j["patches_moved"] = result.patches_moved;
   nlohmann::json radiosity = nlohmann::json::array();
   for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});
   j["patch_radiosity"] = radiosity;

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
 
 #include <simgrid/s4u/Engine.hpp>
 
@@ -42,7 +41,8 @@ std::string failure_of(const SimulationResult& result, const NodePrograms& progr
   return "";
 }
 
-// The master's record of the run: its shooters and when each iteration ended.
+// The master's record of the run: its shooters, when each iteration ended, and (sections
+// 4.1, 4.2) every radiosity processor's elements at the start of each iteration.
 void collect_iterations(const RadiosityProcessor& master, SimulationResult& result) {
   result.converged = master.converged();
   result.shooters = master.shooters();
@@ -52,6 +52,7 @@ void collect_iterations(const RadiosityProcessor& master, SimulationResult& resu
     result.iteration_seconds.push_back(end - previous);
     previous = end;
   }
+  result.elements_per_iteration = master.elements_per_iteration();
 }
 
 // Runs the node programs to the end on the simulated machine, then the rendering phase if
@@ -60,8 +61,6 @@ void run_programs(const Scene& scene, const SimulationConfig& config,
                   const PlatformConfig& platform, const CostModel& costs,
                   const ProgramSetup& setup, const std::vector<std::vector<int>>& owned,
                   NodePrograms& programs, SimulationResult& result) {
-  if (long(scene.elements.size()) != scene.element_total())
-    throw std::logic_error("run_simulation: the scene's elements are not built");
   const std::vector<simgrid::s4u::Host*> hosts =
       build_simulated_platform(platform, config.simgrid_arguments);
   result.simgrid_config = simgrid_settings_used(config.simgrid_arguments);
@@ -69,13 +68,29 @@ void run_programs(const Scene& scene, const SimulationConfig& config,
   report_iterations(programs, config, setup.emitted_power);
   simgrid::s4u::Engine::get_instance()->run();
   result.simulated_seconds = simgrid::s4u::Engine::get_clock();
-  collect_iterations(programs.radiosity.front(), result);
-  collect_solution(scene, programs, result.element_radiosity, result.patch_radiosity);
-  if (config.render.enabled && failure_of(result, programs).empty())
+  const RadiosityProcessor& master = programs.radiosity.front();
+  collect_iterations(master, result);
+  collect_solution(scene, programs, result.solution, result.patch_radiosity, result.held_patches);
+  result.element_radiosity = level_zero_radiosity(scene, result.solution);
+  for (const RadiosityProcessor& rp : programs.radiosity) result.patches_moved += rp.patches_sent();
+  if (master.out_of_memory().node >= 0) {  // a processor could not make its cuts (4.1, 4.2)
+    result.status = RunStatus::kOutOfMemory;
+    const NodeStats& node = programs.runtimes[std::size_t(master.out_of_memory().node)].stats();
+    result.out_of_memory = {node.node, node.role, master.out_of_memory().needed_bytes,
+                            platform.node_memory};
+  }
+  if (config.render.enabled && result.status == RunStatus::kOk && failure_of(result, programs).empty()) {
     result.render = run_render_phase(scene, config.render, setup.placement.radiosity_processors,
-                                     setup.placement.visibility_processors,
-                                     result.element_radiosity, hosts, platform, costs,
-                                     config.record_trace ? &result.trace : nullptr);
+                                     setup.placement.visibility_processors, result.solution, hosts,
+                                     platform, costs, config.memory_cap,
+                                     config.record_trace ? &result.trace : nullptr,
+                                     &result.held_patches);
+    if (result.render.out_of_memory_node >= 0) {  // its records do not fit (section 2.3)
+      result.status = RunStatus::kOutOfMemory;
+      result.out_of_memory = {result.render.out_of_memory_node, NodeRole::kRendering,
+                              result.render.out_of_memory_bytes, platform.node_memory};
+    }
+  }
 }
 
 }  // namespace

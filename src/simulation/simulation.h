@@ -13,8 +13,7 @@
 
 namespace ncube {
 
-// Runs the simulation. Unless a node is out of memory (config.memory_cap), the scene's
-// elements must be built. Status kFailed when a node program did not reach its end (the
+// Runs the simulation. Status kFailed when a node program did not reach its end (the
 // simulation deadlocked) or a reported number is not finite; then `failure` says which.
 SimulationResult run_simulation(const Scene& scene, const SimulationConfig& config,
                                 const PlatformConfig& platform, const CostModel& costs);

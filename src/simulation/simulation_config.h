@@ -18,11 +18,11 @@ struct IterationReport {
 };
 
 // The configuration of one run: the node programs' options (ProgramOptions: the algorithm's,
-// block size, pipelining), the machine's size and files, and what the run records.
+// block size, pipelining, memory cap, load balancing), the machine's size and files, and what
+// the run records.
 struct SimulationConfig : ProgramOptions {
   int radiosity_processors = 1;   // R
   int visibility_processors = 0;  // V, per radiosity processor
-  bool memory_cap = true;         // false: report the memory needed, never stop for it
   bool record_trace = false;
   std::string platform_file;
   std::string cost_model_file;

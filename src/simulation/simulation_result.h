@@ -8,6 +8,7 @@
 #include "nodes/node_role.h"
 #include "nodes/node_runtime.h"
 #include "radiosity/work_counts.h"
+#include "scene/patch_mesh.h"
 #include "scene/scene.h"
 #include "simulation/render_phase.h"
 
@@ -20,8 +21,9 @@ struct OutOfMemory {
   double available_bytes = 0.0;
 };
 
-// How a run ended: it ran to its end, a node was out of memory before it started, or a
-// node program did not reach its end or a number was not finite.
+// How a run ended: it ran to its end, a node was out of memory (before it started, or a
+// radiosity processor that could not make its cuts, sections 4.1 and 4.2, or the rendering
+// phase's records), or a node program did not reach its end or a number was not finite.
 enum class RunStatus { kOk, kOutOfMemory, kFailed };
 // The status's name in the result file: "ok", "out_of_memory", "failed".
 const char* status_name(RunStatus status);
@@ -36,7 +38,16 @@ struct SimulationResult {
   std::vector<double> iteration_seconds;  // simulated seconds of each iteration, at the master
   std::vector<int> shooters;
   std::vector<Rgb> patch_radiosity;    // area-weighted mean of each patch's elements
-  std::vector<Rgb> element_radiosity;  // for rendering
+  // Every patch's elements and radiosities as the radiosity processors hold them at the end
+  // (one entry per scene patch, in scene order).
+  std::vector<PatchSolution> solution;
+  std::vector<Rgb> element_radiosity;  // per level-0 element of the scene (area-weighted mean
+                                       // of its descendants when cut), for rendering
+  std::vector<std::vector<int>> held_patches;  // per radiosity processor, at the end
+  // At the master, per iteration: each radiosity processor's elements when it began
+  // (subdivision or balancing on).
+  std::vector<std::vector<long>> elements_per_iteration;
+  long patches_moved = 0;  // by load balancing (section 4.2)
   WorkCounts counts;                   // all nodes together
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace

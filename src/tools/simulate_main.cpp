@@ -91,8 +91,9 @@ int simulate(int argc, char** argv) {
   if (!options.image_file.empty() && result.status == ncube::RunStatus::kOk)  // the simulated phase's picture if it ran
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
-                                 scene, scene.camera, result.element_radiosity,
-                                 options.config.render.width, options.config.render.height)));
+                                 scene, scene.camera, result.solution,
+                                 options.config.render.width, options.config.render.height,
+                                 options.config.render.outline_elements)));
   outputs.commit();
   if (result.status == ncube::RunStatus::kOutOfMemory) {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",

@@ -108,6 +108,30 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       ->check(kDecimalInteger & CLI::Range(1, 1000000));
   app.add_flag("--pipelined", config.pipelined,
                "send the next block of points before using the answers of this one");
+  SubdivisionOptions& subdivision = config.options.subdivision;
+  app.add_flag("--subdivide", subdivision.enabled,
+               "adaptive subdivision (section 4.1): after each shot, cut the elements whose "
+               "corner radiosities differ too much, recursively");
+  app.add_option("--subdivide-contrast", subdivision.contrast,
+                 "cut an element when (Ymax - Ymin) / (Ymax + Ymin) of its corner luminances "
+                 "exceeds this")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--subdivide-max-level", subdivision.max_level,
+                 "deepest element level (0: the scene's grid; each level cuts in four)")
+      ->capture_default_str()
+      ->check(kDecimalInteger & CLI::Range(0, kMaxCellLevel));
+  app.add_option("--subdivide-min-area", subdivision.min_area,
+                 "no element smaller than this (scene units squared)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e300));
+  app.add_flag("--balance", config.balancing.enabled,
+               "dynamic load balancing (section 4.2): move patches with their elements from "
+               "radiosity processors with significantly more elements, or short of memory");
+  app.add_option("--balance-threshold", config.balancing.threshold,
+                 "\"significantly\": more than (1 + this) x the mean element count")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
   bool unlimited_memory = false;
   app.add_flag("--unlimited-memory", unlimited_memory,
                "report each node's memory but never stop for lack of it");
@@ -141,6 +165,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "how the elements reach every node in the rendering phase: ring or hypercube")
       ->capture_default_str()
       ->check(CLI::IsMember({"ring", "hypercube"}));
+  app.add_flag("--outline-elements", config.render.outline_elements,
+               "draw each element's edges as thin dark lines in the picture (to see the mesh)");
   app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
   std::vector<std::string> cfg, log;
   app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "

@@ -1,0 +1,172 @@
+#include "radiosity/answer_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "nodes/placement.h"
+#include "radiosity/occluders.h"
+#include "radiosity/scene_blockers.h"
+#include "receiver_sample.h"
+#include "scene/scene_loader.h"
+
+namespace ncube {
+namespace {
+
+Scene scene1() { return load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/scene1.json"); }
+
+struct Block {
+  std::vector<Vec3> points;
+  std::vector<int> patches;
+  std::vector<PartMask> masks;
+  WorkCounts counts;
+};
+
+void ask(const Occluders& set, const Shooter& shooter, Block& block) {
+  block.masks.assign(block.points.size(), 0);
+  block.counts = WorkCounts{};
+  set.unblocked_parts(block.points.data(), block.patches.data(), block.points.size(), shooter,
+                      block.masks.data(), block.counts, 1);
+}
+
+// The answers of a set built afresh (a new set has a new id: nothing in the cache is its).
+Block fresh(const Scene& scene, const std::vector<int>& patches, RayTestPolicy policy,
+            const Shooter& shooter, Block block) {
+  const Occluders set(scene, patches, policy);
+  ask(set, shooter, block);
+  return block;
+}
+
+// Per point, the literal brute-force loop.
+Block brute_force(const Occluders& set, const Shooter& shooter, Block block) {
+  block.counts = WorkCounts{};
+  for (std::size_t k = 0; k < block.points.size(); ++k)
+    block.masks[k] = set.unblocked_parts_brute_force(block.points[k], block.patches[k], shooter,
+                                                     block.counts);
+  return block;
+}
+
+TEST(AnswerCache, ABlockAskedAgainGetsTheAnswersAndCountsOfAFreshComputation) {
+  const Scene scene = scene1();
+  const auto blockers = SceneBlockers::for_scene(scene);  // held: the sets share it
+  const AnswerCache& cache = blockers->answer_cache();
+  std::mt19937 random(5);
+  // A share (as on a visibility processor), the whole scene, and the first-blocker loop.
+  const std::vector<int> share = visibility_share(scene, 3, 1), all = visibility_share(scene, 1, 0);
+  for (const auto& [patches, policy] :
+       {std::pair{share, RayTestPolicy::kTestAllPatches}, std::pair{all, RayTestPolicy::kTestAllPatches},
+        std::pair{share, RayTestPolicy::kStopAtFirstBlocker}}) {
+    const Occluders set(scene, patches, policy);
+    for (int shooter_patch : {3, 40, 200}) {
+      const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
+      const ReceiverSample sample = sample_receivers(scene, shooter_patch, 100, random);
+      Block first{sample.points, sample.patches, {}, {}};
+      ask(set, shooter, first);
+      const std::uint64_t hits = cache.hits();
+      Block again = first;
+      ask(set, shooter, again);
+      EXPECT_EQ(cache.hits(), hits + 1) << "the second question must be answered from memory";
+      const Block reference = fresh(scene, patches, policy, shooter, first);
+      EXPECT_EQ(again.masks, reference.masks);
+      EXPECT_EQ(again.counts, reference.counts);
+      const Block exact = brute_force(set, shooter, first);
+      EXPECT_EQ(again.masks, exact.masks);
+      EXPECT_EQ(again.counts, exact.counts);
+      // The answers must tell blocked from unblocked rays for the comparison to mean much.
+      int visible = 0;
+      for (PartMask m : again.masks) visible += __builtin_popcountll(m);
+      EXPECT_GT(visible, 0);
+      EXPECT_LT(visible, 64 * 100);
+    }
+  }
+}
+
+TEST(AnswerCache, ChangedPointsPatchesOrTargetsAreNotServedFromMemory) {
+  const Scene scene = scene1();
+  const std::vector<int> share = visibility_share(scene, 2, 0);
+  const Occluders set(scene, share, RayTestPolicy::kTestAllPatches);
+  const Shooter shooter = make_shooter(scene, 40, Rgb(1.0), 64);
+  std::mt19937 random(11);
+  const ReceiverSample sample = sample_receivers(scene, 40, 100, random);
+  Block block{sample.points, sample.patches, {}, {}};
+  ask(set, shooter, block);
+  auto expect_exact = [&](const Block& changed, const Shooter& s, const char* what) {
+    Block asked = changed;
+    ask(set, s, asked);
+    const Block exact = brute_force(set, s, changed);
+    EXPECT_EQ(asked.masks, exact.masks) << what;
+    EXPECT_EQ(asked.counts, exact.counts) << what;
+  };
+  // Every point moved to another element's centre (as adaptive subdivision would): same
+  // count, same block position, other answers.
+  Block moved = block;
+  const ReceiverSample other = sample_receivers(scene, 40, 100, random);
+  moved.points = other.points;
+  moved.patches = other.patches;
+  expect_exact(moved, shooter, "moved points");
+  // One point moved by the smallest step a double allows.
+  Block nudged = block;
+  nudged.points[50].x = std::nextafter(nudged.points[50].x, 1e300);
+  const AnswerCache& cache = SceneBlockers::for_scene(scene)->answer_cache();  // held by `set`
+  const std::uint64_t misses = cache.misses();
+  expect_exact(nudged, shooter, "one coordinate nudged");
+  EXPECT_EQ(cache.misses(), misses + 1);
+  // The same points said to lie on other patches (the receiver's patch is not tested).
+  Block relabelled = block;
+  for (std::size_t k = 0; k < relabelled.patches.size(); ++k)
+    relabelled.patches[k] = other.patches[(k + 1) % other.patches.size()];
+  expect_exact(relabelled, shooter, "other receiver patches");
+  // The same shooter patch with fewer parts (other targets).
+  expect_exact(block, make_shooter(scene, 40, Rgb(1.0), 16), "16 parts");
+}
+
+TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
+  const std::size_t budget = 64 * 1024;
+  AnswerCache cache(budget);
+  Shooter shooter;
+  shooter.patch = 7;
+  shooter.part_count = 4;
+  for (int k = 0; k < 4; ++k) shooter.targets[k] = Vec3(k, 1, 2);
+  std::vector<Vec3> points(100);
+  std::vector<int> patches(100, 3);
+  std::vector<PartMask> out(100);
+  auto block_of = [&](int i) {
+    for (int k = 0; k < 100; ++k) points[k] = Vec3(i, k, 0.5);
+  };
+  for (int i = 0; i < 200; ++i) {
+    block_of(i);
+    const std::vector<PartMask> masks(100, PartMask(i % 2 ? i : i | 0x100));  // partial masks
+    WorkCounts counts;
+    counts.rays = std::uint64_t(i);
+    cache.store(1, shooter, points.data(), patches.data(), 100, masks.data(), counts);
+    EXPECT_LE(cache.bytes(), budget);
+  }
+  EXPECT_LE(cache.peak_bytes(), budget);
+  EXPECT_GT(cache.bytes(), budget / 2) << "the budget should be used, not wasted";
+  // 200 blocks of about 4 KB (the points are the larger part) do not fit in 64 KB: the
+  // first went, the last is there with its own answers.
+  WorkCounts counts;
+  block_of(0);
+  EXPECT_FALSE(cache.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  block_of(199);
+  ASSERT_TRUE(cache.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  EXPECT_EQ(out[0], PartMask(199));
+  EXPECT_EQ(out[99], PartMask(199));
+  EXPECT_EQ(counts.rays, 199u);
+  // Another set is never served another's answers; a forgotten set has none left.
+  EXPECT_FALSE(cache.find(2, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  cache.forget_set(1);
+  EXPECT_EQ(cache.entries(), 0u);
+  EXPECT_EQ(cache.bytes(), 0u) << "keys go with their last entry";
+  // A budget of zero keeps nothing.
+  AnswerCache off(0);
+  const std::vector<PartMask> ones(100, 1);
+  off.store(1, shooter, points.data(), patches.data(), 100, ones.data(), WorkCounts{});
+  EXPECT_FALSE(off.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+}
+
+}  // namespace
+}  // namespace ncube
