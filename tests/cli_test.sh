@@ -114,6 +114,15 @@ cmp -s <(strip_command "$work/c.json") <(strip_command "$work/d.json") || fail "
 grep -q '"traceEvents"' "$work/c.trace" || fail "trace is not a trace-event file"
 [ "$(head -c 4 "$work/a.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "image is not a PNG"
 
+# Adaptive subdivision with load balancing (sections 4.1, 4.2) moves patches and is just as
+# deterministic.
+"$simulate" scene0.json --R 8 --subdivide --balance --iterations 8 --json "$work/s1.json" --quiet || fail "run s1"
+"$simulate" scene0.json --R 8 --subdivide --balance --iterations 8 --json "$work/s2.json" --quiet || fail "run s2"
+cmp -s <(strip_command "$work/s1.json") <(strip_command "$work/s2.json") || fail "subdivision and balancing: result files differ"
+/usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))
+sys.exit(not (r["patches_moved"] > 0 and r["elements_at_end"] > r["scene"]["elements"]))' "$work/s1.json" ||
+  fail "subdivision and balancing: the run cut no element or moved no patch"
+
 # The nCube2 as a SimGrid platform file gives the same result as the JSON platform.
 "$simulate" scene0.json --R 8 --V 7 --iterations 2 --json "$work/j.json" --quiet || fail "run json"
 "$simulate" scene0.json --R 8 --V 7 --iterations 2 --platform "$root/platforms/ncube2.xml" --json "$work/x.json" --quiet || fail "run xml"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # --threads shares a run's host work out over host threads; the result file must not depend
 # on it: runs with 1 and 2 threads are identical apart from "host_seconds" and the command line (V = 0, V > 0
-# with its shared lists of blockers, both ray-test policies, and octree visibility). Called by ctest as:
+# with its shared lists of blockers, both ray-test policies, octree visibility, and adaptive
+# subdivision with load balancing). Called by ctest as:
 # host_threads_test.sh SIMULATE REPO_ROOT
 set -u
 simulate="$1"
@@ -39,6 +40,10 @@ check scene1-R2-V3-first-blocker scene1.json --R 2 --V 3 --samples 16 --iteratio
 check scene0-R4-V0-first-blocker scene0.json --R 4 --V 0 --samples 64 --iterations 10 --ray-test first-blocker
 check scene1-R2-V3-octree scene1.json --R 2 --V 3 --samples 64 --iterations 4 --visibility octree
 check scene0-R4-V0-octree scene0.json --R 4 --V 0 --samples 64 --iterations 10 --visibility octree
+# Adaptive subdivision and load balancing (sections 4.1, 4.2): children shot at their own
+# centres, patches moved between processors.
+check scene0-R8-V0-subdivide-balance scene0.json --R 8 --V 0 --iterations 8 --subdivide --balance
+check scene0-R4-V1-subdivide-balance scene0.json --R 4 --V 1 --iterations 8 --subdivide --balance
 
 [ "$failures" -eq 0 ] && echo "host threads: all result files identical" 
 exit $((failures > 0))
