@@ -29,19 +29,35 @@ NodeRuntime::NodeRuntime(int node, NodeRole role, int rank, const PlatformConfig
 void NodeRuntime::start() { mailbox_of(stats_.node)->set_receiver(simgrid::s4u::Actor::self()); }
 
 void NodeRuntime::finish() {
+  run_charged();
   mailbox_of(stats_.node)->set_receiver(nullptr);
   finished_ = true;
   stats_.memory_bytes_at_end = memory_;
 }
 
-double NodeRuntime::now() const { return simgrid::s4u::Engine::get_clock(); }
+double NodeRuntime::now() {
+  run_charged();
+  return simgrid::s4u::Engine::get_clock();
+}
 
 void NodeRuntime::busy(double seconds, const char* what, double& account) {
   if (seconds <= 0.0) return;
-  const double start = now();
-  simgrid::s4u::this_actor::execute(seconds * platform_.node_speed);
-  account += now() - start;
-  if (trace_) trace_->push_back({stats_.node, what, start, now()});
+  account += seconds;
+  charged_.push_back({what, seconds});
+}
+
+void NodeRuntime::run_charged() {
+  if (charged_.empty()) return;
+  double total = 0.0;
+  for (const Charged& c : charged_) total += c.seconds;
+  double start = simgrid::s4u::Engine::get_clock();
+  simgrid::s4u::this_actor::execute(total * platform_.node_speed);
+  if (trace_)
+    for (const Charged& c : charged_) {
+      trace_->push_back({stats_.node, c.what, start, start + c.seconds});
+      start += c.seconds;
+    }
+  charged_.clear();
 }
 
 void NodeRuntime::compute(const WorkCounts& counts) {
@@ -57,6 +73,7 @@ void NodeRuntime::compute(const RenderCounts& counts) {
 void NodeRuntime::send(int to, std::unique_ptr<Message> message) {
   busy(platform_.send_overhead, "overhead", stats_.overhead_seconds);
   const double bytes = payload_bytes(*message, costs_) + costs_.message_header_bytes;
+  run_charged();  // the message leaves once the sender's overhead has run
   message->from = stats_.node;
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;
@@ -77,17 +94,24 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
       deferred_.erase(it);
       break;
     }
-  const double start = now();
+  // A message already delivered is taken at once; before waiting for one, the charged CPU
+  // time runs (it would have run before this receive began).
+  simgrid::s4u::Mailbox* mailbox = mailbox_of(stats_.node);
+  double wait_start = -1.0;
   while (!message) {
-    std::unique_ptr<Message> arrived = mailbox_of(stats_.node)->get_unique<Message>();
+    if (!mailbox->ready()) run_charged();
+    const double before = simgrid::s4u::Engine::get_clock();
+    std::unique_ptr<Message> arrived = mailbox->get_unique<Message>();
+    if (simgrid::s4u::Engine::get_clock() > before && wait_start < 0.0) wait_start = before;
     if (wanted(*arrived))
       message = std::move(arrived);
     else
       deferred_.push_back(std::move(arrived));
   }
-  if (now() > start) {
-    stats_.waiting_seconds += now() - start;
-    if (trace_) trace_->push_back({stats_.node, "wait", start, now()});
+  if (wait_start >= 0.0) {
+    const double end = simgrid::s4u::Engine::get_clock();
+    stats_.waiting_seconds += end - wait_start;
+    if (trace_) trace_->push_back({stats_.node, "wait", wait_start, end});
   }
   ++stats_.messages_received;
   XBT_DEBUG("node %d <- node %d: kind %d", stats_.node, message->from, int(message->kind));

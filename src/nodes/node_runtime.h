@@ -1,6 +1,6 @@
 // The simulation plumbing beneath the node programs. A node program says what work it did
 // and what it sends; this layer turns counted work into CPU time through the cost model
-// (this_actor::execute, one call per batch), charges the nCube2's per-message software
+// (this_actor::execute; the steps charged between two interactions with other nodes run as one call), charges the nCube2's per-message software
 // overhead on both sides as CPU time, sends the modeled bytes over the SimGrid network,
 // and keeps the per-node statistics and the timeline for the trace.
 #pragma once
@@ -75,12 +75,26 @@ class NodeRuntime {
   }
   double memory() const { return memory_; }
   double node_memory() const { return platform_.node_memory; }
-  double now() const;
+  // The simulated time, after the CPU time charged so far has run.
+  double now();
   const NodeStats& stats() const { return stats_; }
   const CostModel& costs() const { return costs_; }
 
  private:
+  // Charges `seconds` of CPU time. It runs at the next interaction with the simulated
+  // machine (a send, a receive that has to wait, the clock read, the end): consecutive steps
+  // of a node's program (receive overhead, work, send overhead) then take one SimGrid
+  // activity instead of one each, with the same simulated times up to rounding. Valid
+  // because one program runs per node, so nothing else wants the CPU meanwhile.
   void busy(double seconds, const char* what, double& account);
+  // Runs the CPU time charged and not yet run, as one execute().
+  void run_charged();
+
+  struct Charged {
+    const char* what;
+    double seconds;
+  };
+  std::vector<Charged> charged_;
 
   const PlatformConfig& platform_;
   const CostModel& costs_;
