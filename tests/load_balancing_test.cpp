@@ -21,8 +21,8 @@ TEST(BalancingRule, PairsTheMostLoadedWithTheLeastLoaded) {
   // Elements 100, 400, 250, 50 (mean 200): only rank 1 is above 1.2 x 200 = 240 ... and
   // rank 2 (250) too. Rank 1 pairs with rank 3 (least loaded): min(400 - 200, 200 - 50) =
   // 150 elements; rank 2 with rank 0: min(50, 100) = 50.
-  std::vector<ProcessorLoad> loads{{0, 100, 1e6, 0, 1e3}, {1, 400, 2e6, 0, 1e3},
-                                   {2, 250, 1e6, 0, 1e3}, {3, 50, 3e6, 0, 1e3}};
+  std::vector<ProcessorLoad> loads{{0, 100, 1e6, 0, 1e3, 10}, {1, 400, 2e6, 0, 1e3, 10},
+                                   {2, 250, 1e6, 0, 1e3, 10}, {3, 50, 3e6, 0, 1e3, 10}};
   BalancingOptions o;
   o.enabled = true;
   const BalanceDecision d = plan_transfers(loads, 4e6, o);
@@ -34,6 +34,19 @@ TEST(BalancingRule, PairsTheMostLoadedWithTheLeastLoaded) {
   EXPECT_EQ(d.transfers[1].from, 2);
   EXPECT_EQ(d.transfers[1].to, 0);
   EXPECT_EQ(d.transfers[1].elements, 50);
+  // A sender whose smallest movable patch is larger than its order gets no order (it could
+  // move nothing); the next most loaded still pairs with the least loaded.
+  loads[1].smallest_patch_elements = 151;
+  const BalanceDecision d2 = plan_transfers(loads, 4e6, o);
+  ASSERT_EQ(d2.transfers.size(), 1u);
+  EXPECT_EQ(d2.transfers[0].from, 2);
+  EXPECT_EQ(d2.transfers[0].to, 3);
+  EXPECT_EQ(d2.transfers[0].elements, 50);  // min(250 - 200, 200 - 50)
+  loads[1].smallest_patch_elements = 150;  // fits exactly
+  EXPECT_EQ(plan_transfers(loads, 4e6, o).transfers.size(), 2u);
+  loads[1].smallest_patch_elements = 0;  // nothing movable
+  EXPECT_EQ(plan_transfers(loads, 4e6, o).transfers.size(), 1u);
+  loads[1].smallest_patch_elements = 10;
   // Below the threshold nothing moves; switched off nothing moves.
   o.threshold = 1.5;  // 2.5 x 200 = 500 > 400
   EXPECT_TRUE(plan_transfers(loads, 4e6, o).transfers.empty());
@@ -43,8 +56,8 @@ TEST(BalancingRule, PairsTheMostLoadedWithTheLeastLoaded) {
 }
 
 TEST(BalancingRule, ShortOfMemoryGivesToTheEmptiestOrFails) {
-  std::vector<ProcessorLoad> loads{{0, 100, 3.9e6, 5000, 2e5}, {1, 100, 1e6, 0, 1e3},
-                                   {2, 100, 2e6, 0, 1e3}};
+  std::vector<ProcessorLoad> loads{{0, 100, 3.9e6, 5000, 2e5, 10}, {1, 100, 1e6, 0, 1e3, 10},
+                                   {2, 100, 2e6, 0, 1e3, 10}};
   BalancingOptions o;
   o.enabled = true;
   BalanceDecision d = plan_transfers(loads, 4e6, o);

@@ -32,11 +32,11 @@ TEST(Messages, EachKindHasItsHandCountedSize) {
   EXPECT_EQ(payload_bytes(of(MessageKind::kCandidate), c), 88);
   EXPECT_EQ(payload_bytes(of(MessageKind::kShooter), c), 88);
   EXPECT_EQ(payload_bytes(of(MessageKind::kStop), c), 88);
-  // Sections 4.1, 4.2: a candidate carrying 3 loads of 5 ints: 88 + 3 x 20 = 148; a shooter
+  // Sections 4.1, 4.2: a candidate carrying 3 loads of 6 ints: 88 + 3 x 24 = 160; a shooter
   // carrying 2 balancing orders of 4 ints: 88 + 2 x 16 = 120.
   Message candidate = of(MessageKind::kCandidate);
   candidate.loads.resize(3);
-  EXPECT_EQ(payload_bytes(candidate, c), 148);
+  EXPECT_EQ(payload_bytes(candidate, c), 160);
   Message shooter = of(MessageKind::kShooter);
   shooter.transfers.resize(2);
   EXPECT_EQ(payload_bytes(shooter, c), 120);

@@ -48,7 +48,12 @@ BalanceDecision plan_transfers(const std::vector<ProcessorLoad>& loads, double n
     const ProcessorLoad& to = loads[std::size_t(order[std::size_t(low)])];
     if (double(to.elements) >= mean) break;
     const long elements = long(std::min(double(from.elements) - mean, mean - double(to.elements)));
-    decision.transfers.push_back({from.rank, to.rank, elements, 0.5 * (node_memory - to.bytes)});
+    const double room = 0.5 * (node_memory - to.bytes);
+    // An order its sender could not fill would cost a message and move nothing.
+    if (from.smallest_patch_elements <= 0 || from.smallest_patch_elements > elements ||
+        from.smallest_patch_bytes > room)
+      continue;
+    decision.transfers.push_back({from.rank, to.rank, elements, room});
     busy[std::size_t(from.rank)] = busy[std::size_t(to.rank)] = true;
     --low;
   }

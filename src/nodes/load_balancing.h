@@ -10,7 +10,8 @@
 //     movable patch does not fit there, the run ends out of memory.
 //  2. Elements: processors with more than (1 + threshold) x the mean element count are paired,
 //     most loaded first, with those below the mean, least loaded first; each pair moves
-//     patches of up to the smaller of the two distances to the mean, in elements.
+//     patches of up to the smaller of the two distances to the mean, in elements, and only
+//     when the sender's smallest movable patch fits (so no order moves nothing).
 // The sender chooses the patches: largest element count first (ties: lower patch index),
 // never the shooter, each only if it keeps within the order's elements and bytes.
 #pragma once
@@ -34,7 +35,10 @@ struct ProcessorLoad {
   long elements = 0;
   double bytes = 0.0;                 // its memory now
   double wanted_bytes = 0.0;          // bytes of the cuts it could not make (no room)
-  double smallest_patch_bytes = 0.0;  // its smallest patch with elements (0: none movable)
+  // Its smallest movable patch (fewest element records): never its own shooter candidate,
+  // the one patch of it the master may choose as shooter. 0: none movable.
+  double smallest_patch_bytes = 0.0;
+  long smallest_patch_elements = 0;
 };
 
 // "Move patches with at most `elements` elements and `bytes` bytes from `from` to `to`."

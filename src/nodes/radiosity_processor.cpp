@@ -30,7 +30,7 @@ void RadiosityProcessor::run() {
     const ShooterChoice local_best = engine_.best_shooter(search);
     runtime_.compute(search);
     std::vector<ProcessorLoad> loads;
-    if (setup_.loads_change()) loads.push_back(load());
+    if (setup_.loads_change()) loads.push_back(load(local_best.patch));
     const ShooterChoice global_best = selection_.reduce_to_master(local_best, loads);
     const Decision decision = selection_.broadcast_from_master(
         selection_.is_master() ? decide(global_best, loads) : Decision{});
@@ -45,11 +45,17 @@ void RadiosityProcessor::run() {
   runtime_.finish();
 }
 
-ProcessorLoad RadiosityProcessor::load() const {
-  ProcessorLoad l{rank_, engine_.store().element_count(), runtime_.memory(), wanted_bytes_, 0.0};
+ProcessorLoad RadiosityProcessor::load(int candidate) const {
+  ProcessorLoad l{rank_, engine_.store().element_count(), runtime_.memory(), wanted_bytes_};
+  // The smallest patches it could give (in bytes, in elements): not its candidate, which
+  // may become the shooter.
   for (const StoredPatch& s : engine_.store().patches()) {
+    if (s.patch == candidate) continue;
     const double bytes = patch_bytes(setup_.scene, s, runtime_.costs(), !holds_geometry_of_all_patches());
+    const long elements = long(s.elements.size());
     if (l.smallest_patch_bytes == 0.0 || bytes < l.smallest_patch_bytes) l.smallest_patch_bytes = bytes;
+    if (l.smallest_patch_elements == 0 || elements < l.smallest_patch_elements)
+      l.smallest_patch_elements = elements;
   }
   return l;
 }
@@ -109,6 +115,8 @@ void RadiosityProcessor::carry_out(const std::vector<Transfer>& transfers, int s
       // The patches leave this node's memory as they travel: their bytes as held.
       const double bytes = payload_bytes(*message, runtime_.costs());
       patches_sent_ += long(message->patches.size());
+      ++transfers_sent_;
+      transfer_bytes_sent_ += bytes;
       runtime_.change_memory(-bytes);
       XBT_DEBUG("rank %d gives %zu patches (%.0f bytes) to rank %d", rank_, message->patches.size(),
                 bytes, t.to);

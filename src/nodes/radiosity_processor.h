@@ -41,10 +41,14 @@ class RadiosityProcessor {
   const std::vector<std::vector<long>>& elements_per_iteration() const { return elements_; }
   // Patches this processor gave away and received (4.2).
   long patches_sent() const { return patches_sent_; }
+  // Transfers it carried out as sender (section 4.2): messages and their modeled payload.
+  long transfers_sent() const { return transfers_sent_; }
+  double transfer_bytes_sent() const { return transfer_bytes_sent_; }
   long patches_received() const { return patches_received_; }
 
  private:
-  ProcessorLoad load() const;
+  // This processor's load for the master (section 4.2), `candidate` being its shooter candidate.
+  ProcessorLoad load(int candidate) const;
   Decision decide(const ShooterChoice& global_best, const std::vector<ProcessorLoad>& loads);
   void tell_visibility_processors(const Decision& decision);
   void carry_out(const std::vector<Transfer>& transfers, int shooter);
@@ -69,6 +73,8 @@ class RadiosityProcessor {
   std::vector<std::vector<long>> elements_;
   double wanted_bytes_ = 0.0;  // bytes of the cuts the last shot could not make
   long patches_sent_ = 0, patches_received_ = 0;
+  long transfers_sent_ = 0;
+  double transfer_bytes_sent_ = 0.0;
 };
 
 }  // namespace ncube

@@ -110,6 +110,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   for (const PatchSolution& p : result.solution) elements += long(p.cells.size());
   j["elements_at_end"] = elements;
   j["patches_moved"] = result.patches_moved;
+  j["transfers"] = {{"messages", result.transfer_messages}, {"payload_bytes", result.transfer_bytes}};
   nlohmann::json radiosity = nlohmann::json::array();
   for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});
   j["patch_radiosity"] = radiosity;
@@ -126,6 +127,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                      {"bytes_sent", n.bytes_sent},
                      {"messages_received", n.messages_received},
                      {"peak_memory_bytes", n.peak_memory_bytes},
+                     {"memory_bytes_at_end", n.memory_bytes_at_end},
                      {"counts", counts_to_json(n.counts)}});
   j["nodes"] = nodes;
   if (result.render.ran) j["render"] = render_to_json(config, result.render);

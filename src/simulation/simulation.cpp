@@ -72,7 +72,11 @@ void run_programs(const Scene& scene, const SimulationConfig& config,
   collect_iterations(master, result);
   collect_solution(scene, programs, result.solution, result.patch_radiosity, result.held_patches);
   result.element_radiosity = level_zero_radiosity(scene, result.solution);
-  for (const RadiosityProcessor& rp : programs.radiosity) result.patches_moved += rp.patches_sent();
+  for (const RadiosityProcessor& rp : programs.radiosity) {
+    result.patches_moved += rp.patches_sent();
+    result.transfer_messages += rp.transfers_sent();
+    result.transfer_bytes += rp.transfer_bytes_sent();
+  }
   if (master.out_of_memory().node >= 0) {  // a processor could not make its cuts (4.1, 4.2)
     result.status = RunStatus::kOutOfMemory;
     const NodeStats& node = programs.runtimes[std::size_t(master.out_of_memory().node)].stats();

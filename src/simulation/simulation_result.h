@@ -48,6 +48,8 @@ struct SimulationResult {
   // (subdivision or balancing on).
   std::vector<std::vector<long>> elements_per_iteration;
   long patches_moved = 0;  // by load balancing (section 4.2)
+  long transfer_messages = 0;   // the kPatches messages that moved them
+  double transfer_bytes = 0.0;  // their modeled payload (headers not included)
   WorkCounts counts;                   // all nodes together
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace
