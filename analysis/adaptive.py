@@ -162,9 +162,11 @@ def main():
         if R == 8:
             e = pair[False]["elements_per_iteration"]
             lines.append(f"- {scene}, R = {R}, V = {V}: " + ", ".join(f"{x:,}" for x in e[::5]))
-    plot = plot_figure(rows, os.path.splitext(args.output)[0] + ".png")
+    figures = os.path.join(os.path.dirname(os.path.abspath(args.output)), "figures")
+    os.makedirs(figures, exist_ok=True)
+    plot = plot_figure(rows, os.path.join(figures, "adaptive.png"))
     if plot:
-        lines += ["", f"![elements and simulated seconds per iteration]({os.path.basename(plot)})"]
+        lines += ["", "![elements and simulated seconds per iteration](figures/adaptive.png)"]
     lines += ["", f"## Memory pressure: scene2, R = 8, V = 0, {args.iterations} iterations, 4 MB per node", ""]
     for b in (False, True):
         r = pressure[b]
@@ -191,8 +193,9 @@ def main():
             if on["patches_moved"] == 0:
                 why = ("below the threshold" if off["element_imbalance"] <= 1.2 else
                        "no patch small enough to move")
-                reading = (f"nothing moved ({why}; imbalance {off['element_imbalance']:.2f}); the "
-                           f"load records sent with the candidates cost {100 * -gain:.4f} %")
+                reading = (f"nothing moved ({why}; imbalance {off['element_imbalance']:.2f}); time "
+                           f"per iteration changed by {abs(100 * gain):.4f} % (with --subdivide the "
+                           f"loads travel with the candidates either way)")
             else:
                 reading = (f"**{100 * gain:.1f} % faster**, imbalance {off['element_imbalance']:.2f} "
                            f"→ {on['element_imbalance']:.2f}, {on['patches_moved']} patches moved")
