@@ -86,19 +86,28 @@ EmbreeScene::~EmbreeScene() {
 
 void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
   const Query& q = *reinterpret_cast<const Query*>(args->context);
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (args->valid[i] == 0) continue;
-    const unsigned ray = RTCRayN_id(args->ray, args->N, i);
-    const int position = int(RTCHitN_primID(args->hit, args->N, i));
+  // Embree calls this once per primitive met, with the lanes that met it valid (often one of
+  // 16): the valid lanes first, then only those. Locals, not args->..., in the loop: the
+  // stores to `valid` could otherwise alias them and force reloads.
+  const unsigned n = args->N;
+  int* valid = args->valid;
+  const unsigned* ray_ids = &RTCRayN_id(args->ray, n, 0);
+  const unsigned* positions = &RTCHitN_primID(args->hit, n, 0);
+  std::uint64_t lanes = 0;
+  for (unsigned i = 0; i < n; ++i) lanes |= std::uint64_t(valid[i] != 0) << i;
+  for (; lanes != 0; lanes &= lanes - 1) {
+    const unsigned i = unsigned(__builtin_ctzll(lanes));
+    const unsigned ray = ray_ids[i];
+    const int position = int(positions[i]);
     if (q.sets_of) {  // only hits that can tell of a set not yet known to block are tested
       const std::uint64_t sets = q.sets_of[position];
       if (position == q.excluded_a || position == q.excluded_b || (sets & ~q.ray_sets[ray]) == 0 ||
           !segment_crosses(q.scene->candidates_[std::size_t(position)], q.from, q.delta[ray])) {
-        args->valid[i] = 0;
+        valid[i] = 0;
         continue;
       }
       q.ray_sets[ray] |= sets;
-      if (q.ray_sets[ray] != q.all_sets) args->valid[i] = 0;  // else accepted: the ray ends
+      if (q.ray_sets[ray] != q.all_sets) valid[i] = 0;  // else accepted: the ray ends
       continue;
     }
     const bool blocks = position != q.excluded_a && position != q.excluded_b &&
@@ -106,9 +115,9 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
                                         q.delta[ray]);
     if (q.hits) {  // record and reject: the traversal goes on to the end of the segment
       if (blocks) q.hits->emplace_back(int(ray), position);
-      args->valid[i] = 0;
+      valid[i] = 0;
     } else if (!blocks) {
-      args->valid[i] = 0;
+      valid[i] = 0;
     }
   }
 }

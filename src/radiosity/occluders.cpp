@@ -77,6 +77,7 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
     axis_order_.insert(axis_order_.end(), members.begin(), members.end());
   }
   class_begin_[6] = int(axis_order_.size());
+  for (int g : axis_order_) axis_offsets_.push_back(plane_offset_[std::size_t(g)]);
   if (octree_) return;  // the brute-force machinery below is only the reference's
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
   if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
@@ -165,18 +166,21 @@ std::int64_t Occluders::crossings_over_planes(const Vec3& point, const TargetSid
   // other way round.
   std::int64_t crossings = 0;
   for (int c = 0; c < 6; ++c) {
-    // Along a class (offsets ascending) the point's side only falls: +1 ... 0 ... -1.
+    // Along a class (offsets ascending) the point's side only falls: +1 ... 0 ... -1. For a
+    // plane of class c (normal +-1 along axis c / 2, the other components 0) the signed
+    // distance of side_of is, bit for bit, +-coordinate - offset (the zero terms add
+    // nothing but the sign of a zero, which no comparison sees).
     const int begin = class_begin_[std::size_t(c)], end = class_begin_[std::size_t(c) + 1];
-    auto first_where = [&](auto below) {  // first index whose side satisfies `below`
-      int lo = begin, hi = end;
-      while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (below(plane_side(axis_order_[std::size_t(mid)], point))) hi = mid; else lo = mid + 1;
-      }
-      return lo;
-    };
-    const int not_in_front = first_where([](int side) { return side <= 0; });
-    const int behind = first_where([](int side) { return side < 0; });
+    if (begin == end) continue;
+    const double coordinate = c % 2 == 0 ? point[c / 2] : -point[c / 2];
+    const double* offsets = axis_offsets_.data();
+    const double tolerance = side_tolerance_;
+    const int not_in_front = int(std::partition_point(offsets + begin, offsets + end, [&](double d) {
+                               return coordinate - d > tolerance;
+                             }) - offsets);
+    const int behind = int(std::partition_point(offsets + not_in_front, offsets + end, [&](double d) {
+                         return !(coordinate - d < -tolerance);
+                       }) - offsets);
     crossings += sides.behind_prefix[std::size_t(not_in_front)] - sides.behind_prefix[std::size_t(begin)];
     crossings += sides.in_front_prefix[std::size_t(end)] - sides.in_front_prefix[std::size_t(behind)];
   }
@@ -231,9 +235,7 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
   int first[kMaxShooterParts];
   PartMask blocked = 0;
   if (masks) {
-    const std::uint64_t* ray_sets = masks->blocked.data() + index * std::size_t(m);
-    for (int k = 0; k < m; ++k)
-      if (ray_sets[k] >> set_bit_ & 1) blocked |= PartMask(1) << k;
+    blocked = masks->blocked[index * 64 + std::size_t(set_bit_)];
   } else if (lists) {
     // The whole scene's blockers of each ray; this set's are those it holds.
     for (int k = 0; k < m; ++k) {

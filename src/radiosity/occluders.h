@@ -140,6 +140,8 @@ class Occluders {
   // searches per class find the planes in front of and behind it. The other planes.
   std::vector<int> axis_order_;
   std::array<int, 7> class_begin_{};  // class c is axis_order_[class_begin_[c] .. class_begin_[c+1])
+  std::vector<double> axis_offsets_;  // plane_offset_ of axis_order_[i] (contiguous: searched
+                                      // per point and set)
   std::vector<int> other_planes_;
   std::vector<std::int32_t> plane_first_, plane_members_;  // positions of plane g's patches:
                                           // plane_members_[plane_first_[g] .. plane_first_[g+1])

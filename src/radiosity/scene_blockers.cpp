@@ -156,12 +156,17 @@ std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
   const int m = shooter.part_count;
   auto masks = std::make_shared<SetMasks>();
   masks->part_count = m;
-  masks->blocked.assign(count * std::size_t(m), 0);
+  masks->blocked.assign(count * 64, 0);
   parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
+    std::uint64_t ray_sets[kMaxShooterParts];
+    for (std::size_t k = begin; k < end; ++k) {
       embree_->blocked_sets(points[k], shooter.targets.data(), m, receiver_patches[k],
-                            shooter.patch, sets_of_patch_.data(), registered_,
-                            masks->blocked.data() + k * std::size_t(m));
+                            shooter.patch, sets_of_patch_.data(), registered_, ray_sets);
+      PartMask* by_set = masks->blocked.data() + k * 64;
+      for (int r = 0; r < m; ++r)
+        for (std::uint64_t sets = ray_sets[r]; sets != 0; sets &= sets - 1)
+          by_set[__builtin_ctzll(sets)] |= PartMask(1) << r;
+    }
   });
   remember(Entry{1, version_, shooter.patch, m,
                  std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),

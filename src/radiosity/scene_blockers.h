@@ -57,7 +57,9 @@ class SceneBlockers {
   void unregister_set(int bit) const;
   struct SetMasks {
     int part_count = 0;
-    std::vector<std::uint64_t> blocked;  // [k * M + r]: bit s set when set s blocks the ray
+    // [k * 64 + s]: bit r set when set s blocks the ray from point k to part r (per set, so
+    // that each of the V shares reads its answer in one word)
+    std::vector<PartMask> blocked;
   };
   std::shared_ptr<const SetMasks> blocked_sets(const Vec3* points, const int* receiver_patches,
                                                std::size_t count, const Shooter& shooter,
