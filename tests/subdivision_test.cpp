@@ -78,7 +78,9 @@ TEST(Subdivision, OneShotCutsRecursivelyAtTheShadowEdgeOnly) {
     deepest = std::max(deepest, e.cell.level);
     const double x0 = double(e.cell.i) / (4 << e.cell.level), x1 = double(e.cell.i + 1) / (4 << e.cell.level);
     // Under the light (x < 2) the floor is lit smoothly: nothing is cut there.
-    if (4.0 * x1 <= 2.0) EXPECT_EQ(e.cell.level, 0) << "cut at x " << 4 * x0;
+    if (4.0 * x1 <= 2.0) {
+      EXPECT_EQ(e.cell.level, 0) << "cut at x " << 4 * x0;
+    }
   }
   // The recursion went to the deepest level within the one shot, at the edge (x = 3).
   EXPECT_EQ(deepest, 3);
@@ -108,7 +110,6 @@ TEST(Subdivision, OffByDefaultAndBoundedByTheRoomGiven) {
   run_progressive(engine, occluders, options);
   EXPECT_EQ(engine.store().element_count(), s.element_total());
   // Room for one cut only: one cut made, the rest wanted.
-  const Shooter shooter = make_shooter(s, 0, Rgb(10.0), 16);
   WorkCounts counts;
   std::vector<ElementRef> floor;
   for (int k = 0; k < 4; ++k) floor.push_back({1, k});
