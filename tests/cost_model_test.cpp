@@ -102,32 +102,25 @@ TEST(CostModel, ChargesEachCounterAtItsOwnParameter) {
   EXPECT_EQ(m.flops(one), 7.0);
 }
 
+// One counter of a family: two structs that differ in it compare unequal, adding adds it.
+template <typename Counts, typename Member>
+void expect_adds_and_compares(Member Counts::*member, const char* name) {
+  Counts a, b;
+  b.*member = 2;
+  EXPECT_FALSE(a == b) << name;
+  a += b;
+  a += b;
+  EXPECT_EQ(a.*member, 4u) << name;
+  b.*member = 4;
+  EXPECT_TRUE(a == b) << name;
+}
+
 // The sum and the comparison cover every counter.
 TEST(CostModel, CountsAddAndCompareEveryCounter) {
-#define NCUBE_CHECK_WORK(member, cost, doc)        \
-  {                                                \
-    WorkCounts a, b;                               \
-    b.member = 2;                                  \
-    EXPECT_FALSE(a == b) << #member;               \
-    a += b;                                        \
-    a += b;                                        \
-    EXPECT_EQ(a.member, 4u) << #member;            \
-    b.member = 4;                                  \
-    EXPECT_TRUE(a == b) << #member;                \
-  }
+#define NCUBE_CHECK_WORK(member, cost, doc) expect_adds_and_compares(&WorkCounts::member, #member);
   NCUBE_WORK_COUNTERS(NCUBE_CHECK_WORK)
 #undef NCUBE_CHECK_WORK
-#define NCUBE_CHECK_RENDER(member, cost, doc)      \
-  {                                                \
-    RenderCounts a, b;                             \
-    b.member = 2;                                  \
-    EXPECT_FALSE(a == b) << #member;               \
-    a += b;                                        \
-    a += b;                                        \
-    EXPECT_EQ(a.member, 4u) << #member;            \
-    b.member = 4;                                  \
-    EXPECT_TRUE(a == b) << #member;                \
-  }
+#define NCUBE_CHECK_RENDER(member, cost, doc) expect_adds_and_compares(&RenderCounts::member, #member);
   NCUBE_RENDER_COUNTERS(NCUBE_CHECK_RENDER)
 #undef NCUBE_CHECK_RENDER
 }
