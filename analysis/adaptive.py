@@ -157,7 +157,8 @@ def main():
     lines += ["", "## Elements over the iterations", "",
               "Sum over the radiosity processors at each shooter selection, without balancing "
               "(balancing moves elements, it does not make or cut them: the counts with it are "
-              "the same). Every fifth iteration:", ""]
+              "the same), identical for every R and V (the same cuts: parallel equals sequential, "
+              "see the figure). Every fifth iteration:", ""]
     for scene, R, V, pair in rows:
         if R == 8:
             e = pair[False]["elements_per_iteration"]
