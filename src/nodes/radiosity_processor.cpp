@@ -10,12 +10,14 @@ XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_radiosity, "the radiosity processors (section
 namespace ncube {
 
 RadiosityProcessor::RadiosityProcessor(const ProgramSetup& setup, int rank, NodeRuntime& runtime,
-                                       RadiosityEngine& engine, const Occluders* occluders)
+                                       RadiosityEngine& engine, const Occluders* occluders,
+                                       Lookahead* lookahead)
     : setup_(setup),
       rank_(rank),
       runtime_(runtime),
       engine_(engine),
       occluders_(occluders),
+      lookahead_(lookahead),
       selection_(runtime, setup_.placement, rank) {}
 
 void RadiosityProcessor::run() {
@@ -190,6 +192,10 @@ void RadiosityProcessor::gather_with_visibility_processors(const Shooter& shoote
   const int blocks = int((receivers.size() + B - 1) / B);
   std::vector<PartMask> visible(receivers.size(), shooter.all_parts());
   std::vector<int> answers(std::size_t(blocks), 0);
+  // Host-side only: the blocks' answers and form factors are computed ahead on the host's
+  // other threads (lookahead.h); what the programs compute and are charged is unchanged.
+  const std::shared_ptr<Lookahead::Shot> ahead =
+      lookahead_ ? lookahead_->post(shooter, points, patches, B) : nullptr;
   if (blocks > 0) send_block(points, patches, 0);
   for (int block = 0; block < blocks; ++block) {
     if (setup_.pipelined && block + 1 < blocks) send_block(points, patches, block + 1);
@@ -204,7 +210,8 @@ void RadiosityProcessor::gather_with_visibility_processors(const Shooter& shoote
     const std::vector<ElementRef> part(receivers.begin() + first, receivers.begin() + last);
     const std::vector<PartMask> masks(visible.begin() + first, visible.begin() + last);
     WorkCounts work;
-    engine_.gather(shooter, part, masks, work, setup_.options.host_threads);
+    engine_.gather(shooter, part, masks, work, setup_.options.host_threads,
+                   ahead ? lookahead_->form_factors(*ahead, block, masks.data(), masks.size()) : nullptr);
     runtime_.compute(work);
     if (!setup_.pipelined && block + 1 < blocks) send_block(points, patches, block + 1);
   }

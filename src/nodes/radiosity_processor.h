@@ -13,6 +13,7 @@
 #include "nodes/collectives.h"
 #include "nodes/node_runtime.h"
 #include "nodes/program_setup.h"
+#include "radiosity/lookahead.h"
 
 namespace ncube {
 
@@ -25,8 +26,11 @@ struct RunOutOfMemory {
 class RadiosityProcessor {
  public:
   // `occluders` is the whole scene when V = 0, unused (may be null) when V > 0.
+  // `lookahead`: host threads computing the blocks' answers and form factors ahead
+  // (host-side only, lookahead.h; null: none).
   RadiosityProcessor(const ProgramSetup& setup, int rank, NodeRuntime& runtime,
-                     RadiosityEngine& engine, const Occluders* occluders);
+                     RadiosityEngine& engine, const Occluders* occluders,
+                     Lookahead* lookahead = nullptr);
 
   void run();  // the actor's body
 
@@ -64,6 +68,7 @@ class RadiosityProcessor {
   NodeRuntime& runtime_;
   RadiosityEngine& engine_;
   const Occluders* occluders_;
+  Lookahead* lookahead_;
   ShooterSelection selection_;
   std::vector<double> iteration_ends_;
   std::vector<int> shooters_;

@@ -23,6 +23,8 @@ std::uint64_t bits_of(double x) {
   return b;
 }
 
+}  // namespace
+
 std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t count) {
   std::uint64_t h = mix(0, count);
   for (std::size_t k = 0; k < count; ++k) {
@@ -33,6 +35,8 @@ std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t co
   }
   return h;
 }
+
+namespace {
 
 std::uint64_t hash_shooter(const Shooter& shooter) {
   std::uint64_t h = mix(std::uint64_t(std::uint32_t(shooter.patch)), std::uint64_t(shooter.part_count));

@@ -24,6 +24,9 @@
 
 namespace ncube {
 
+// A hash of a block of points and their patches (bit for bit).
+std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t count);
+
 class AnswerCache {
  public:
   // Choice: 512 MiB by default, twice what every answer of the scene2 run at R=8, V=7 takes

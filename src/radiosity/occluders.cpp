@@ -7,6 +7,7 @@
 
 #include "radiosity/answer_cache.h"
 #include "radiosity/host_threads.h"
+#include "radiosity/lookahead.h"
 #include "radiosity/octree.h"
 
 namespace ncube {
@@ -98,41 +99,43 @@ Occluders::~Occluders() {
   blockers_->answer_cache().forget_set(cache_id_);
 }
 
-const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
+std::shared_ptr<const Occluders::TargetSides> Occluders::target_sides(const Shooter& shooter) const {
   const int m = shooter.part_count;
-  if (sides_.part_count == m &&
-      std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_.targets.begin()))
+  if (sides_ && sides_->part_count == m &&
+      std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_->targets.begin()))
     return sides_;
+  auto made = std::make_shared<TargetSides>();
+  TargetSides& sides = *made;
   const std::size_t planes = plane_size_.size();
-  sides_.part_count = m;
-  sides_.targets = shooter.targets;
-  sides_.in_front_tests.assign(planes, 0);
-  sides_.behind_tests.assign(planes, 0);
-  sides_.in_front.assign(planes, 0);
-  sides_.behind.assign(planes, 0);
-  sides_.near.assign(planes, 0);
+  sides.part_count = m;
+  sides.targets = shooter.targets;
+  sides.in_front_tests.assign(planes, 0);
+  sides.behind_tests.assign(planes, 0);
+  sides.in_front.assign(planes, 0);
+  sides.behind.assign(planes, 0);
+  sides.near.assign(planes, 0);
   for (std::size_t g = 0; g < planes; ++g) {
     for (int k = 0; k < m; ++k) {
       const Vec3& x = shooter.targets[k];
       const int side = plane_side(int(g), x);
-      if (side > 0) sides_.in_front[g] |= PartMask(1) << k;
-      if (side < 0) sides_.behind[g] |= PartMask(1) << k;
+      if (side > 0) sides.in_front[g] |= PartMask(1) << k;
+      if (side < 0) sides.behind[g] |= PartMask(1) << k;
       const double distance = plane_x_[g] * x.x + plane_y_[g] * x.y + plane_z_[g] * x.z - plane_offset_[g];
-      if (std::fabs(distance) <= band_) sides_.near[g] |= PartMask(1) << k;
+      if (std::fabs(distance) <= band_) sides.near[g] |= PartMask(1) << k;
     }
-    sides_.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.in_front[g]);
-    sides_.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.behind[g]);
+    sides.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides.in_front[g]);
+    sides.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides.behind[g]);
   }
-  sides_.near_planes.clear();
   for (std::size_t g = 0; g < planes; ++g)
-    if (sides_.near[g] != 0) sides_.near_planes.push_back(int(g));
-  sides_.behind_prefix.assign(axis_order_.size() + 1, 0);
-  sides_.in_front_prefix.assign(axis_order_.size() + 1, 0);
+    if (sides.near[g] != 0) sides.near_planes.push_back(int(g));
+  sides.behind_prefix.assign(axis_order_.size() + 1, 0);
+  sides.in_front_prefix.assign(axis_order_.size() + 1, 0);
   for (std::size_t i = 0; i < axis_order_.size(); ++i) {
-    sides_.behind_prefix[i + 1] = sides_.behind_prefix[i] + sides_.behind_tests[std::size_t(axis_order_[i])];
-    sides_.in_front_prefix[i + 1] =
-        sides_.in_front_prefix[i] + sides_.in_front_tests[std::size_t(axis_order_[i])];
+    sides.behind_prefix[i + 1] = sides.behind_prefix[i] + sides.behind_tests[std::size_t(axis_order_[i])];
+    sides.in_front_prefix[i + 1] =
+        sides.in_front_prefix[i] + sides.in_front_tests[std::size_t(axis_order_[i])];
   }
+  sides_ = made;
   return sides_;
 }
 
@@ -304,14 +307,27 @@ PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const
 void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
                                 const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                                 int threads) const {
+  // A block posted to the host threads computing ahead: computed once for the group's sets.
+  if (lookahead_ && lookahead_->answers(*this, shooter, points, receiver_patches, count, masks, counts))
+    return;
   // A block asked about before for the same shooter: the same answers and counts as then
   // (answer_cache.h; the points are compared, not assumed unchanged).
-  AnswerCache& cache = blockers_->answer_cache();
-  if (cache.find(cache_id_, shooter, points, receiver_patches, count, masks, counts)) return;
+  if (remembered(shooter, points, receiver_patches, count, masks, counts)) return;
   WorkCounts block_counts;
   answer_block(points, receiver_patches, count, shooter, masks, block_counts, threads);
   counts += block_counts;
-  cache.store(cache_id_, shooter, points, receiver_patches, count, masks, block_counts);
+  remember(shooter, points, receiver_patches, count, masks, block_counts);
+}
+
+bool Occluders::remembered(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
+                           std::size_t count, PartMask* masks, WorkCounts& counts) const {
+  return blockers_->answer_cache().find(cache_id_, shooter, points, receiver_patches, count, masks,
+                                        counts);
+}
+
+void Occluders::remember(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
+                         std::size_t count, const PartMask* masks, const WorkCounts& counts) const {
+  blockers_->answer_cache().store(cache_id_, shooter, points, receiver_patches, count, masks, counts);
 }
 
 void Occluders::answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
@@ -321,22 +337,40 @@ void Occluders::answer_block(const Vec3* points, const int* receiver_patches, st
     octree_->unblocked_parts(points, receiver_patches, count, shooter, masks, counts, threads);
     return;
   }
-  const TargetSides& sides = target_sides(shooter);  // before the threads start
-  std::shared_ptr<const SceneBlockers::Lists> lists;
-  std::shared_ptr<const SceneBlockers::SetMasks> set_masks;
+  const std::shared_ptr<const TargetSides> sides = target_sides(shooter);  // before the threads start
+  SharedBlock shared;
   if (uses_masks() && !patches_.empty())
-    set_masks = blockers_->blocked_sets(points, receiver_patches, count, shooter, threads);
+    shared.set_masks = blockers_->blocked_sets(points, receiver_patches, count, shooter, threads);
   else if (uses_lists() && !patches_.empty())
-    lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
-                                /*memo=*/!whole_scene_ && count > 1);
+    shared.lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
+                                       /*memo=*/!whole_scene_ && count > 1);
+  answer_points(points, receiver_patches, count, shooter, *sides, shared, masks, counts, threads);
+}
+
+void Occluders::answer_block_here(const Vec3* points, const int* receiver_patches,
+                                  std::size_t count, const Shooter& shooter,
+                                  const TargetSides& sides, SharedBlock& shared, PartMask* masks,
+                                  WorkCounts& counts) const {
+  if (uses_masks() && !patches_.empty() && !shared.set_masks)
+    shared.set_masks = blockers_->blocked_sets_here(points, receiver_patches, count, shooter);
+  else if (uses_lists() && !patches_.empty() && !shared.lists)
+    shared.lists = blockers_->blockers(points, receiver_patches, count, shooter, 1, /*memo=*/false);
+  answer_points(points, receiver_patches, count, shooter, sides, shared, masks, counts, 1);
+}
+
+void Occluders::answer_points(const Vec3* points, const int* receiver_patches, std::size_t count,
+                              const Shooter& shooter, const TargetSides& sides,
+                              const SharedBlock& shared, PartMask* masks, WorkCounts& counts,
+                              int threads) const {
+  const SceneBlockers::Lists* lists = uses_lists() ? shared.lists.get() : nullptr;
+  const SceneBlockers::SetMasks* set_masks = uses_masks() ? shared.set_masks.get() : nullptr;
   std::mutex merge;
   // Whole-scene answers cost an Embree query per point; the others only read memos.
   const std::size_t grain = lists || set_masks ? 64 : 8;
   parallel_chunks(threads, count, grain, [&](std::size_t begin, std::size_t end) {
     WorkCounts local;
     for (std::size_t k = begin; k < end; ++k)
-      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists.get(),
-                        set_masks.get(), k, local);
+      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists, set_masks, k, local);
     const std::lock_guard<std::mutex> lock(merge);
     counts += local;  // integer sums: the same whatever the order
   });

@@ -31,6 +31,7 @@ enum class RayTestPolicy {
 enum class VisibilityMethod { kBruteForce, kOctree };
 
 class Octree;
+class Lookahead;
 
 class Occluders {
  public:
@@ -57,19 +58,6 @@ class Occluders {
                        const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                        int threads) const;
 
-  // The literal brute-force loop (reference for tests): same answers, same counts.
-  PartMask unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
-                                       const Shooter& shooter, WorkCounts& counts) const;
-
-  int size() const { return int(patches_.size()); }
-  // The octree of VisibilityMethod::kOctree (null for brute force), and the work of building
-  // it, charged once when the node program starts (zero for brute force).
-  const Octree* octree() const { return octree_.get(); }
-  WorkCounts build_work() const;
-  // Distinct planes among the set's patches (coplanar patches share one side test).
-  int plane_count() const { return int(plane_size_.size()); }
-
- private:
   // Which side of each plane the shooter's ray targets lie on. The targets depend only on
   // the shooter's geometry and M, so the last shooter's sides are kept.
   struct TargetSides {
@@ -83,11 +71,52 @@ class Occluders {
     // Over axis_order_: sums of behind_tests / in_front_tests of the first i planes.
     std::vector<std::int64_t> behind_prefix, in_front_prefix;
   };
-  const TargetSides& target_sides(const Shooter& shooter) const;
+  // The shooter's sides (not to be called from two threads at once: it keeps the last
+  // shooter's, which several host threads may then share).
+  std::shared_ptr<const TargetSides> target_sides(const Shooter& shooter) const;
+
+  // For host threads computing ahead (lookahead.h): the batch call's answers and counts for
+  // a block, without the answer cache, on the calling thread alone and safe on several
+  // threads at once. `shared` carries the block's scene-wide answers from one set asked
+  // about it to the next (the sets of a group are asked about the same block).
+  struct SharedBlock {
+    std::shared_ptr<const SceneBlockers::SetMasks> set_masks;
+    std::shared_ptr<const SceneBlockers::Lists> lists;
+  };
+  void answer_block_here(const Vec3* points, const int* receiver_patches, std::size_t count,
+                         const Shooter& shooter, const TargetSides& sides, SharedBlock& shared,
+                         PartMask* masks, WorkCounts& counts) const;
+  // This set's answers in the process's answer cache (answer_cache.h), thread-safe.
+  bool remembered(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
+                  std::size_t count, PartMask* masks, WorkCounts& counts) const;
+  void remember(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
+                std::size_t count, const PartMask* masks, const WorkCounts& counts) const;
+  // From now on the batch call first asks `lookahead` (host threads computing ahead, not
+  // owned; null: none), which knows the blocks posted to it.
+  void use_lookahead(Lookahead* lookahead) { lookahead_ = lookahead; }
+
+  // The literal brute-force loop (reference for tests): same answers, same counts.
+  PartMask unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
+                                       const Shooter& shooter, WorkCounts& counts) const;
+
+  int size() const { return int(patches_.size()); }
+  // The octree of VisibilityMethod::kOctree (null for brute force), and the work of building
+  // it, charged once when the node program starts (zero for brute force).
+  const Octree* octree() const { return octree_.get(); }
+  WorkCounts build_work() const;
+  // Distinct planes among the set's patches (coplanar patches share one side test).
+  int plane_count() const { return int(plane_size_.size()); }
+
+ private:
   // The batch call's work when the answer cache does not hold the block.
   void answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
                     const Shooter& shooter, PartMask* masks, WorkCounts& counts,
                     int threads) const;
+  // Each point's answer from the block's scene-wide answers in `shared` (as this set uses
+  // them), on `threads` host threads.
+  void answer_points(const Vec3* points, const int* receiver_patches, std::size_t count,
+                     const Shooter& shooter, const TargetSides& sides, const SharedBlock& shared,
+                     PartMask* masks, WorkCounts& counts, int threads) const;
   // The answer for one point; reads only constant data (safe on several threads). `lists`
   // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
   // `masks`: the same as bits of registered sets (this set's is set_bit_).
@@ -149,13 +178,14 @@ class Occluders {
   double side_tolerance_ = 0.0;           // distances within this count as "on the plane"
   double band_ = 0.0;                     // rays with both ends this close to a plane are
                                           // decided without Embree (docs/performance.md)
-  mutable TargetSides sides_;             // of the last shooter (see the batch call)
+  mutable std::shared_ptr<const TargetSides> sides_;  // of the last shooter
   std::vector<int> position_of_scene_patch_;  // -1 when not in this set
   std::shared_ptr<const SceneBlockers> blockers_;
   bool whole_scene_ = false;  // every scene patch is in the set
   int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
   std::unique_ptr<const Octree> octree_;  // answers all batch queries when set
   std::uint64_t cache_id_;                // this set's answers in blockers_'s answer cache
+  Lookahead* lookahead_ = nullptr;
 };
 
 }  // namespace ncube

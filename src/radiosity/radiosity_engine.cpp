@@ -49,30 +49,37 @@ void RadiosityEngine::visibility_points(const std::vector<ElementRef>& receivers
   }
 }
 
+double receiver_form_factor(const Shooter& shooter, const Vec3& centre, const Vec3& normal,
+                            PartMask mask) {
+  // The shooter emits from its front only: a receiver behind its plane gets nothing.
+  if (!shooter_lights(shooter, centre)) return 0.0;
+  return visible_parts_form_factor(centre, normal, shooter, mask);
+}
+
 void RadiosityEngine::gather(const Shooter& shooter, const std::vector<ElementRef>& receivers,
-                             const std::vector<PartMask>& masks, WorkCounts& counts, int threads) {
-  const auto in_front = [&shooter](const Vec3& p) {
-    return glm::dot(shooter.normal, p - shooter.polygon[0]) > 0.0;
-  };
-  std::vector<double> form_factors(receivers.size(), 0.0);
-  parallel_chunks(threads, receivers.size(), 64, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const StoredElement& element = store_.element(receivers[k]);
-      // The shooter emits from its front only: a receiver behind its plane gets nothing.
-      if (!in_front(element.centre)) continue;
-      const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
-      form_factors[k] = visible_parts_form_factor(
-          element.centre, scene().patches[std::size_t(patch)].normal, shooter, masks[k]);
-    }
-  });
+                             const std::vector<PartMask>& masks, WorkCounts& counts, int threads,
+                             const double* computed_form_factors) {
+  std::vector<double> form_factors;
+  if (!computed_form_factors) {
+    form_factors.assign(receivers.size(), 0.0);
+    parallel_chunks(threads, receivers.size(), 64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const StoredElement& element = store_.element(receivers[k]);
+        const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
+        form_factors[k] = receiver_form_factor(shooter, element.centre,
+                                               scene().patches[std::size_t(patch)].normal, masks[k]);
+      }
+    });
+    computed_form_factors = form_factors.data();
+  }
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     StoredPatch& s = store_.patches()[std::size_t(receivers[k].slot)];
     StoredElement& element = s.elements[std::size_t(receivers[k].index)];
     const Patch& patch = scene().patches[std::size_t(s.patch)];
-    const PartMask mask = in_front(element.centre) ? masks[k] : 0;
+    const PartMask mask = shooter_lights(shooter, element.centre) ? masks[k] : 0;
     counts.form_factors += std::bitset<64>(mask).count();
     // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
-    const Rgb gained = patch.reflectance * shooter.unshot * form_factors[k];
+    const Rgb gained = patch.reflectance * shooter.unshot * computed_form_factors[k];
     element.radiosity += gained;
     element.shot_gain = gained;
     s.unshot += gained * (element.area / patch.area);

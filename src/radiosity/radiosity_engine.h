@@ -45,8 +45,11 @@ class RadiosityEngine {
   // form factor = sum of the point-to-part contour integrals (section 2.2). The form factors
   // are computed on `threads` host threads, the light is added in receiver order, so the
   // result does not depend on `threads`.
+  // `form_factors`, when given, are the receivers' receiver_form_factor values computed
+  // beforehand (by the host threads computing ahead, lookahead.h).
   void gather(const Shooter& shooter, const std::vector<ElementRef>& receivers,
-              const std::vector<PartMask>& masks, WorkCounts& counts, int threads = 1);
+              const std::vector<PartMask>& masks, WorkCounts& counts, int threads = 1,
+              const double* form_factors = nullptr);
   // Section 4.1, after the shot's light has been distributed: tests the elements that have
   // just received it and cuts those whose corner radiosities differ too much. A cut
   // element's children start from its radiosity before this shot (its share of the shot is
@@ -92,6 +95,11 @@ struct ProgressiveRun {
   std::vector<WorkCounts> per_iteration;
   WorkCounts total;
 };
+
+// The form factor from a receiving element (centre, unit normal) to the shooter's parts in
+// `mask`: zero behind the shooter's plane (it emits from its front only).
+double receiver_form_factor(const Shooter& shooter, const Vec3& centre, const Vec3& normal,
+                            PartMask mask);
 
 // Whether the best remaining shooter is weak enough to stop.
 bool has_converged(const ShooterChoice& best, double emitted_power, double fraction);

@@ -153,6 +153,17 @@ std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
     const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
     int threads) const {
   if (const Entry* e = find(1, points, receiver_patches, count, shooter)) return e->masks;
+  auto masks = compute_sets(points, receiver_patches, count, shooter, threads);
+  remember(Entry{1, version_, shooter.patch, shooter.part_count,
+                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + shooter.part_count),
+                 std::vector<Vec3>(points, points + count),
+                 std::vector<int>(receiver_patches, receiver_patches + count), nullptr, masks});
+  return masks;
+}
+
+std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::compute_sets(
+    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
+    int threads) const {
   const int m = shooter.part_count;
   auto masks = std::make_shared<SetMasks>();
   masks->part_count = m;
@@ -168,10 +179,6 @@ std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
           by_set[__builtin_ctzll(sets)] |= PartMask(1) << r;
     }
   });
-  remember(Entry{1, version_, shooter.patch, m,
-                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
-                 std::vector<Vec3>(points, points + count),
-                 std::vector<int>(receiver_patches, receiver_patches + count), nullptr, masks});
   return masks;
 }
 

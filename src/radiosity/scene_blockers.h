@@ -64,6 +64,14 @@ class SceneBlockers {
   std::shared_ptr<const SetMasks> blocked_sets(const Vec3* points, const int* receiver_patches,
                                                std::size_t count, const Shooter& shooter,
                                                int threads) const;
+  // The same without the memo, on the calling thread only: safe on several host threads at
+  // once (for the threads computing ahead, lookahead.h). So is blockers(..., 1, false).
+  std::shared_ptr<const SetMasks> blocked_sets_here(const Vec3* points,
+                                                    const int* receiver_patches,
+                                                    std::size_t count,
+                                                    const Shooter& shooter) const {
+    return compute_sets(points, receiver_patches, count, shooter, 1);
+  }
 
  private:
   struct Entry {
@@ -82,6 +90,9 @@ class SceneBlockers {
   std::shared_ptr<const Lists> compute(const Vec3* points, const int* receiver_patches,
                                        std::size_t count, const Shooter& shooter,
                                        int threads) const;
+  std::shared_ptr<const SetMasks> compute_sets(const Vec3* points, const int* receiver_patches,
+                                               std::size_t count, const Shooter& shooter,
+                                               int threads) const;
 
   double scale_;
   std::vector<PatchCandidate> candidates_;  // scene order

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/geometric.hpp>
 
 #include "scene/scene.h"
 
@@ -37,6 +38,11 @@ struct Shooter {
 };
 
 Shooter make_shooter(const Scene& scene, int patch, const Rgb& unshot, int samples);
+
+// Whether a point lies in front of the shooter's plane: the shooter emits from its front only.
+inline bool shooter_lights(const Shooter& shooter, const Vec3& point) {
+  return glm::dot(shooter.normal, point - shooter.polygon[0]) > 0.0;
+}
 
 // Whether a receiving point can see the front of the shooter at all: it lies in front of
 // the shooter's plane and some shooter vertex lies in front of its own plane. Receivers that

@@ -7,6 +7,8 @@
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Engine.hpp>
 
+#include "radiosity/host_threads.h"
+
 namespace ncube {
 
 void create_runtimes(NodePrograms& programs, const std::vector<NodeMemory>& memory,
@@ -33,12 +35,21 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
     programs.occluders.emplace_back(scene, visibility_share(scene, V, j), o.ray_policy,
                                     o.visibility);
   const Occluders* all = V == 0 ? &programs.occluders.front() : nullptr;
+  // Host-side only: with visibility processors and more than one host thread, the blocks'
+  // answers and form factors are computed ahead on the other threads (lookahead.h).
+  const int threads = resolve_host_threads(o.host_threads);
+  if (V > 0 && threads > 1 && o.visibility == VisibilityMethod::kBruteForce) {
+    std::vector<const Occluders*> shares;
+    for (const Occluders& share : programs.occluders) shares.push_back(&share);
+    programs.lookahead = std::make_unique<Lookahead>(scene, shares, threads - 1);
+    for (Occluders& share : programs.occluders) share.use_lookahead(programs.lookahead.get());
+  }
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
     RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[std::size_t(rank)]);
     RadiosityProcessor& rp =
-        programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
+        programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all, programs.lookahead.get());
     simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
                                 hosts[setup.placement.radiosity_node(rank)], [&rp] { rp.run(); });
     for (int j = 0; j < V; ++j) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct NodePrograms {
   std::deque<Occluders> occluders;
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
+  // Host threads computing ahead (lookahead.h); last, so that it stops first.
+  std::unique_ptr<Lookahead> lookahead;
 };
 
 // One runtime per node of `memory` (node order), each holding its planned bytes.

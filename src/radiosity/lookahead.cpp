@@ -1,0 +1,208 @@
+#include "radiosity/lookahead.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "radiosity/answer_cache.h"
+#include "radiosity/radiosity_engine.h"
+
+namespace ncube {
+
+// One block of a posted shot: points_[first .. first + count) of its shot.
+struct Lookahead::Block {
+  enum State { kNotStarted, kStarted, kDone };
+  std::atomic<int> state{kNotStarted};
+  std::size_t first = 0, count = 0;
+  std::uint64_t hash = 0;
+  // Written by the thread that computes the block, read by the others once state is kDone.
+  std::vector<PartMask> answers;   // share-major: answers[s * count + k]
+  std::vector<WorkCounts> counts;  // per share
+  std::vector<PartMask> visible;   // the AND of the shares' answers
+  std::vector<double> form_factors;
+};
+
+namespace {
+
+bool same_shooter(const Shooter& a, const Shooter& b) {
+  return a.patch == b.patch && a.part_count == b.part_count &&
+         std::memcmp(a.targets.data(), b.targets.data(), std::size_t(a.part_count) * sizeof(Vec3)) == 0;
+}
+
+}  // namespace
+
+Lookahead::Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers)
+    : scene_(scene), shares_(std::move(shares)) {
+  for (int w = 0; w < std::max(1, workers); ++w) threads_.emplace_back([this] { work(); });
+}
+
+Lookahead::~Lookahead() {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    active_.clear();  // the shots' handles may outlive this; their blocks are not computed
+  }
+  work_to_do_.notify_all();
+  for (std::thread& t : threads_) t.join();
+}
+
+std::shared_ptr<Lookahead::Shot> Lookahead::post(const Shooter& shooter,
+                                                 const std::vector<Vec3>& points,
+                                                 const std::vector<int>& patches,
+                                                 int block_size) {
+  auto shot = std::make_shared<Shot>();
+  shot->shooter_ = shooter;
+  shot->points_ = points;
+  shot->patches_ = patches;
+  // The sides of the shooter's targets, once per share (main thread: the sets keep the last).
+  for (const Occluders* share : shares_) shot->sides_.push_back(share->target_sides(shooter));
+  const std::size_t size = std::size_t(std::max(1, block_size));
+  for (std::size_t first = 0; first < points.size(); first += size) {
+    auto block = std::make_unique<Block>();
+    block->first = first;
+    block->count = std::min(size, points.size() - first);
+    block->hash = hash_points(points.data() + first, patches.data() + first, block->count);
+    shot->blocks_.push_back(std::move(block));
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = posted_.begin(); it != posted_.end();)  // shots nobody holds any more
+      it = it->second.shot.expired() ? posted_.erase(it) : std::next(it);
+    for (const auto& block : shot->blocks_) posted_.emplace(block->hash, Posted{shot, block.get()});
+    if (!shot->blocks_.empty()) active_.push_back(shot);
+  }
+  work_to_do_.notify_all();
+  return shot;
+}
+
+Lookahead::Block* Lookahead::claim_next(std::shared_ptr<Shot>& shot) {
+  // The blocks are asked for in order, every group at about the same pace: the lowest
+  // block index first, the oldest shot first among equals.
+  for (;;) {
+    Shot* best = nullptr;
+    for (const auto& s : active_)
+      if (!best || s->next_unclaimed_ < best->next_unclaimed_) best = s.get();
+    if (!best) return nullptr;
+    Block& block = *best->blocks_[best->next_unclaimed_++];
+    auto it = std::find_if(active_.begin(), active_.end(),
+                           [best](const std::shared_ptr<Shot>& s) { return s.get() == best; });
+    shot = *it;
+    if (best->next_unclaimed_ == best->blocks_.size()) active_.erase(it);
+    int expected = Block::kNotStarted;
+    if (block.state.compare_exchange_strong(expected, Block::kStarted)) return &block;
+    shot.reset();  // a node program started it already: the next one
+  }
+}
+
+void Lookahead::work() {
+  for (;;) {
+    std::shared_ptr<Shot> shot;
+    Block* block = nullptr;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      work_to_do_.wait(lock, [&] { return stopping_ || (block = claim_next(shot)) != nullptr; });
+      if (stopping_) return;
+    }
+    compute(*shot, *block);
+    finish(*block);
+  }
+}
+
+void Lookahead::compute(Shot& shot, Block& block) {
+  const std::size_t n = block.count;
+  const Vec3* points = shot.points_.data() + block.first;
+  const int* patches = shot.patches_.data() + block.first;
+  const Shooter& shooter = shot.shooter_;
+  block.answers.assign(shares_.size() * n, 0);
+  block.counts.assign(shares_.size(), WorkCounts{});
+  // Exactly what each share's batch call does (occluders.h): its remembered answers, or the
+  // computation from the block's scene-wide answers, computed once for all shares.
+  Occluders::SharedBlock shared;
+  for (std::size_t s = 0; s < shares_.size(); ++s) {
+    const Occluders& set = *shares_[s];
+    PartMask* masks = block.answers.data() + s * n;
+    if (set.remembered(shooter, points, patches, n, masks, block.counts[s])) continue;
+    set.answer_block_here(points, patches, n, shooter, *shot.sides_[s], shared, masks,
+                          block.counts[s]);
+    set.remember(shooter, points, patches, n, masks, block.counts[s]);
+  }
+  block.visible.assign(n, shooter.all_parts());
+  for (std::size_t s = 0; s < shares_.size(); ++s)
+    for (std::size_t k = 0; k < n; ++k) block.visible[k] &= block.answers[s * n + k];
+  block.form_factors.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    block.form_factors[k] = receiver_form_factor(
+        shooter, points[k], scene_.patches[std::size_t(patches[k])].normal, block.visible[k]);
+}
+
+void Lookahead::finish(Block& block) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    block.state.store(Block::kDone, std::memory_order_release);
+  }
+  block_done_.notify_all();
+}
+
+void Lookahead::complete(Shot& shot, Block& block) {
+  int expected = Block::kNotStarted;
+  if (block.state.compare_exchange_strong(expected, Block::kStarted)) {
+    compute(shot, block);
+    finish(block);
+    return;
+  }
+  // Being computed on another thread: help with the blocks nobody has started meanwhile.
+  while (block.state.load(std::memory_order_acquire) != Block::kDone) {
+    std::shared_ptr<Shot> other;
+    Block* next = nullptr;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      next = claim_next(other);
+      if (!next) {
+        block_done_.wait(lock, [&] { return block.state.load(std::memory_order_acquire) == Block::kDone; });
+        return;
+      }
+    }
+    compute(*other, *next);
+    finish(*next);
+  }
+}
+
+bool Lookahead::answers(const Occluders& set, const Shooter& shooter, const Vec3* points,
+                        const int* patches, std::size_t count, PartMask* masks,
+                        WorkCounts& counts) {
+  const auto share = std::find(shares_.begin(), shares_.end(), &set);
+  if (share == shares_.end() || count == 0) return false;
+  const std::uint64_t hash = hash_points(points, patches, count);
+  std::shared_ptr<Shot> shot;
+  Block* found = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    auto [begin, end] = posted_.equal_range(hash);
+    for (auto it = begin; it != end && !found; ++it) {
+      std::shared_ptr<Shot> s = it->second.shot.lock();
+      Block* b = it->second.block;
+      if (!s || b->count != count || !same_shooter(s->shooter_, shooter) ||
+          std::memcmp(s->points_.data() + b->first, points, count * sizeof(Vec3)) != 0 ||
+          std::memcmp(s->patches_.data() + b->first, patches, count * sizeof(int)) != 0)
+        continue;
+      shot = std::move(s);
+      found = b;
+    }
+  }
+  if (!found) return false;
+  complete(*shot, *found);
+  const std::size_t s = std::size_t(share - shares_.begin());
+  std::copy_n(found->answers.data() + s * count, count, masks);
+  counts += found->counts[s];
+  return true;
+}
+
+const double* Lookahead::form_factors(Shot& shot, int block, const PartMask* visible,
+                                      std::size_t count) {
+  if (block < 0 || std::size_t(block) >= shot.blocks_.size()) return nullptr;
+  Block& b = *shot.blocks_[std::size_t(block)];
+  complete(shot, b);
+  if (b.count != count || !std::equal(visible, visible + count, b.visible.begin())) return nullptr;
+  return b.form_factors.data();
+}
+
+}  // namespace ncube

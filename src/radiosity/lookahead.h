@@ -1,0 +1,98 @@
+// Host threads computing ahead (host-side only; docs/performance.md, "Computing ahead").
+//
+// SimGrid runs every node program on one host thread, so a run with visibility processors
+// (section 3) would use one core while the node programs wait for each other. But a shot's
+// work is known as soon as a radiosity processor has its visibility points: the V shares'
+// answers for each block of points (and their counts), and the form factors of the block
+// once the answers are in. A radiosity processor posts its blocks here before it sends
+// them; worker threads compute them in the order they will be asked for, while the main
+// thread goes on simulating. A visibility processor asked about a posted block takes its
+// share's answers from here; the radiosity processor takes the block's form factors. A
+// block nobody has started yet is computed by the thread that needs it; one being computed
+// is waited for (helping with the others meanwhile).
+//
+// Nothing simulated depends on it: every answer, count and form factor is the one the node
+// program would compute itself (the same functions, the same inputs; tested bit for bit),
+// and the simulated machine is charged for the counts whoever computed them.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "radiosity/occluders.h"
+#include "radiosity/shooter.h"
+#include "radiosity/work_counts.h"
+#include "scene/scene.h"
+
+namespace ncube {
+
+class Lookahead {
+ public:
+  // `shares`: the sets every block is asked about (the V visibility processors' shares, the
+  // same for every group; not owned). `workers` >= 1 host threads besides the main one.
+  Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers);
+  ~Lookahead();  // stops the workers (blocks still posted are dropped)
+  Lookahead(const Lookahead&) = delete;
+  Lookahead& operator=(const Lookahead&) = delete;
+
+  class Shot;  // the blocks one radiosity processor posted for one shooter
+  // Posts points[0 .. n) in blocks of `block_size` (the last one shorter), as a radiosity
+  // processor sends them. Main thread only. The blocks stay known while the handle lives.
+  std::shared_ptr<Shot> post(const Shooter& shooter, const std::vector<Vec3>& points,
+                             const std::vector<int>& patches, int block_size);
+
+  // When a posted block has exactly these points, patches and shooter and `set` is one of
+  // the shares: writes the set's answers to masks[0 .. count), adds its counts and returns
+  // true (false: not posted; the caller computes it).
+  bool answers(const Occluders& set, const Shooter& shooter, const Vec3* points,
+               const int* patches, std::size_t count, PartMask* masks, WorkCounts& counts);
+
+  // The receivers' form factors (receiver_form_factor) of block `block` of `shot`, when
+  // `visible` (count masks) is the block's visibility (the AND of the shares' answers);
+  // null otherwise.
+  const double* form_factors(Shot& shot, int block, const PartMask* visible, std::size_t count);
+
+  int workers() const { return int(threads_.size()); }
+
+ private:
+  struct Block;
+
+  void work();                                             // a worker thread's loop
+  Block* claim_next(std::shared_ptr<Shot>& shot);          // under mutex_: a block nobody has started
+  void compute(Shot& shot, Block& block);                  // the block's answers and form factors
+  void finish(Block& block);                               // done: wake those waiting
+  void complete(Shot& shot, Block& block);                 // done when it returns
+
+  const Scene& scene_;
+  std::vector<const Occluders*> shares_;
+  std::mutex mutex_;
+  std::condition_variable work_to_do_, block_done_;
+  bool stopping_ = false;
+  std::vector<std::shared_ptr<Shot>> active_;  // shots with blocks nobody has started, oldest first
+  struct Posted {
+    std::weak_ptr<Shot> shot;  // expired once nobody holds the shot
+    Block* block;
+  };
+  std::unordered_multimap<std::uint64_t, Posted> posted_;  // by hash of points and patches
+  std::vector<std::thread> threads_;
+};
+
+class Lookahead::Shot {
+ private:
+  friend class Lookahead;
+  Shooter shooter_;
+  std::vector<Vec3> points_;
+  std::vector<int> patches_;
+  std::vector<std::shared_ptr<const Occluders::TargetSides>> sides_;  // per share
+  std::vector<std::unique_ptr<Block>> blocks_;
+  std::size_t next_unclaimed_ = 0;  // under owner_->mutex_
+};
+
+}  // namespace ncube

@@ -1,0 +1,112 @@
+// The host threads computing ahead (lookahead.h) hand out exactly what the node programs
+// would compute themselves: each share's answers and counts equal its own batch call's (and
+// the literal brute-force loop's), the form factors equal receiver_form_factor of the AND
+// of the answers, whoever computed the block (a worker or the asking thread), for both
+// ray-test policies; blocks not posted, other shooters and other sets are not answered.
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <random>
+
+#include "receiver_sample.h"
+#include "nodes/placement.h"
+#include "radiosity/lookahead.h"
+#include "radiosity/radiosity_engine.h"
+#include "scene/scene_loader.h"
+
+namespace ncube {
+namespace {
+
+constexpr int kShares = 3;
+constexpr int kBlock = 10;
+
+struct Fixture {
+  explicit Fixture(RayTestPolicy policy)
+      : scene(load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/scene1.json")) {
+    for (int j = 0; j < kShares; ++j) shares.emplace_back(scene, visibility_share(scene, kShares, j), policy);
+    // The reference: the same shares on their own, without the lookahead.
+    for (int j = 0; j < kShares; ++j)
+      reference.emplace_back(scene, visibility_share(scene, kShares, j), policy);
+  }
+  Scene scene;
+  std::deque<Occluders> shares, reference;
+};
+
+void check_policy(RayTestPolicy policy) {
+  Fixture f(policy);
+  std::vector<const Occluders*> sets;
+  for (const Occluders& s : f.shares) sets.push_back(&s);
+  Lookahead lookahead(f.scene, sets, 1);
+  for (Occluders& s : f.shares) s.use_lookahead(&lookahead);
+  std::mt19937 random(7);
+  for (int shooter_patch : {0, 40, 150}) {
+    const Shooter shooter = make_shooter(f.scene, shooter_patch, Rgb(1.0), 64);
+    const ReceiverSample sample = sample_receivers(f.scene, shooter_patch, 95, random);
+    const auto shot = lookahead.post(shooter, sample.points, sample.patches, kBlock);
+    // Blocks asked for in turn, share by share, as the visibility processors do (the worker
+    // computes some, this thread the others).
+    for (std::size_t first = 0; first < sample.points.size(); first += kBlock) {
+      const std::size_t n = std::min<std::size_t>(kBlock, sample.points.size() - first);
+      const Vec3* points = sample.points.data() + first;
+      const int* patches = sample.patches.data() + first;
+      std::vector<PartMask> visible(n, shooter.all_parts());
+      for (int j = 0; j < kShares; ++j) {
+        std::vector<PartMask> got(n), expected(n);
+        WorkCounts got_counts, expected_counts, brute_counts;
+        ASSERT_TRUE(lookahead.answers(f.shares[j], shooter, points, patches, n, got.data(), got_counts));
+        f.reference[j].unblocked_parts(points, patches, n, shooter, expected.data(), expected_counts, 1);
+        EXPECT_EQ(got, expected) << "shooter " << shooter_patch << ", block at " << first << ", share " << j;
+        EXPECT_EQ(got_counts, expected_counts) << "shooter " << shooter_patch << ", share " << j;
+        for (std::size_t k = 0; k < n; ++k) {
+          EXPECT_EQ(got[k], f.reference[j].unblocked_parts_brute_force(points[k], patches[k], shooter,
+                                                                        brute_counts));
+          visible[k] &= got[k];
+        }
+        EXPECT_EQ(got_counts, brute_counts);
+        // The share's own batch call goes through the lookahead too, with the same result.
+        std::vector<PartMask> again(n);
+        WorkCounts again_counts;
+        f.shares[j].unblocked_parts(points, patches, n, shooter, again.data(), again_counts, 1);
+        EXPECT_EQ(again, expected);
+        EXPECT_EQ(again_counts, expected_counts);
+      }
+      const double* form_factors =
+          lookahead.form_factors(*shot, int(first / kBlock), visible.data(), n);
+      ASSERT_NE(form_factors, nullptr);
+      for (std::size_t k = 0; k < n; ++k)
+        EXPECT_EQ(form_factors[k],
+                  receiver_form_factor(shooter, points[k],
+                                       f.scene.patches[std::size_t(patches[k])].normal, visible[k]));
+      // Another visibility than the block's: no form factors.
+      visible[0] ^= 1;
+      EXPECT_EQ(lookahead.form_factors(*shot, int(first / kBlock), visible.data(), n), nullptr);
+    }
+    // Not posted: one point moved by one unit in the last place, another shooter, a set
+    // that is not a share, a block cut differently.
+    std::vector<Vec3> moved(sample.points.begin(), sample.points.begin() + kBlock);
+    moved[3].x = std::nextafter(moved[3].x, 1e300);
+    std::vector<PartMask> masks(kBlock);
+    WorkCounts counts;
+    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter, moved.data(), sample.patches.data(), kBlock,
+                                   masks.data(), counts));
+    const Shooter other = make_shooter(f.scene, shooter_patch + 1, Rgb(1.0), 64);
+    EXPECT_FALSE(lookahead.answers(f.shares[0], other, sample.points.data(), sample.patches.data(),
+                                   kBlock, masks.data(), counts));
+    EXPECT_FALSE(lookahead.answers(f.reference[0], shooter, sample.points.data(),
+                                   sample.patches.data(), kBlock, masks.data(), counts));
+    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter, sample.points.data() + 1,
+                                   sample.patches.data() + 1, kBlock, masks.data(), counts));
+    EXPECT_EQ(counts, WorkCounts{});
+  }
+}
+
+TEST(Lookahead, TestingAllPatchesAnswersAsTheSharesThemselves) {
+  check_policy(RayTestPolicy::kTestAllPatches);
+}
+
+TEST(Lookahead, FirstBlockerAnswersAsTheSharesThemselves) {
+  check_policy(RayTestPolicy::kStopAtFirstBlocker);
+}
+
+}  // namespace
+}  // namespace ncube
