@@ -6,14 +6,29 @@
 #include <simgrid/s4u/Mailbox.hpp>
 #include <xbt/log.h>
 
+#include <vector>
+
 // --log=ncube_messages.thresh:debug shows every message sent and received.
 XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_messages, "the messages between the nodes");
 
 namespace ncube {
 namespace {
 
+// Looked up by name once per node and engine (by_name builds a string and searches a map:
+// measurable at thousands of messages per iteration). One engine per process.
 simgrid::s4u::Mailbox* mailbox_of(int node) {
-  return simgrid::s4u::Mailbox::by_name("node-" + std::to_string(node));
+  static std::vector<simgrid::s4u::Mailbox*> known;
+  static const simgrid::s4u::Engine* engine = nullptr;
+  if (engine != simgrid::s4u::Engine::get_instance()) {
+    engine = simgrid::s4u::Engine::get_instance();
+    known.clear();
+  }
+  if (std::size_t(node) < known.size() && known[std::size_t(node)]) return known[std::size_t(node)];
+  // by_name is a simcall: other actors run meanwhile (and may grow `known`).
+  simgrid::s4u::Mailbox* mailbox = simgrid::s4u::Mailbox::by_name("node-" + std::to_string(node));
+  if (std::size_t(node) >= known.size()) known.resize(std::size_t(node) + 1, nullptr);
+  known[std::size_t(node)] = mailbox;
+  return mailbox;
 }
 
 }  // namespace

@@ -171,21 +171,29 @@ bool Lookahead::answers(const Occluders& set, const Shooter& shooter, const Vec3
                         WorkCounts& counts) {
   const auto share = std::find(shares_.begin(), shares_.end(), &set);
   if (share == shares_.end() || count == 0) return false;
-  const std::uint64_t hash = hash_points(points, patches, count);
   std::shared_ptr<Shot> shot;
   Block* found = nullptr;
+  const auto is_asked = [&](const Shot& s, const Block& b) {
+    return b.count == count && same_shooter(s.shooter_, shooter) &&
+           std::memcmp(s.points_.data() + b.first, points, count * sizeof(Vec3)) == 0 &&
+           std::memcmp(s.patches_.data() + b.first, patches, count * sizeof(int)) == 0;
+  };
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    auto [begin, end] = posted_.equal_range(hash);
-    for (auto it = begin; it != end && !found; ++it) {
-      std::shared_ptr<Shot> s = it->second.shot.lock();
-      Block* b = it->second.block;
-      if (!s || b->count != count || !same_shooter(s->shooter_, shooter) ||
-          std::memcmp(s->points_.data() + b->first, points, count * sizeof(Vec3)) != 0 ||
-          std::memcmp(s->patches_.data() + b->first, patches, count * sizeof(int)) != 0)
-        continue;
+    // The V shares ask about the same block one after the other: the last one first.
+    if (std::shared_ptr<Shot> s = last_found_.shot.lock(); s && is_asked(*s, *last_found_.block)) {
       shot = std::move(s);
-      found = b;
+      found = last_found_.block;
+    }
+    if (!found) {
+      auto [begin, end] = posted_.equal_range(hash_points(points, patches, count));
+      for (auto it = begin; it != end && !found; ++it) {
+        std::shared_ptr<Shot> s = it->second.shot.lock();
+        if (!s || !is_asked(*s, *it->second.block)) continue;
+        shot = std::move(s);
+        found = it->second.block;
+        last_found_ = it->second;
+      }
     }
   }
   if (!found) return false;

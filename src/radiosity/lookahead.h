@@ -81,6 +81,7 @@ class Lookahead {
     Block* block;
   };
   std::unordered_multimap<std::uint64_t, Posted> posted_;  // by hash of points and patches
+  Posted last_found_{{}, nullptr};
   std::vector<std::thread> threads_;
 };
 
