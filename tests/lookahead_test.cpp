@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <chrono>
 #include <random>
+#include <thread>
 
 #include "receiver_sample.h"
 #include "nodes/placement.h"
@@ -106,6 +108,60 @@ TEST(Lookahead, TestingAllPatchesAnswersAsTheSharesThemselves) {
 
 TEST(Lookahead, FirstBlockerAnswersAsTheSharesThemselves) {
   check_policy(RayTestPolicy::kStopAtFirstBlocker);
+}
+
+// Guesses: given each rank's receivers and the patches' unshot power, the workers compute
+// the first shot of the never-shot patch with the most power, in the blocks each rank would
+// post (its receivers not on that patch, in order), into the answer cache: every share then
+// remembers each such block with its own batch call's answers and counts.
+TEST(Lookahead, GuessesTheNextFirstShotInTheBlocksEachRankWouldPost) {
+  Fixture f(RayTestPolicy::kTestAllPatches);
+  std::vector<const Occluders*> sets;
+  for (const Occluders& s : f.shares) sets.push_back(&s);
+  Lookahead lookahead(f.scene, sets, 1);
+  constexpr int kSamples = 16;
+  lookahead.guess_shots(kSamples, kBlock, 2);
+  // Rank 0 holds the first 100 patches' elements, rank 1 the next 60 (in scene order).
+  std::vector<Vec3> points[2];
+  std::vector<int> patches[2];
+  for (const Element& e : f.scene.elements)
+    if (e.patch < 160) {
+      points[e.patch < 100 ? 0 : 1].push_back(e.centre);
+      patches[e.patch < 100 ? 0 : 1].push_back(e.patch);
+    }
+  lookahead.know_receivers(0, points[0], patches[0]);
+  lookahead.know_receivers(1, points[1], patches[1]);
+  const int guessed = 120;  // rank 1's: its own elements are no receivers
+  lookahead.know_unshot({{5, 1.0}, {guessed, 3.0}, {7, 0.5}});
+  const Shooter shooter = make_shooter(f.scene, guessed, Rgb(0.0), kSamples);
+  for (int rank = 0; rank < 2; ++rank) {
+    std::vector<Vec3> receivers;
+    std::vector<int> receiver_patches;
+    for (std::size_t k = 0; k < points[rank].size(); ++k)
+      if (patches[rank][k] != guessed) {
+        receivers.push_back(points[rank][k]);
+        receiver_patches.push_back(patches[rank][k]);
+      }
+    for (std::size_t first = 0; first < receivers.size(); first += kBlock) {
+      const std::size_t n = std::min<std::size_t>(kBlock, receivers.size() - first);
+      for (int j = 0; j < kShares; ++j) {
+        std::vector<PartMask> got(n), expected(n);
+        WorkCounts got_counts, expected_counts;
+        // The workers get there in their own time (a few seconds at most).
+        bool held = false;
+        for (int wait = 0; wait < 3000 && !held; ++wait) {
+          held = f.shares[j].remembered(shooter, receivers.data() + first,
+                                        receiver_patches.data() + first, n, got.data(), got_counts);
+          if (!held) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        ASSERT_TRUE(held) << "rank " << rank << ", block at " << first << ", share " << j;
+        f.reference[j].unblocked_parts(receivers.data() + first, receiver_patches.data() + first,
+                                       n, shooter, expected.data(), expected_counts, 1);
+        EXPECT_EQ(got, expected);
+        EXPECT_EQ(got_counts, expected_counts);
+      }
+    }
+  }
 }
 
 }  // namespace

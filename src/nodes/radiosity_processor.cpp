@@ -22,6 +22,7 @@ RadiosityProcessor::RadiosityProcessor(const ProgramSetup& setup, int rank, Node
 
 void RadiosityProcessor::run() {
   runtime_.start();
+  if (lookahead_) tell_lookahead_receivers();
   // Section 6: with octree visibility, a node that tests rays first builds its octree.
   if (occluders_) runtime_.compute(occluders_->build_work());
   for (;;) {
@@ -43,8 +44,29 @@ void RadiosityProcessor::run() {
                        setup_.options.samples));
     // Only the holder keeps the shooter's unshot radiosity; it has now been shot.
     if (engine_.holds(decision.shooter.patch)) engine_.clear_unshot(decision.shooter.patch);
+    if (lookahead_) tell_lookahead_unshot();
   }
   runtime_.finish();
+}
+
+void RadiosityProcessor::tell_lookahead_receivers() {
+  std::vector<ElementRef> all;
+  const auto& patches = engine_.store().patches();
+  for (int slot = 0; slot < int(patches.size()); ++slot)
+    for (int k = 0; k < int(patches[std::size_t(slot)].elements.size()); ++k) all.push_back({slot, k});
+  std::vector<Vec3> points;
+  std::vector<int> point_patches;
+  engine_.visibility_points(all, points, point_patches);
+  lookahead_->know_receivers(rank_, std::move(points), std::move(point_patches));
+}
+
+void RadiosityProcessor::tell_lookahead_unshot() {
+  std::vector<std::pair<int, double>> powers;
+  for (const StoredPatch& s : engine_.store().patches()) {
+    const Rgb& u = s.unshot;
+    powers.emplace_back(s.patch, (u.r + u.g + u.b) * setup_.scene.patches[std::size_t(s.patch)].area);
+  }
+  lookahead_->know_unshot(powers);
 }
 
 ProcessorLoad RadiosityProcessor::load(int candidate) const {

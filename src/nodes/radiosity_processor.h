@@ -61,6 +61,10 @@ class RadiosityProcessor {
   void gather_with_visibility_processors(const Shooter& shooter,
                                          const std::vector<ElementRef>& receivers);
   void send_block(const std::vector<Vec3>& points, const std::vector<int>& patches, int block);
+  // Host-side only: what the host threads computing ahead guess the next shots from
+  // (lookahead.h): this processor's receivers, and its patches' unshot power after a shot.
+  void tell_lookahead_receivers();
+  void tell_lookahead_unshot();
   bool holds_geometry_of_all_patches() const { return setup_.placement.visibility_processors == 0; }
 
   const ProgramSetup& setup_;

@@ -31,7 +31,11 @@ bool same_shooter(const Shooter& a, const Shooter& b) {
 }  // namespace
 
 Lookahead::Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers)
-    : scene_(scene), shares_(std::move(shares)) {
+    : scene_(scene),
+      shares_(std::move(shares)),
+      unshot_power_(scene.patches.size(), 0.0),
+      posted_patch_(scene.patches.size(), 0),
+      guessed_patch_(scene.patches.size(), 0) {
   for (int w = 0; w < std::max(1, workers); ++w) threads_.emplace_back([this] { work(); });
 }
 
@@ -65,6 +69,8 @@ std::shared_ptr<Lookahead::Shot> Lookahead::post(const Shooter& shooter,
   }
   {
     const std::lock_guard<std::mutex> lock(mutex_);
+    if (shooter.patch >= 0 && std::size_t(shooter.patch) < posted_patch_.size())
+      posted_patch_[std::size_t(shooter.patch)] = 1;
     for (auto it = posted_.begin(); it != posted_.end();)  // shots nobody holds any more
       it = it->second.shot.expired() ? posted_.erase(it) : std::next(it);
     for (const auto& block : shot->blocks_) posted_.emplace(block->hash, Posted{shot, block.get()});
@@ -97,13 +103,113 @@ void Lookahead::work() {
   for (;;) {
     std::shared_ptr<Shot> shot;
     Block* block = nullptr;
+    GuessBlock guess;
     {
       std::unique_lock<std::mutex> lock(mutex_);
-      work_to_do_.wait(lock, [&] { return stopping_ || (block = claim_next(shot)) != nullptr; });
+      work_to_do_.wait(lock, [&] {
+        return stopping_ || (block = claim_next(shot)) != nullptr || next_guess_block(guess);
+      });
       if (stopping_) return;
     }
-    compute(*shot, *block);
-    finish(*block);
+    if (block) {
+      compute(*shot, *block);
+      finish(*block);
+    } else {
+      compute_guess(guess);
+    }
+  }
+}
+
+void Lookahead::guess_shots(int samples, int block_size, int ranks) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  guessing_ = true;
+  samples_ = samples;
+  block_size_ = std::max(1, block_size);
+  rank_points_.assign(std::size_t(ranks), {});
+  rank_patches_.assign(std::size_t(ranks), {});
+}
+
+void Lookahead::know_receivers(int rank, std::vector<Vec3> points, std::vector<int> patches) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (rank < 0 || std::size_t(rank) >= rank_points_.size()) return;
+  rank_points_[std::size_t(rank)] = std::move(points);
+  rank_patches_[std::size_t(rank)] = std::move(patches);
+}
+
+void Lookahead::know_unshot(const std::vector<std::pair<int, double>>& powers) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [patch, power] : powers)
+      if (patch >= 0 && std::size_t(patch) < unshot_power_.size())
+        unshot_power_[std::size_t(patch)] = power;
+  }
+  work_to_do_.notify_all();
+}
+
+bool Lookahead::next_guess_block(GuessBlock& block) {
+  if (!guessing_) return false;
+  for (;;) {
+    // A guess shot for real meanwhile: its posted blocks are computed as they are asked for.
+    if (guess_.shooter && posted_patch_[std::size_t(guess_.shooter->patch)]) guess_ = GuessBlock{};
+    if (guess_.shooter) {
+      // The next block of the guessed shot: rank by rank, as each would post it.
+      while (guess_rank_ < rank_points_.size()) {
+        const std::vector<Vec3>& points = rank_points_[guess_rank_];
+        const std::vector<int>& patches = rank_patches_[guess_rank_];
+        block.points.clear();
+        block.patches.clear();
+        // Skip the receivers before guess_first_ (those not on the shooter), take the next
+        // block_size_ of them.
+        std::size_t seen = 0;
+        for (std::size_t k = 0; k < points.size() && block.points.size() < std::size_t(block_size_); ++k) {
+          if (patches[k] == guess_.shooter->patch) continue;
+          if (seen++ < guess_first_) continue;
+          block.points.push_back(points[k]);
+          block.patches.push_back(patches[k]);
+        }
+        if (block.points.empty()) {
+          ++guess_rank_;
+          guess_first_ = 0;
+          continue;
+        }
+        guess_first_ += block.points.size();
+        block.shooter = guess_.shooter;
+        block.sides = guess_.sides;
+        return true;
+      }
+      guess_ = GuessBlock{};
+    }
+    // A new guess: the never-shot patch with the most unshot power.
+    int best = -1;
+    for (std::size_t p = 0; p < unshot_power_.size(); ++p)
+      if (!posted_patch_[p] && !guessed_patch_[p] && unshot_power_[p] > 0.0 &&
+          (best < 0 || unshot_power_[p] > unshot_power_[std::size_t(best)]))
+        best = int(p);
+    if (best < 0) return false;
+    guessed_patch_[std::size_t(best)] = 1;
+    auto shooter = std::make_shared<Shooter>(make_shooter(scene_, best, Rgb(0.0), samples_));
+    auto sides = std::make_shared<std::vector<std::shared_ptr<const Occluders::TargetSides>>>();
+    for (const Occluders* share : shares_) sides->push_back(share->sides_for(*shooter));
+    guess_.shooter = shooter;
+    guess_.sides = sides;
+    guess_rank_ = 0;
+    guess_first_ = 0;
+  }
+}
+
+void Lookahead::compute_guess(const GuessBlock& block) {
+  const std::size_t n = block.points.size();
+  std::vector<PartMask> masks(n);
+  Occluders::SharedBlock shared;
+  for (std::size_t s = 0; s < shares_.size(); ++s) {
+    const Occluders& set = *shares_[s];
+    WorkCounts counts;
+    if (set.remembered(*block.shooter, block.points.data(), block.patches.data(), n, masks.data(),
+                       counts))
+      continue;
+    set.answer_block_here(block.points.data(), block.patches.data(), n, *block.shooter,
+                          *(*block.sides)[s], shared, masks.data(), counts);
+    set.remember(*block.shooter, block.points.data(), block.patches.data(), n, masks.data(), counts);
   }
 }
 

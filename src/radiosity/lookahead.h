@@ -11,6 +11,13 @@
 // block nobody has started yet is computed by the thread that needs it; one being computed
 // is waited for (helping with the others meanwhile).
 //
+// Guesses: while no posted block is waiting (SimGrid's own work between blocks, or a shot
+// whose answers were remembered), the workers compute the first shot of the patch most
+// likely to be shot next that was never shot: the never-shot patch with the most unshot
+// power, for the receivers every radiosity processor holds, in the blocks it would post.
+// Its answers go to the answer cache (answer_cache.h) for when the patch is shot; a wrong
+// guess costs only host time that would have been idle.
+//
 // Nothing simulated depends on it: every answer, count and form factor is the one the node
 // program would compute itself (the same functions, the same inputs; tested bit for bit),
 // and the simulated machine is charged for the counts whoever computed them.
@@ -61,6 +68,15 @@ class Lookahead {
 
   int workers() const { return int(threads_.size()); }
 
+  // Guesses (above) need every radiosity processor's receivers: all its elements' centres
+  // and patches in store order (the receivers of a shot are those not on the shooter). Only
+  // for runs whose elements never change (no subdivision, no balancing) and whose receivers
+  // do not depend on the shooter (every element traces rays). Main thread.
+  void guess_shots(int samples, int block_size, int ranks);
+  void know_receivers(int rank, std::vector<Vec3> points, std::vector<int> patches);
+  // The unshot power of some patches as it is now (after a shot).
+  void know_unshot(const std::vector<std::pair<int, double>>& powers);
+
  private:
   struct Block;
 
@@ -69,6 +85,15 @@ class Lookahead {
   void compute(Shot& shot, Block& block);                  // the block's answers and form factors
   void finish(Block& block);                               // done: wake those waiting
   void complete(Shot& shot, Block& block);                 // done when it returns
+  // Under mutex_: the next block of a guessed shot (false: no guess to work on).
+  struct GuessBlock {
+    std::shared_ptr<const Shooter> shooter;
+    std::shared_ptr<const std::vector<std::shared_ptr<const Occluders::TargetSides>>> sides;
+    std::vector<Vec3> points;
+    std::vector<int> patches;
+  };
+  bool next_guess_block(GuessBlock& block);
+  void compute_guess(const GuessBlock& block);
 
   const Scene& scene_;
   std::vector<const Occluders*> shares_;
@@ -82,6 +107,15 @@ class Lookahead {
   };
   std::unordered_multimap<std::uint64_t, Posted> posted_;  // by hash of points and patches
   Posted last_found_{{}, nullptr};
+  // Guesses (under mutex_).
+  bool guessing_ = false;
+  int samples_ = 0, block_size_ = 1;
+  std::vector<std::vector<Vec3>> rank_points_;
+  std::vector<std::vector<int>> rank_patches_;
+  std::vector<double> unshot_power_;  // per scene patch
+  std::vector<char> posted_patch_, guessed_patch_;  // per scene patch: shot, guessed
+  GuessBlock guess_;                   // the shot being guessed: its shooter and sides
+  std::size_t guess_rank_ = 0, guess_first_ = 0;
   std::vector<std::thread> threads_;
 };
 

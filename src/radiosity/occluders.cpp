@@ -104,6 +104,12 @@ std::shared_ptr<const Occluders::TargetSides> Occluders::target_sides(const Shoo
   if (sides_ && sides_->part_count == m &&
       std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_->targets.begin()))
     return sides_;
+  sides_ = sides_for(shooter);
+  return sides_;
+}
+
+std::shared_ptr<const Occluders::TargetSides> Occluders::sides_for(const Shooter& shooter) const {
+  const int m = shooter.part_count;
   auto made = std::make_shared<TargetSides>();
   TargetSides& sides = *made;
   const std::size_t planes = plane_size_.size();
@@ -135,8 +141,7 @@ std::shared_ptr<const Occluders::TargetSides> Occluders::target_sides(const Shoo
     sides.in_front_prefix[i + 1] =
         sides.in_front_prefix[i] + sides.in_front_tests[std::size_t(axis_order_[i])];
   }
-  sides_ = made;
-  return sides_;
+  return made;
 }
 
 void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,

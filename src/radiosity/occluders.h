@@ -74,6 +74,8 @@ class Occluders {
   // The shooter's sides (not to be called from two threads at once: it keeps the last
   // shooter's, which several host threads may then share).
   std::shared_ptr<const TargetSides> target_sides(const Shooter& shooter) const;
+  // The same computed afresh (safe on several threads at once).
+  std::shared_ptr<const TargetSides> sides_for(const Shooter& shooter) const;
 
   // For host threads computing ahead (lookahead.h): the batch call's answers and counts for
   // a block, without the answer cache, on the calling thread alone and safe on several

@@ -43,6 +43,10 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
     for (const Occluders& share : programs.occluders) shares.push_back(&share);
     programs.lookahead = std::make_unique<Lookahead>(scene, shares, threads - 1);
     for (Occluders& share : programs.occluders) share.use_lookahead(programs.lookahead.get());
+    // Guesses of the next shots need receivers that never change and do not depend on the
+    // shooter.
+    if (!setup.loads_change() && !o.skip_facing_away)
+      programs.lookahead->guess_shots(o.samples, setup.block_size, R);
   }
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
