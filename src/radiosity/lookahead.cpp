@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <pthread.h>
 
 #include "radiosity/answer_cache.h"
 #include "radiosity/radiosity_engine.h"
@@ -36,7 +37,11 @@ Lookahead::Lookahead(const Scene& scene, std::vector<const Occluders*> shares, i
       unshot_power_(scene.patches.size(), 0.0),
       posted_patch_(scene.patches.size(), 0),
       guessed_patch_(scene.patches.size(), 0) {
-  for (int w = 0; w < std::max(1, workers); ++w) threads_.emplace_back([this] { work(); });
+  for (int w = 0; w < std::max(1, workers); ++w)
+    threads_.emplace_back([this] {
+      pthread_setname_np(pthread_self(), "lookahead");  // as profilers and top show it
+      work();
+    });
 }
 
 Lookahead::~Lookahead() {
