@@ -2,7 +2,8 @@
 // would compute themselves: each share's answers and counts equal its own batch call's (and
 // the literal brute-force loop's), the form factors equal receiver_form_factor of the AND
 // of the answers, whoever computed the block (a worker or the asking thread), for both
-// ray-test policies; blocks not posted, other shooters and other sets are not answered.
+// ray-test policies, for first and repeated shots; blocks not posted, other shooters and
+// other sets are not answered.
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -40,6 +41,8 @@ void check_policy(RayTestPolicy policy) {
   for (const Occluders& s : f.shares) sets.push_back(&s);
   Lookahead lookahead(f.scene, sets, 1);
   for (Occluders& s : f.shares) s.use_lookahead(&lookahead);
+  // The second round repeats the shots: answers and form factors come from the caches.
+  for (int round = 0; round < 2; ++round) {
   std::mt19937 random(7);
   for (int shooter_patch : {0, 40, 150}) {
     const Shooter shooter = make_shooter(f.scene, shooter_patch, Rgb(1.0), 64);
@@ -99,6 +102,7 @@ void check_policy(RayTestPolicy policy) {
     EXPECT_FALSE(lookahead.answers(f.shares[0], shooter, sample.points.data() + 1,
                                    sample.patches.data() + 1, kBlock, masks.data(), counts));
     EXPECT_EQ(counts, WorkCounts{});
+  }
   }
 }
 

@@ -1,5 +1,6 @@
 #include "radiosity/answer_cache.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
@@ -116,29 +117,48 @@ AnswerCache::Target* AnswerCache::find_target(const Shooter& shooter) const {
   return nullptr;
 }
 
-bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                       const int* receiver_patches, std::size_t count, PartMask* masks,
-                       WorkCounts& counts) {
-  if (budget_ == 0) return false;
-  const std::lock_guard<std::mutex> lock(mutex_);
+AnswerCache::Entry* AnswerCache::find_entry(std::uint64_t set, const Shooter& shooter,
+                                             const Vec3* points, const int* receiver_patches,
+                                             std::size_t count) {
   std::uint64_t block_hash;
   const Block* block = find_block(points, receiver_patches, count, block_hash);
   const Target* target = block ? find_target(shooter) : nullptr;
   const auto it = target ? index_.find(Key{set, target, block}) : index_.end();
   if (it == index_.end()) {
     ++misses_;
-    return false;
+    return nullptr;
   }
   ++hits_;
   lru_.splice(lru_.begin(), lru_, it->second);  // most recently used first
-  const Entry& entry = *it->second;
+  return &*it->second;
+}
+
+bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                       const int* receiver_patches, std::size_t count, PartMask* masks,
+                       WorkCounts& counts) {
+  if (budget_ == 0) return false;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const Entry* entry = find_entry(set, shooter, points, receiver_patches, count);
+  if (!entry) return false;
   const PartMask all = shooter.all_parts();
   std::size_t next = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    const unsigned code = unsigned(entry.codes[k / 32] >> (2 * (k % 32))) & 3u;
-    masks[k] = code == 0 ? 0 : (code == 1 ? all : entry.partial[next++]);
+    const unsigned code = unsigned(entry->codes[k / 32] >> (2 * (k % 32))) & 3u;
+    masks[k] = code == 0 ? 0 : (code == 1 ? all : entry->partial[next++]);
   }
-  counts += entry.counts;
+  counts += entry->counts;
+  return true;
+}
+
+bool AnswerCache::find_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                              const int* receiver_patches, std::size_t count,
+                              const PartMask* masks, double* values) {
+  if (budget_ == 0) return false;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const Entry* entry = find_entry(set, shooter, points, receiver_patches, count);
+  if (!entry || entry->values.size() != count || !std::equal(masks, masks + count, entry->masks.begin()))
+    return false;
+  std::copy(entry->values.begin(), entry->values.end(), values);
   return true;
 }
 
@@ -146,18 +166,36 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
                         const int* receiver_patches, std::size_t count, const PartMask* masks,
                         const WorkCounts& counts) {
   const PartMask all = shooter.all_parts();
-  std::vector<std::uint64_t> codes((count + 31) / 32, 0);
-  std::vector<PartMask> partial;
+  Entry entry{};
+  entry.set = set;
+  entry.codes.assign((count + 31) / 32, 0);
   for (std::size_t k = 0; k < count; ++k) {
     const PartMask m = masks[k];
     const std::uint64_t code = m == 0 ? 0 : (m == all ? 1 : 2);
-    codes[k / 32] |= code << (2 * (k % 32));
-    if (code == 2) partial.push_back(m);
+    entry.codes[k / 32] |= code << (2 * (k % 32));
+    if (code == 2) entry.partial.push_back(m);
   }
-  partial.shrink_to_fit();
-  const std::size_t entry_bytes = sizeof(Entry) + 2 * kNodeOverhead +
-                                  codes.size() * sizeof(std::uint64_t) +
-                                  partial.size() * sizeof(PartMask);
+  entry.partial.shrink_to_fit();
+  entry.counts = counts;
+  entry.bytes = sizeof(Entry) + 2 * kNodeOverhead + entry.codes.size() * sizeof(std::uint64_t) +
+                entry.partial.size() * sizeof(PartMask);
+  insert(std::move(entry), shooter, points, receiver_patches, count);
+}
+
+void AnswerCache::store_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                               const int* receiver_patches, std::size_t count,
+                               const PartMask* masks, const double* values) {
+  Entry entry{};
+  entry.set = set;
+  entry.masks.assign(masks, masks + count);
+  entry.values.assign(values, values + count);
+  entry.bytes = sizeof(Entry) + 2 * kNodeOverhead + count * (sizeof(PartMask) + sizeof(double));
+  insert(std::move(entry), shooter, points, receiver_patches, count);
+}
+
+void AnswerCache::insert(Entry entry, const Shooter& shooter, const Vec3* points,
+                         const int* receiver_patches, std::size_t count) {
+  const std::size_t entry_bytes = entry.bytes;
   const std::size_t block_bytes =
       sizeof(Block) + kNodeOverhead + count * (sizeof(Vec3) + sizeof(int));
   const std::size_t target_bytes =
@@ -167,7 +205,7 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
   std::uint64_t block_hash;
   Block* block = find_block(points, receiver_patches, count, block_hash);
   Target* target = find_target(shooter);
-  if (block && target && index_.count(Key{set, target, block})) return;  // held already
+  if (block && target && index_.count(Key{entry.set, target, block})) return;  // held already
   // Make room first; the keys found may go with the entries evicted, and then need room too.
   for (;;) {
     const std::size_t needed = entry_bytes + (block ? 0 : block_bytes) + (target ? 0 : target_bytes);
@@ -199,9 +237,11 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
   }
   ++block->users;
   ++target->users;
-  lru_.push_front(
-      Entry{set, target, block, std::move(codes), std::move(partial), counts, entry_bytes});
-  index_.emplace(Key{set, target, block}, lru_.begin());
+  entry.target = target;
+  entry.block = block;
+  const Key key{entry.set, target, block};
+  lru_.push_front(std::move(entry));
+  index_.emplace(key, lru_.begin());
   bytes_ += entry_bytes;
   if (bytes_ > peak_bytes_) peak_bytes_ = bytes_;
 }

@@ -47,6 +47,15 @@ class AnswerCache {
   void store(std::uint64_t set, const Shooter& shooter, const Vec3* points,
              const int* receiver_patches, std::size_t count, const PartMask* masks,
              const WorkCounts& counts);
+  // Values per point computed from a block's answers (the form factors of lookahead.h), kept
+  // under the same budget: found only for the same set id, shooter and block, and the same
+  // `masks` (compared in full).
+  bool find_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                   const int* receiver_patches, std::size_t count, const PartMask* masks,
+                   double* values);
+  void store_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                    const int* receiver_patches, std::size_t count, const PartMask* masks,
+                    const double* values);
   // Drops every answer of a set (it is being destroyed).
   void forget_set(std::uint64_t set);
 
@@ -86,6 +95,8 @@ class AnswerCache {
     std::vector<std::uint64_t> codes;  // 32 points per word
     std::vector<PartMask> partial;
     WorkCounts counts;
+    std::vector<PartMask> masks;  // values entries: the masks they were computed from
+    std::vector<double> values;
     std::size_t bytes;
   };
   struct Key {
@@ -104,6 +115,12 @@ class AnswerCache {
   Block* find_block(const Vec3* points, const int* patches, std::size_t count,
                     std::uint64_t& hash) const;
   Target* find_target(const Shooter& shooter) const;
+  // The entry of (set, shooter, block), or null (under mutex_).
+  Entry* find_entry(std::uint64_t set, const Shooter& shooter, const Vec3* points,
+                    const int* receiver_patches, std::size_t count);
+  // Keeps `entry` (its set, payload and bytes filled in) unless one is held already.
+  void insert(Entry entry, const Shooter& shooter, const Vec3* points,
+              const int* receiver_patches, std::size_t count);
   void release(Entry& entry);
   void evict_until(std::size_t bytes);
 

@@ -34,6 +34,8 @@ bool same_shooter(const Shooter& a, const Shooter& b) {
 Lookahead::Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers)
     : scene_(scene),
       shares_(std::move(shares)),
+      blockers_(SceneBlockers::for_scene(scene)),
+      form_factor_set_(AnswerCache::new_set_id()),
       unshot_power_(scene.patches.size(), 0.0),
       posted_patch_(scene.patches.size(), 0),
       guessed_patch_(scene.patches.size(), 0) {
@@ -52,6 +54,7 @@ Lookahead::~Lookahead() {
   }
   work_to_do_.notify_all();
   for (std::thread& t : threads_) t.join();
+  blockers_->answer_cache().forget_set(form_factor_set_);
 }
 
 std::shared_ptr<Lookahead::Shot> Lookahead::post(const Shooter& shooter,
@@ -240,9 +243,15 @@ void Lookahead::compute(Shot& shot, Block& block) {
   for (std::size_t s = 0; s < shares_.size(); ++s)
     for (std::size_t k = 0; k < n; ++k) block.visible[k] &= block.answers[s * n + k];
   block.form_factors.resize(n);
+  AnswerCache& cache = blockers_->answer_cache();
+  if (cache.find_values(form_factor_set_, shooter, points, patches, n, block.visible.data(),
+                        block.form_factors.data()))
+    return;
   for (std::size_t k = 0; k < n; ++k)
     block.form_factors[k] = receiver_form_factor(
         shooter, points[k], scene_.patches[std::size_t(patches[k])].normal, block.visible[k]);
+  cache.store_values(form_factor_set_, shooter, points, patches, n, block.visible.data(),
+                     block.form_factors.data());
 }
 
 void Lookahead::finish(Block& block) {

@@ -97,6 +97,10 @@ class Lookahead {
 
   const Scene& scene_;
   std::vector<const Occluders*> shares_;
+  // The form factors of blocks shot before (a repeated shot has the same) are kept in the
+  // scene's answer cache under this id.
+  std::shared_ptr<const SceneBlockers> blockers_;
+  std::uint64_t form_factor_set_;
   std::mutex mutex_;
   std::condition_variable work_to_do_, block_done_;
   bool stopping_ = false;
