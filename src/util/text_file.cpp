@@ -1,8 +1,10 @@
 #include "util/text_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include "util/input_error.h"
 
@@ -13,21 +15,28 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes, const
   // including reading a directory.
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) throw InputError(path + ": cannot open " + what + ": " + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t got;
-  // Reads at most one byte past the limit: enough to know the file is too large, and it
-  // stops on endless files (/dev/zero) too.
-  while (text.size() <= max_bytes &&
-         (got = std::fread(buffer, 1, std::min(sizeof buffer, max_bytes + 1 - text.size()), file)) > 0)
-    text.append(buffer, got);
+  // Read in pieces and joined once: a string grown by doubling would take up to four times
+  // the limit in address space on an endless file (/dev/zero), as malloc may keep what it
+  // freed. Reads at most one byte past the limit: enough to know the file is too large.
+  std::vector<std::string> pieces;
+  std::size_t size = 0, got = 0;
+  do {
+    std::string piece(std::min<std::size_t>(1 << 20, max_bytes + 1 - size), '\0');
+    got = std::fread(piece.data(), 1, piece.size(), file);
+    piece.resize(got);
+    size += got;
+    pieces.push_back(std::move(piece));
+  } while (got > 0 && size <= max_bytes);
   const bool failed = std::ferror(file);
   const int error = errno;
   std::fclose(file);
   if (failed) throw InputError(path + ": cannot read " + what + ": " + std::strerror(error));
-  if (text.size() > max_bytes)
+  if (size > max_bytes)
     throw InputError(path + ": " + what + " is larger than " + std::to_string(max_bytes) +
                      " bytes (the limit)");
+  std::string text;
+  text.reserve(size);
+  for (const std::string& piece : pieces) text += piece;
   return text;
 }
 
