@@ -170,3 +170,48 @@ TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
 
 }  // namespace
 }  // namespace ncube
+
+namespace ncube {
+namespace {
+
+// Values per point (the form factors the lookahead keeps) come back only for the same set,
+// shooter, block and masks, and count against the budget like answers.
+TEST(AnswerCache, ValuesComeBackOnlyForTheSameMasks) {
+  const Scene scene = scene1();
+  const Shooter shooter = make_shooter(scene, 40, Rgb(1.0), 16);
+  std::mt19937 random(3);
+  const ReceiverSample sample = sample_receivers(scene, 40, 20, random);
+  std::vector<PartMask> masks(20);
+  std::vector<double> values(20);
+  for (std::size_t k = 0; k < 20; ++k) {
+    masks[k] = PartMask(k * 977);
+    values[k] = 0.001 * double(k) + 1e-17;
+  }
+  AnswerCache cache(1 << 20);
+  const std::uint64_t set = AnswerCache::new_set_id();
+  cache.store_values(set, shooter, sample.points.data(), sample.patches.data(), 20, masks.data(),
+                     values.data());
+  EXPECT_GT(cache.bytes(), 20 * (sizeof(PartMask) + sizeof(double)));
+  std::vector<double> got(20, -1.0);
+  ASSERT_TRUE(cache.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+                                masks.data(), got.data()));
+  EXPECT_EQ(got, values);
+  std::vector<PartMask> other = masks;
+  other[19] ^= 2;
+  EXPECT_FALSE(cache.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+                                 other.data(), got.data()));
+  EXPECT_FALSE(cache.find_values(AnswerCache::new_set_id(), shooter, sample.points.data(),
+                                 sample.patches.data(), 20, masks.data(), got.data()));
+  EXPECT_FALSE(cache.find_values(set, make_shooter(scene, 41, Rgb(1.0), 16), sample.points.data(),
+                                 sample.patches.data(), 20, masks.data(), got.data()));
+  cache.forget_set(set);
+  EXPECT_EQ(cache.bytes(), 0u);
+  AnswerCache none(0);
+  none.store_values(set, shooter, sample.points.data(), sample.patches.data(), 20, masks.data(),
+                    values.data());
+  EXPECT_FALSE(none.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+                                masks.data(), got.data()));
+}
+
+}  // namespace
+}  // namespace ncube

@@ -29,8 +29,9 @@ std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t co
 
 class AnswerCache {
  public:
-  // Choice: 512 MiB by default, twice what every answer of the scene2 run at R=8, V=7 takes
-  // (docs/performance.md); NCUBE_ANSWER_CACHE_MB overrides it (0 turns the cache off).
+  // Choice: 512 MiB by default; every answer and form factor of the scene2 run at R=8, V=7
+  // takes about 300 MB (docs/performance.md); NCUBE_ANSWER_CACHE_MB overrides it (0 turns
+  // the cache off).
   static std::size_t default_budget_bytes();
 
   explicit AnswerCache(std::size_t budget_bytes);
