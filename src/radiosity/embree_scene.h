@@ -39,8 +39,8 @@ class EmbreeScene {
  public:
   // Where Embree's part of a ray starts and ends, and how near an end a patch must be to be
   // tested exactly instead, in pads (see above).
-  static constexpr double kEndGap = 2.0;
-  static constexpr double kNearRadius = 4.0;
+  static constexpr double kEndGap = 0.5;
+  static constexpr double kNearRadius = 2.0;
 
   // `candidates` (kept by reference: must outlive this scene) in their set order; `pad` is
   // the margin (scene units) of the quads, far above the single-precision rounding of the
@@ -50,43 +50,41 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  // The candidates near each of the `count` ray targets (a shooter's): made once per shooter,
-  // handed to every query with these targets.
-  struct NearTargets {
-    std::vector<Vec3> targets;
-    std::vector<int> first, positions;  // target k: positions[first[k] .. first[k + 1])
+  // The end points of a point's rays (a shooter's M ray targets, M <= 64) with the
+  // candidates near each: made once per shooter, handed to every query of its rays.
+  struct RayTargets {
+    std::vector<Vec3> points;
+    std::vector<int> first, near;  // target k: near[first[k] .. first[k + 1])
+    int count() const { return int(points.size()); }
   };
-  NearTargets near_targets(const Vec3* targets, int count) const;
+  RayTargets ray_targets(const Vec3* targets, int count) const;
 
-  // Bit k is set when the segment from `from` to `targets[k]` (k < count <= 64) crosses, by
-  // the exact test, a candidate other than the positions `excluded_a` and `excluded_b`
-  // (-1: none). `near` was made from the same targets. Safe to call from several threads
-  // at once.
-  PartMask blocked(const Vec3& from, const Vec3* targets, int count, const NearTargets& near,
-                   int excluded_a, int excluded_b) const;
+  // Bit k is set when the segment from `from` to target k crosses, by the exact test, a
+  // candidate other than the positions `excluded_a` and `excluded_b` (-1: none). Safe to
+  // call from several threads at once.
+  PartMask blocked(const Vec3& from, const RayTargets& targets, int excluded_a,
+                   int excluded_b) const;
 
-  // Every candidate (not excluded) the segment to targets[k] crosses by the exact test:
+  // Every candidate (not excluded) the segment to target k crosses by the exact test:
   // appends (k, position) pairs to `hits`, in no particular order, possibly more than once
   // (Embree meets a quad as two triangles; a patch near an end may be found by Embree too).
   // Every hit along each segment is examined (no early end).
-  void all_blockers(const Vec3& from, const Vec3* targets, int count, const NearTargets& near,
-                    int excluded_a, int excluded_b,
+  void all_blockers(const Vec3& from, const RayTargets& targets, int excluded_a, int excluded_b,
                     std::vector<std::pair<int, int>>& hits) const;
 
   // Sets of candidates (up to 64, `sets_of[position]`: bit s set when the candidate is in
   // set s): ray_sets[k] gets the sets holding a candidate (not excluded) the segment to
-  // targets[k] crosses by the exact test. A hit whose sets are all known already is not
+  // target k crosses by the exact test. A hit whose sets are all known already is not
   // tested, and a ray ends once it has found all of `all_sets`.
-  void blocked_sets(const Vec3& from, const Vec3* targets, int count, const NearTargets& near,
-                    int excluded_a, int excluded_b, const std::uint64_t* sets_of,
-                    std::uint64_t all_sets, std::uint64_t* ray_sets) const;
+  void blocked_sets(const Vec3& from, const RayTargets& targets, int excluded_a, int excluded_b,
+                    const std::uint64_t* sets_of, std::uint64_t all_sets,
+                    std::uint64_t* ray_sets) const;
 
  private:
   struct Query;
   static void exact_filter(const RTCFilterFunctionNArguments* args);
-  void prepare(Query& query, const Vec3& from, const Vec3* targets, int count,
-               const NearTargets& near, int excluded_a, int excluded_b,
-               std::vector<std::pair<int, int>>* hits) const;
+  void prepare(Query& query, const Vec3& from, const RayTargets& targets, int excluded_a,
+               int excluded_b, std::vector<std::pair<int, int>>* hits) const;
   // The exact test of the candidates near the rays' ends: found(k, position) for each
   // crossing of ray k.
   template <class Found>

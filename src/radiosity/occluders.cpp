@@ -123,7 +123,7 @@ const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) co
     sides_.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.in_front[g]);
     sides_.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.behind[g]);
   }
-  sides_.near_targets = blockers_->embree().near_targets(shooter.targets.data(), m);
+  sides_.ray_targets = blockers_->embree().ray_targets(shooter.targets.data(), m);
   sides_.near_planes.clear();
   for (std::size_t g = 0; g < planes; ++g)
     if (sides_.near[g] != 0) sides_.near_planes.push_back(int(g));
@@ -250,8 +250,7 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
       }
     }
   } else {
-    blocked = blockers_->embree().blocked(point, shooter.targets.data(), m, sides.near_targets,
-                                          receiver_patch, shooter.patch);
+    blocked = blockers_->embree().blocked(point, sides.ray_targets, receiver_patch, shooter.patch);
   }
   // Rays within the band around a plane that also holds the point: decided without Embree.
   for (int g : sides.near_planes) {

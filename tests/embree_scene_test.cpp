@@ -1,0 +1,76 @@
+// EmbreeScene asks Embree only about the middle of each ray and tests the patches near its
+// ends exactly (embree_scene.h): blockers crossing a ray a tenth of a pad from its start or
+// its end (panel_room.h) must be found in all three query modes, as the brute-force loop
+// finds them, while the receiver's and the shooter's own patches never block.
+#include "radiosity/embree_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "panel_room.h"
+
+namespace ncube {
+namespace {
+
+struct PanelRoomScene {
+  Scene scene = panel_room();
+  std::vector<PatchCandidate> candidates;
+  PanelRoomScene() {
+    for (int p = 0; p < int(scene.patches.size()); ++p)
+      candidates.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
+  }
+};
+
+// The literal loop: the patches (not excluded) each ray crosses by the exact test.
+unsigned brute_force_blocked(const std::vector<PatchCandidate>& candidates, const PanelRoomCase& c) {
+  unsigned blocked = 0;
+  for (int k = 0; k < 3; ++k)
+    for (const PatchCandidate& patch : candidates)
+      if (patch.scene_index != kPanelRoomFloor && patch.scene_index != kPanelRoomLight &&
+          segment_crosses(patch, c.point, c.targets[std::size_t(k)] - c.point))
+        blocked |= 1u << k;
+  return blocked;
+}
+
+TEST(EmbreeScene, FindsBlockersWithinAFractionOfAPadOfEitherEndInEveryQueryMode) {
+  const PanelRoomScene room;
+  const EmbreeScene embree(room.candidates, kPanelRoomPad);
+  // Sets for the set query: the standing panel alone, the hanging panel alone, the others.
+  const std::uint64_t sets_of[4] = {0b100, 0b100, 0b001, 0b010};
+  for (const PanelRoomCase& c : panel_room_cases()) {
+    ASSERT_EQ(brute_force_blocked(room.candidates, c), c.blocked_rays);  // the worked-out case
+    const EmbreeScene::RayTargets targets = embree.ray_targets(c.targets.data(), 3);
+    EXPECT_EQ(embree.blocked(c.point, targets, kPanelRoomFloor, kPanelRoomLight), c.blocked_rays);
+
+    std::vector<std::pair<int, int>> hits;
+    embree.all_blockers(c.point, targets, kPanelRoomFloor, kPanelRoomLight, hits);
+    std::sort(hits.begin(), hits.end());
+    hits.erase(std::unique(hits.begin(), hits.end()), hits.end());  // repeats are allowed
+    const std::vector<std::pair<int, int>> expected{{0, c.blocker}, {1, c.blocker}};
+    EXPECT_EQ(hits, expected);
+
+    std::uint64_t ray_sets[3];
+    embree.blocked_sets(c.point, targets, kPanelRoomFloor, kPanelRoomLight, sets_of, 0b111, ray_sets);
+    const std::uint64_t set = sets_of[c.blocker];
+    EXPECT_EQ(ray_sets[0], set);
+    EXPECT_EQ(ray_sets[1], set);
+    EXPECT_EQ(ray_sets[2], 0u);
+  }
+}
+
+TEST(EmbreeScene, OwnPatchesDoNotBlockTheirRaysButOthersAtTheEndsDo) {
+  // The same rays with nothing excluded: the floor and the light are met only at t = 0 and
+  // t = 1, outside the exact test's segment, so the answers stay the same; excluding the
+  // blocking panel instead (as if it were the receiver) leaves every ray unblocked.
+  const PanelRoomScene room;
+  const EmbreeScene embree(room.candidates, kPanelRoomPad);
+  for (const PanelRoomCase& c : panel_room_cases()) {
+    const EmbreeScene::RayTargets targets = embree.ray_targets(c.targets.data(), 3);
+    EXPECT_EQ(embree.blocked(c.point, targets, -1, -1), c.blocked_rays);
+    EXPECT_EQ(embree.blocked(c.point, targets, c.blocker, kPanelRoomLight), 0u);
+  }
+}
+
+}  // namespace
+}  // namespace ncube
