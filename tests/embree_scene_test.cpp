@@ -40,18 +40,18 @@ TEST(EmbreeScene, FindsBlockersWithinAFractionOfAPadOfEitherEndInEveryQueryMode)
   const std::uint64_t sets_of[4] = {0b100, 0b100, 0b001, 0b010};
   for (const PanelRoomCase& c : panel_room_cases()) {
     ASSERT_EQ(brute_force_blocked(room.candidates, c), c.blocked_rays);  // the worked-out case
-    const EmbreeScene::RayTargets targets = embree.ray_targets(c.targets.data(), 3);
-    EXPECT_EQ(embree.blocked(c.point, targets, kPanelRoomFloor, kPanelRoomLight), c.blocked_rays);
+    const EmbreeScene::RayTargets targets = embree.ray_targets(c.targets.data(), 3, kPanelRoomLight);
+    EXPECT_EQ(embree.blocked(c.point, kPanelRoomFloor, targets), c.blocked_rays);
 
     std::vector<std::pair<int, int>> hits;
-    embree.all_blockers(c.point, targets, kPanelRoomFloor, kPanelRoomLight, hits);
+    embree.all_blockers(c.point, kPanelRoomFloor, targets, hits);
     std::sort(hits.begin(), hits.end());
     hits.erase(std::unique(hits.begin(), hits.end()), hits.end());  // repeats are allowed
     const std::vector<std::pair<int, int>> expected{{0, c.blocker}, {1, c.blocker}};
     EXPECT_EQ(hits, expected);
 
     std::uint64_t ray_sets[3];
-    embree.blocked_sets(c.point, targets, kPanelRoomFloor, kPanelRoomLight, sets_of, 0b111, ray_sets);
+    embree.blocked_sets(c.point, kPanelRoomFloor, targets, sets_of, 0b111, ray_sets);
     const std::uint64_t set = sets_of[c.blocker];
     EXPECT_EQ(ray_sets[0], set);
     EXPECT_EQ(ray_sets[1], set);
@@ -61,14 +61,17 @@ TEST(EmbreeScene, FindsBlockersWithinAFractionOfAPadOfEitherEndInEveryQueryMode)
 
 TEST(EmbreeScene, OwnPatchesDoNotBlockTheirRaysButOthersAtTheEndsDo) {
   // The same rays with nothing excluded: the floor and the light are met only at t = 0 and
-  // t = 1, outside the exact test's segment, so the answers stay the same; excluding the
-  // blocking panel instead (as if it were the receiver) leaves every ray unblocked.
+  // t = 1, outside the exact test's segment, so the answers stay the same. Excluding the
+  // blocking panel instead, as the receiver's patch or as the shooter's, leaves every ray
+  // unblocked.
   const PanelRoomScene room;
   const EmbreeScene embree(room.candidates, kPanelRoomPad);
   for (const PanelRoomCase& c : panel_room_cases()) {
-    const EmbreeScene::RayTargets targets = embree.ray_targets(c.targets.data(), 3);
-    EXPECT_EQ(embree.blocked(c.point, targets, -1, -1), c.blocked_rays);
-    EXPECT_EQ(embree.blocked(c.point, targets, c.blocker, kPanelRoomLight), 0u);
+    EXPECT_EQ(embree.blocked(c.point, -1, embree.ray_targets(c.targets.data(), 3, -1)),
+              c.blocked_rays);
+    EXPECT_EQ(embree.blocked(c.point, c.blocker, embree.ray_targets(c.targets.data(), 3, -1)), 0u);
+    const int other = c.blocker == kPanelRoomStanding ? kPanelRoomHanging : kPanelRoomStanding;
+    EXPECT_EQ(embree.blocked(c.point, other, embree.ray_targets(c.targets.data(), 3, c.blocker)), 0u);
   }
 }
 

@@ -171,37 +171,35 @@ void EmbreeScene::near_end_crossings(const Query& query, int count, Found&& foun
     for (int k = 0; k < count; ++k)
       if (segment_crosses(c, query.from, query.delta[k])) found(k, position);
   });
-  for (int k = 0; k < count; ++k)
-    for (int i = targets.first[std::size_t(k)]; i < targets.first[std::size_t(k) + 1]; ++i) {
-      const int position = targets.near[std::size_t(i)];
-      if (position == query.excluded_a || position == query.excluded_b) continue;
-      if (segment_crosses(candidates_[std::size_t(position)], query.from, query.delta[k]))
-        found(k, position);
-    }
+  for (const auto& [k, position] : targets.near)
+    if (position != query.excluded_a &&
+        segment_crosses(candidates_[std::size_t(position)], query.from, query.delta[k]))
+      found(k, position);
 }
 
-EmbreeScene::RayTargets EmbreeScene::ray_targets(const Vec3* targets, int count) const {
+EmbreeScene::RayTargets EmbreeScene::ray_targets(const Vec3* targets, int count,
+                                                 int shooter_position) const {
   if (count < 0 || count > kMaxShooterParts)
     throw std::logic_error("EmbreeScene: more than 64 ray targets");
   RayTargets result;
+  result.patch = shooter_position;
   result.points.assign(targets, targets + count);
-  result.first.push_back(0);
-  for (int k = 0; k < count; ++k) {
-    near_.for_each_near(targets[k], [&](int position) { result.near.push_back(position); });
-    result.first.push_back(int(result.near.size()));
-  }
+  for (int k = 0; k < count; ++k)
+    near_.for_each_near(targets[k], [&](int position) {
+      if (position != shooter_position) result.near.emplace_back(k, position);
+    });
   return result;
 }
 
-void EmbreeScene::prepare(Query& query, const Vec3& from, const RayTargets& targets,
-                          int excluded_a, int excluded_b,
+void EmbreeScene::prepare(Query& query, const Vec3& from, int receiver,
+                          const RayTargets& targets,
                           std::vector<std::pair<int, int>>* hits) const {
   rtcInitIntersectContext(&query.context);
   query.scene = this;
   query.from = from;
   for (int k = 0; k < targets.count(); ++k) query.delta[k] = targets.points[std::size_t(k)] - from;
-  query.excluded_a = excluded_a;
-  query.excluded_b = excluded_b;
+  query.excluded_a = receiver;
+  query.excluded_b = targets.patch;
   query.targets = &targets;
   query.hits = hits;
   query.sets_of = nullptr;
@@ -211,35 +209,34 @@ void EmbreeScene::prepare(Query& query, const Vec3& from, const RayTargets& targ
 
 // Each query: the rays' ends by the exact test first, then Embree for the rest of each ray
 // that can still change the answer.
-PartMask EmbreeScene::blocked(const Vec3& from, const RayTargets& targets, int excluded_a,
-                              int excluded_b) const {
+PartMask EmbreeScene::blocked(const Vec3& from, int receiver, const RayTargets& targets) const {
   const int count = targets.count();
   if (candidates_.empty() || count == 0) return 0;
   Query query;
-  prepare(query, from, targets, excluded_a, excluded_b, nullptr);
+  prepare(query, from, receiver, targets, nullptr);
   PartMask blocked = 0;
   near_end_crossings(query, count, [&](int k, int) { blocked |= PartMask(1) << k; });
   return blocked | trace(query, count, blocked);
 }
 
-void EmbreeScene::all_blockers(const Vec3& from, const RayTargets& targets, int excluded_a,
-                               int excluded_b, std::vector<std::pair<int, int>>& hits) const {
+void EmbreeScene::all_blockers(const Vec3& from, int receiver, const RayTargets& targets,
+                               std::vector<std::pair<int, int>>& hits) const {
   const int count = targets.count();
   if (candidates_.empty() || count == 0) return;
   Query query;
-  prepare(query, from, targets, excluded_a, excluded_b, &hits);
+  prepare(query, from, receiver, targets, &hits);
   near_end_crossings(query, count, [&](int k, int position) { hits.emplace_back(k, position); });
   trace(query, count, 0);
 }
 
-void EmbreeScene::blocked_sets(const Vec3& from, const RayTargets& targets, int excluded_a,
-                               int excluded_b, const std::uint64_t* sets_of,
-                               std::uint64_t all_sets, std::uint64_t* ray_sets) const {
+void EmbreeScene::blocked_sets(const Vec3& from, int receiver, const RayTargets& targets,
+                               const std::uint64_t* sets_of, std::uint64_t all_sets,
+                               std::uint64_t* ray_sets) const {
   const int count = targets.count();
   std::fill(ray_sets, ray_sets + count, std::uint64_t(0));
   if (candidates_.empty() || count == 0 || all_sets == 0) return;
   Query query;
-  prepare(query, from, targets, excluded_a, excluded_b, nullptr);
+  prepare(query, from, receiver, targets, nullptr);
   query.sets_of = sets_of;
   query.all_sets = all_sets;
   query.ray_sets = ray_sets;

@@ -50,41 +50,42 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  // The end points of a point's rays (a shooter's M ray targets, M <= 64) with the
-  // candidates near each: made once per shooter, handed to every query of its rays.
+  // The shooter's side of a point's rays: its M ray targets (M <= 64), its patch (the
+  // position `patch`, -1: none, never blocks them) and the candidates near each target.
+  // Made once per shooter, handed to every query of its rays.
   struct RayTargets {
+    int patch = -1;
     std::vector<Vec3> points;
-    std::vector<int> first, near;  // target k: near[first[k] .. first[k + 1])
+    std::vector<std::pair<int, int>> near;  // (k, position): near target k, not `patch`
     int count() const { return int(points.size()); }
   };
-  RayTargets ray_targets(const Vec3* targets, int count) const;
+  RayTargets ray_targets(const Vec3* targets, int count, int shooter_position) const;
 
   // Bit k is set when the segment from `from` to target k crosses, by the exact test, a
-  // candidate other than the positions `excluded_a` and `excluded_b` (-1: none). Safe to
+  // candidate other than the positions `receiver` (-1: none) and targets.patch. Safe to
   // call from several threads at once.
-  PartMask blocked(const Vec3& from, const RayTargets& targets, int excluded_a,
-                   int excluded_b) const;
+  PartMask blocked(const Vec3& from, int receiver, const RayTargets& targets) const;
 
   // Every candidate (not excluded) the segment to target k crosses by the exact test:
   // appends (k, position) pairs to `hits`, in no particular order, possibly more than once
   // (Embree meets a quad as two triangles; a patch near an end may be found by Embree too).
   // Every hit along each segment is examined (no early end).
-  void all_blockers(const Vec3& from, const RayTargets& targets, int excluded_a, int excluded_b,
+  void all_blockers(const Vec3& from, int receiver, const RayTargets& targets,
                     std::vector<std::pair<int, int>>& hits) const;
 
   // Sets of candidates (up to 64, `sets_of[position]`: bit s set when the candidate is in
   // set s): ray_sets[k] gets the sets holding a candidate (not excluded) the segment to
   // target k crosses by the exact test. A hit whose sets are all known already is not
   // tested, and a ray ends once it has found all of `all_sets`.
-  void blocked_sets(const Vec3& from, const RayTargets& targets, int excluded_a, int excluded_b,
+  void blocked_sets(const Vec3& from, int receiver, const RayTargets& targets,
                     const std::uint64_t* sets_of, std::uint64_t all_sets,
                     std::uint64_t* ray_sets) const;
 
  private:
   struct Query;
   static void exact_filter(const RTCFilterFunctionNArguments* args);
-  void prepare(Query& query, const Vec3& from, const RayTargets& targets, int excluded_a,
-               int excluded_b, std::vector<std::pair<int, int>>* hits) const;
+  void prepare(Query& query, const Vec3& from, int receiver, const RayTargets& targets,
+               std::vector<std::pair<int, int>>* hits) const;
   // The exact test of the candidates near the rays' ends: found(k, position) for each
   // crossing of ray k.
   template <class Found>

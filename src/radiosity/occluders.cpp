@@ -100,7 +100,7 @@ Occluders::~Occluders() {
 
 const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) const {
   const int m = shooter.part_count;
-  if (sides_.part_count == m &&
+  if (sides_.part_count == m && sides_.ray_targets.patch == shooter.patch &&
       std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_.targets.begin()))
     return sides_;
   const std::size_t planes = plane_size_.size();
@@ -123,7 +123,7 @@ const Occluders::TargetSides& Occluders::target_sides(const Shooter& shooter) co
     sides_.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.in_front[g]);
     sides_.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides_.behind[g]);
   }
-  sides_.ray_targets = blockers_->embree().ray_targets(shooter.targets.data(), m);
+  sides_.ray_targets = blockers_->embree().ray_targets(shooter.targets.data(), m, shooter.patch);
   sides_.near_planes.clear();
   for (std::size_t g = 0; g < planes; ++g)
     if (sides_.near[g] != 0) sides_.near_planes.push_back(int(g));
@@ -250,7 +250,7 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
       }
     }
   } else {
-    blocked = blockers_->embree().blocked(point, sides.ray_targets, receiver_patch, shooter.patch);
+    blocked = blockers_->embree().blocked(point, receiver_patch, sides.ray_targets);
   }
   // Rays within the band around a plane that also holds the point: decided without Embree.
   for (int g : sides.near_planes) {
