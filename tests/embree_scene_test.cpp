@@ -59,6 +59,43 @@ TEST(EmbreeScene, FindsBlockersWithinAFractionOfAPadOfEitherEndInEveryQueryMode)
   }
 }
 
+TEST(EmbreeScene, FindsBlockersAtEveryDistanceFromTheEnds) {
+  // Blockers from a hundredth of a pad to 3 pads from a ray's start (the standing panel,
+  // points moved away from it along -x) or its end (the hanging panel, targets moved away
+  // from it along -x), for steep, shallow and oblique rays: wherever the near tests' reach
+  // ends and Embree's part of the ray begins, no crossing falls between them.
+  const PanelRoomScene room;
+  const EmbreeScene embree(room.candidates, kPanelRoomPad);
+  int blocked_rays = 0;
+  auto check = [&](const Vec3& from, const std::vector<Vec3>& targets) {
+    const EmbreeScene::RayTargets ray_targets =
+        embree.ray_targets(targets.data(), int(targets.size()), kPanelRoomLight);
+    const PartMask blocked = embree.blocked(from, kPanelRoomFloor, ray_targets);
+    for (int k = 0; k < int(targets.size()); ++k) {
+      bool expected = false;
+      for (const PatchCandidate& patch : room.candidates)
+        if (patch.scene_index != kPanelRoomFloor && patch.scene_index != kPanelRoomLight)
+          expected |= segment_crosses(patch, from, targets[std::size_t(k)] - from);
+      ASSERT_TRUE(expected) << "the sweep's rays all cross a panel";
+      ASSERT_EQ(bool(blocked >> k & 1), expected)
+          << "from " << from.x << " " << from.y << " " << from.z << " to ray " << k;
+      ++blocked_rays;
+    }
+  };
+  std::vector<Vec3> near_end_targets;
+  for (int step = 1; step <= 300; ++step) {
+    const double d = 0.01 * step * kPanelRoomPad;
+    check(Vec3(-d, 0, 0), {Vec3(0.6, 0, 1), Vec3(2, 0, 0.3), Vec3(1, 0.15, 0.3)});
+    near_end_targets.push_back(Vec3(0.9 - d, 0, 1));
+  }
+  for (const Vec3& from : {Vec3(0.98, 0, 0), Vec3(3, 0, 0.95), Vec3(1.5, 0.5, 0.5)})
+    for (std::size_t first = 0; first < near_end_targets.size(); first += 64)
+      check(from, std::vector<Vec3>(near_end_targets.begin() + long(first),
+                                    near_end_targets.begin() +
+                                        long(std::min(first + 64, near_end_targets.size()))));
+  EXPECT_EQ(blocked_rays, 1800);
+}
+
 TEST(EmbreeScene, OwnPatchesDoNotBlockTheirRaysButOthersAtTheEndsDo) {
   // The same rays with nothing excluded: the floor and the light are met only at t = 0 and
   // t = 1, outside the exact test's segment, so the answers stay the same. Excluding the

@@ -10,17 +10,25 @@
 // the exact test decides. Rays nearly parallel to a plane are the caller's (occluders.h):
 // there single precision cannot be trusted at any padding (docs/performance.md).
 //
-// The ends of a ray are not Embree's: it is asked about the ray from `kEndGap` pads past its
-// point to `kEndGap` pads short of its target, so it does not meet the receiver's and the
+// The ends of a ray are not Embree's: it is asked about the ray from kEndGap pads past its
+// point to kEndGap pads short of its target, so it does not meet the receiver's and the
 // shooter's own patches, which every ray starts and ends on (three quarters of the hits it
 // handed to the filter when rays reached a pad beyond both ends). The exact test runs
-// instead on the patches near each end (near_patches.h: bounding box grown by kNearRadius
-// pads holds the end), for every ray of that end. A crossing within kNearRadius pads of an
-// end (measured along the ray) is on such a patch; one farther from both ends lies at least
-// kNearRadius - kEndGap = 2 pads inside Embree's part of the ray, more than the single-
-// precision error of Embree's hit parameter there (at most a pad, as for the quads' padding:
-// the same rounding over the same crossing angle; docs/performance.md). So no crossing is
-// missed, and every answer is still the exact test's.
+// instead, for every ray of an end, on the patches near that end (near_patches.h: their
+// bounding box grown by kNearRadius pads holds it). Why no crossing is missed, for a ray
+// of length L and an exact crossing at distance d from its point (along the ray):
+//  * d <= kNearRadius pads (less double rounding): the crossing point is on the patch and
+//    within that distance of the point in every coordinate, so the point is in the patch's
+//    grown box: the patch is near the point and gets the exact test. L - d likewise: near
+//    the target.
+//  * otherwise the crossing lies more than kNearRadius - kEndGap = 1.5 pads inside the part
+//    of the ray Embree is asked about, more than the single-precision error of Embree's hit
+//    parameter there: at most a pad (rounding of about 1e-6 of the scale over the sine of
+//    the crossing angle, above 2e-3 for every crossing left to Embree: the budget the
+//    quads' padding covers in their plane, and the old rays' reach past both ends along the
+//    ray; docs/performance.md). Embree reports it, and the filter's exact test keeps it.
+// Rays shorter than 2 kEndGap pads are left to the near tests alone (every crossing is then
+// within kNearRadius pads of an end). Every answer is still the exact test's.
 #pragma once
 
 #include <embree3/rtcore.h>
