@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <random>
 
+#include "panel_room.h"
+
 namespace ncube {
 namespace {
 
@@ -140,6 +142,30 @@ TEST(Occluders, CountsARayAsAPlaneCrossingWhenItsEndsLieOnOppositeSides) {
     EXPECT_EQ(counts.plane_crossings, 2u);
     EXPECT_EQ(counts, reference);
   }
+}
+
+TEST(Occluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
+  // panel_room.h: blockers a tenth of a pad from a ray's start or end, which Embree is not
+  // asked about: the whole scene (one Embree query, or lists for the first-blocker loop)
+  // and a share holding the panels (a registered set's bits, or lists) all find them.
+  const Scene scene = panel_room();
+  const std::vector<int> all{0, 1, 2, 3}, panels{kPanelRoomStanding, kPanelRoomHanging};
+  for (RayTestPolicy policy : {RayTestPolicy::kTestAllPatches, RayTestPolicy::kStopAtFirstBlocker})
+    for (const auto& set : {all, panels}) {
+      const Occluders occluders(scene, set, policy);
+      for (const PanelRoomCase& c : panel_room_cases()) {
+        Shooter shooter;
+        shooter.patch = kPanelRoomLight;
+        shooter.part_count = 3;
+        std::copy(c.targets.begin(), c.targets.end(), shooter.targets.begin());
+        WorkCounts counts, reference;
+        const PartMask visible = PartMask(0b111 & ~c.blocked_rays);
+        EXPECT_EQ(occluders.unblocked_parts(c.point, kPanelRoomFloor, shooter, counts), visible);
+        EXPECT_EQ(occluders.unblocked_parts_brute_force(c.point, kPanelRoomFloor, shooter, reference),
+                  visible);
+        EXPECT_EQ(counts, reference);
+      }
+    }
 }
 
 }  // namespace

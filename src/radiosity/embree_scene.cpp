@@ -46,6 +46,7 @@ struct EmbreeScene::Query {
   Vec3 from;
   Vec3 delta[kMaxShooterParts];
   int excluded_a, excluded_b;
+  const EmbreeScene::RayTargets* targets;
   std::vector<std::pair<int, int>>* hits;  // null: any blocker ends a ray; else every
                                            // (ray, position) found, and no ray ends
   const std::uint64_t* sets_of;            // not null: the sets each ray meets (ray_sets)
@@ -54,7 +55,7 @@ struct EmbreeScene::Query {
 };
 
 EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad)
-    : candidates_(candidates), pad_(pad) {
+    : candidates_(candidates), pad_(pad), near_(candidates, kNearRadius * pad) {
   RTCDevice device = embree_device();
   scene_ = rtcNewScene(device);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
@@ -122,86 +123,129 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-PartMask EmbreeScene::trace(Query& query, int count) const {
+PartMask EmbreeScene::trace(Query& query, int count, PartMask done) const {
   query.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, one target patch
   PartMask blocked = 0;
-  // Parameter t of the exact test; Embree's rays cover [-s, 1 + s] of it, s = pad / the
-  // shortest ray's length (one s for all rays of the point: no square root per ray).
-  double shortest = 1e300;
-  for (int k = 0; k < count; ++k)
-    shortest = std::min(shortest, glm::dot(query.delta[k], query.delta[k]));
-  const double s = shortest > 0.0 ? pad_ / std::sqrt(shortest) : 0.0;
-  const float tfar = float(1.0 + 2.0 * s) * (1.0f + 1e-6f);
+  // Parameter t of the exact test; Embree's ray k covers [g_k, 1 - g_k], g_k = kEndGap pads
+  // over its length (the rounding of these bounds to floats is far below the margin). A ray
+  // shorter than 2 kEndGap pads is left to the near-end tests alone: every point of it is
+  // within kNearRadius pads of an end.
+  const double gap = kEndGap * pad_;
   for (int start = 0; start < count; start += 16) {
     alignas(64) RTCRay16 r;
     alignas(64) int valid[16];
+    int any = 0;
     for (int lane = 0; lane < 16; ++lane) {
       const int k = std::min(start + lane, count - 1);  // idle lanes repeat the last ray
-      valid[lane] = start + lane < count ? -1 : 0;
       const Vec3& delta = query.delta[k];
-      const Vec3 origin = query.from - s * delta;
-      r.org_x[lane] = float(origin.x);
-      r.org_y[lane] = float(origin.y);
-      r.org_z[lane] = float(origin.z);
+      const double g = gap / std::sqrt(glm::dot(delta, delta));
+      valid[lane] = start + lane < count && !(done >> k & 1) && g < 0.5 ? -1 : 0;
+      any |= valid[lane];
+      r.org_x[lane] = float(query.from.x);
+      r.org_y[lane] = float(query.from.y);
+      r.org_z[lane] = float(query.from.z);
       r.dir_x[lane] = float(delta.x);
       r.dir_y[lane] = float(delta.y);
       r.dir_z[lane] = float(delta.z);
-      r.tnear[lane] = 0.0f;
-      r.tfar[lane] = tfar;
+      r.tnear[lane] = valid[lane] ? float(g) : 0.0f;
+      r.tfar[lane] = valid[lane] ? float(1.0 - g) : 0.0f;
       r.time[lane] = 0.0f;
       r.mask[lane] = ~0u;
       r.id[lane] = unsigned(k);
       r.flags[lane] = 0;
     }
+    if (!any) continue;
     rtcOccluded16(valid, scene_, &query.context, &r);
     for (int lane = 0; lane < 16 && start + lane < count; ++lane)
-      if (r.tfar[lane] == -INFINITY) blocked |= PartMask(1) << (start + lane);
+      if (valid[lane] && r.tfar[lane] == -INFINITY) blocked |= PartMask(1) << (start + lane);
   }
   return blocked;
 }
 
-void EmbreeScene::prepare(Query& query, const Vec3& from, const Vec3* targets, int count,
-                          int excluded_a, int excluded_b,
+template <class Found>
+void EmbreeScene::near_end_crossings(const Query& query, int count, Found&& found) const {
+  const RayTargets& targets = *query.targets;
+  near_.for_each_near(query.from, [&](int position) {
+    if (position == query.excluded_a || position == query.excluded_b) return;
+    const PatchCandidate& c = candidates_[std::size_t(position)];
+    for (int k = 0; k < count; ++k)
+      if (segment_crosses(c, query.from, query.delta[k])) found(k, position);
+  });
+  for (const auto& [k, position] : targets.near)
+    if (position != query.excluded_a &&
+        segment_crosses(candidates_[std::size_t(position)], query.from, query.delta[k]))
+      found(k, position);
+}
+
+EmbreeScene::RayTargets EmbreeScene::ray_targets(const Vec3* targets, int count,
+                                                 int shooter_position) const {
+  if (count < 0 || count > kMaxShooterParts)
+    throw std::logic_error("EmbreeScene: more than 64 ray targets");
+  RayTargets result;
+  result.patch = shooter_position;
+  result.points.assign(targets, targets + count);
+  for (int k = 0; k < count; ++k)
+    near_.for_each_near(targets[k], [&](int position) {
+      if (position != shooter_position) result.near.emplace_back(k, position);
+    });
+  return result;
+}
+
+void EmbreeScene::prepare(Query& query, const Vec3& from, int receiver,
+                          const RayTargets& targets,
                           std::vector<std::pair<int, int>>* hits) const {
   rtcInitIntersectContext(&query.context);
   query.scene = this;
   query.from = from;
-  for (int k = 0; k < count; ++k) query.delta[k] = targets[k] - from;
-  query.excluded_a = excluded_a;
-  query.excluded_b = excluded_b;
+  for (int k = 0; k < targets.count(); ++k) query.delta[k] = targets.points[std::size_t(k)] - from;
+  query.excluded_a = receiver;
+  query.excluded_b = targets.patch;
+  query.targets = &targets;
   query.hits = hits;
   query.sets_of = nullptr;
   query.all_sets = 0;
   query.ray_sets = nullptr;
 }
 
-PartMask EmbreeScene::blocked(const Vec3& from, const Vec3* targets, int count, int excluded_a,
-                              int excluded_b) const {
+// Each query: the rays' ends by the exact test first, then Embree for the rest of each ray
+// that can still change the answer.
+PartMask EmbreeScene::blocked(const Vec3& from, int receiver, const RayTargets& targets) const {
+  const int count = targets.count();
   if (candidates_.empty() || count == 0) return 0;
   Query query;
-  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
-  return trace(query, count);
+  prepare(query, from, receiver, targets, nullptr);
+  PartMask blocked = 0;
+  near_end_crossings(query, count, [&](int k, int) { blocked |= PartMask(1) << k; });
+  return blocked | trace(query, count, blocked);
 }
 
-void EmbreeScene::all_blockers(const Vec3& from, const Vec3* targets, int count, int excluded_a,
-                               int excluded_b, std::vector<std::pair<int, int>>& hits) const {
+void EmbreeScene::all_blockers(const Vec3& from, int receiver, const RayTargets& targets,
+                               std::vector<std::pair<int, int>>& hits) const {
+  const int count = targets.count();
   if (candidates_.empty() || count == 0) return;
   Query query;
-  prepare(query, from, targets, count, excluded_a, excluded_b, &hits);
-  trace(query, count);
+  prepare(query, from, receiver, targets, &hits);
+  near_end_crossings(query, count, [&](int k, int position) { hits.emplace_back(k, position); });
+  trace(query, count, 0);
 }
 
-void EmbreeScene::blocked_sets(const Vec3& from, const Vec3* targets, int count, int excluded_a,
-                               int excluded_b, const std::uint64_t* sets_of,
-                               std::uint64_t all_sets, std::uint64_t* ray_sets) const {
+void EmbreeScene::blocked_sets(const Vec3& from, int receiver, const RayTargets& targets,
+                               const std::uint64_t* sets_of, std::uint64_t all_sets,
+                               std::uint64_t* ray_sets) const {
+  const int count = targets.count();
   std::fill(ray_sets, ray_sets + count, std::uint64_t(0));
   if (candidates_.empty() || count == 0 || all_sets == 0) return;
   Query query;
-  prepare(query, from, targets, count, excluded_a, excluded_b, nullptr);
+  prepare(query, from, receiver, targets, nullptr);
   query.sets_of = sets_of;
   query.all_sets = all_sets;
   query.ray_sets = ray_sets;
-  trace(query, count);
+  PartMask done = 0;
+  near_end_crossings(query, count, [&](int k, int position) {
+    ray_sets[k] |= sets_of[position];
+    if (ray_sets[k] == all_sets) done |= PartMask(1) << k;
+  });
+  trace(query, count, done);
 }
 
 }  // namespace ncube

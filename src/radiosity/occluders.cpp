@@ -101,7 +101,7 @@ Occluders::~Occluders() {
 
 std::shared_ptr<const Occluders::TargetSides> Occluders::target_sides(const Shooter& shooter) const {
   const int m = shooter.part_count;
-  if (sides_ && sides_->part_count == m &&
+  if (sides_ && sides_->part_count == m && sides_->ray_targets.patch == shooter.patch &&
       std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_->targets.begin()))
     return sides_;
   sides_ = sides_for(shooter);
@@ -132,6 +132,7 @@ std::shared_ptr<const Occluders::TargetSides> Occluders::sides_for(const Shooter
     sides.in_front_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides.in_front[g]);
     sides.behind_tests[g] = std::int64_t(plane_size_[g]) * __builtin_popcountll(sides.behind[g]);
   }
+  sides.ray_targets = blockers_->embree().ray_targets(shooter.targets.data(), m, shooter.patch);
   for (std::size_t g = 0; g < planes; ++g)
     if (sides.near[g] != 0) sides.near_planes.push_back(int(g));
   sides.behind_prefix.assign(axis_order_.size() + 1, 0);
@@ -257,8 +258,7 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
       }
     }
   } else {
-    blocked = blockers_->embree().blocked(point, shooter.targets.data(), m, receiver_patch,
-                                          shooter.patch);
+    blocked = blockers_->embree().blocked(point, receiver_patch, sides.ray_targets);
   }
   // Rays within the band around a plane that also holds the point: decided without Embree.
   for (int g : sides.near_planes) {

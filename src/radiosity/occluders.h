@@ -68,6 +68,7 @@ class Occluders {
     std::vector<PartMask> in_front, behind;  // per plane: which targets lie on each side
     std::vector<PartMask> near;              // per plane: targets within the band around it
     std::vector<int> near_planes;            // the planes with some target in their band
+    EmbreeScene::RayTargets ray_targets;     // with the whole scene's patches near each
     // Over axis_order_: sums of behind_tests / in_front_tests of the first i planes.
     std::vector<std::int64_t> behind_prefix, in_front_prefix;
   };

@@ -73,10 +73,10 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   auto lists = std::make_shared<Lists>();
   lists->part_count = m;
   std::vector<std::vector<std::pair<int, int>>> per_point(count);
+  const EmbreeScene::RayTargets targets = embree_->ray_targets(shooter.targets.data(), m, shooter.patch);
   parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
-      embree_->all_blockers(points[k], shooter.targets.data(), m, receiver_patches[k],
-                            shooter.patch, per_point[k]);
+      embree_->all_blockers(points[k], receiver_patches[k], targets, per_point[k]);
   });
   // Grouped by ray (a patch may be listed twice for a ray: Embree meets a quad as two
   // triangles; the readers only OR and take minima, so repeats do no harm).
@@ -168,11 +168,12 @@ std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::compute_sets(
   auto masks = std::make_shared<SetMasks>();
   masks->part_count = m;
   masks->blocked.assign(count * 64, 0);
+  const EmbreeScene::RayTargets targets = embree_->ray_targets(shooter.targets.data(), m, shooter.patch);
   parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
     std::uint64_t ray_sets[kMaxShooterParts];
     for (std::size_t k = begin; k < end; ++k) {
-      embree_->blocked_sets(points[k], shooter.targets.data(), m, receiver_patches[k],
-                            shooter.patch, sets_of_patch_.data(), registered_, ray_sets);
+      embree_->blocked_sets(points[k], receiver_patches[k], targets, sets_of_patch_.data(),
+                            registered_, ray_sets);
       PartMask* by_set = masks->blocked.data() + k * 64;
       for (int r = 0; r < m; ++r)
         for (std::uint64_t sets = ray_sets[r]; sets != 0; sets &= sets - 1)
