@@ -207,17 +207,25 @@ bool Lookahead::next_guess_block(GuessBlock& block) {
 
 void Lookahead::compute_guess(const GuessBlock& block) {
   const std::size_t n = block.points.size();
-  std::vector<PartMask> masks(n);
+  std::vector<PartMask> answers(shares_.size() * n);
+  std::vector<WorkCounts> counts(shares_.size());
+  answer_shares(*block.shooter, *block.sides, block.points.data(), block.patches.data(), n,
+                answers.data(), counts.data());
+}
+
+void Lookahead::answer_shares(const Shooter& shooter,
+                              const std::vector<std::shared_ptr<const Occluders::TargetSides>>& sides,
+                              const Vec3* points, const int* patches, std::size_t n,
+                              PartMask* answers, WorkCounts* counts) const {
+  // Exactly what each share's batch call does (occluders.h): its remembered answers, or the
+  // computation from the block's scene-wide answers, computed once for all shares.
   Occluders::SharedBlock shared;
   for (std::size_t s = 0; s < shares_.size(); ++s) {
     const Occluders& set = *shares_[s];
-    WorkCounts counts;
-    if (set.remembered(*block.shooter, block.points.data(), block.patches.data(), n, masks.data(),
-                       counts))
-      continue;
-    set.answer_block_here(block.points.data(), block.patches.data(), n, *block.shooter,
-                          *(*block.sides)[s], shared, masks.data(), counts);
-    set.remember(*block.shooter, block.points.data(), block.patches.data(), n, masks.data(), counts);
+    PartMask* masks = answers + s * n;
+    if (set.remembered(shooter, points, patches, n, masks, counts[s])) continue;
+    set.answer_block_here(points, patches, n, shooter, *sides[s], shared, masks, counts[s]);
+    set.remember(shooter, points, patches, n, masks, counts[s]);
   }
 }
 
@@ -228,17 +236,8 @@ void Lookahead::compute(Shot& shot, Block& block) {
   const Shooter& shooter = shot.shooter_;
   block.answers.assign(shares_.size() * n, 0);
   block.counts.assign(shares_.size(), WorkCounts{});
-  // Exactly what each share's batch call does (occluders.h): its remembered answers, or the
-  // computation from the block's scene-wide answers, computed once for all shares.
-  Occluders::SharedBlock shared;
-  for (std::size_t s = 0; s < shares_.size(); ++s) {
-    const Occluders& set = *shares_[s];
-    PartMask* masks = block.answers.data() + s * n;
-    if (set.remembered(shooter, points, patches, n, masks, block.counts[s])) continue;
-    set.answer_block_here(points, patches, n, shooter, *shot.sides_[s], shared, masks,
-                          block.counts[s]);
-    set.remember(shooter, points, patches, n, masks, block.counts[s]);
-  }
+  answer_shares(shooter, shot.sides_, points, patches, n, block.answers.data(),
+                block.counts.data());
   block.visible.assign(n, shooter.all_parts());
   for (std::size_t s = 0; s < shares_.size(); ++s)
     for (std::size_t k = 0; k < n; ++k) block.visible[k] &= block.answers[s * n + k];

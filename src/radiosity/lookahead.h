@@ -83,6 +83,11 @@ class Lookahead {
   void work();                                             // a worker thread's loop
   Block* claim_next(std::shared_ptr<Shot>& shot);          // under mutex_: a block nobody has started
   void compute(Shot& shot, Block& block);                  // the block's answers and form factors
+  // Every share's answers (answers[s * n + k]) and counts for n points, as its batch call.
+  void answer_shares(const Shooter& shooter,
+                     const std::vector<std::shared_ptr<const Occluders::TargetSides>>& sides,
+                     const Vec3* points, const int* patches, std::size_t n, PartMask* answers,
+                     WorkCounts* counts) const;
   void finish(Block& block);                               // done: wake those waiting
   void complete(Shot& shot, Block& block);                 // done when it returns
   // Under mutex_: the next block of a guessed shot (false: no guess to work on).
