@@ -140,11 +140,14 @@ def test_kill_and_resume(work):
     process = subprocess.Popen(SWEEP + [str(work / "kill.yaml"), "--results", str(results_dir)],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
-    while time.monotonic() < deadline and not (
-            (results_dir / quick.file).exists() and
-            any("simulate" in c and slow.id in c for c in processes_mentioning(str(results_dir)))):
-        time.sleep(0.2)
+    while time.monotonic() < deadline and not any(
+            "simulate" in c and slow.id in c for c in processes_mentioning(str(results_dir))):
+        time.sleep(0.05)
     running = any("simulate" in c for c in processes_mentioning(str(results_dir)))
+    # Stop the sweep the moment the quick cell's file appears: its job is then still exiting,
+    # the case where Snakemake would delete a verified result (runner.py, --keep-incomplete).
+    while time.monotonic() < deadline and not (results_dir / quick.file).exists():
+        time.sleep(0.002)
     check((results_dir / quick.file).exists() and running, "one cell done, the other running")
     stamp = (results_dir / quick.file).stat().st_mtime_ns
     process.send_signal(signal.SIGTERM)

@@ -59,9 +59,13 @@ def snakemake_command(plan, results_dir, args):
     # --ignore-incomplete: a cell's file appears only once it is verified (ncube.run_cell) and
     # every existing file is verified again before the run (discard_unfinished), so Snakemake's
     # own bookkeeping must not rerun a cell that finished just before an interruption.
+    # --keep-incomplete: for the same reason, a job stopped by an interruption between giving
+    # its verified file the final name and exiting must not have that file deleted (Snakemake
+    # deletes the outputs of every job it sees fail, and a stopped job is one).
     # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
-               "--config", f"plan={plan}", "--ignore-incomplete", "--rerun-triggers", "mtime",
+               "--config", f"plan={plan}", "--ignore-incomplete", "--keep-incomplete",
+               "--rerun-triggers", "mtime",
                "--keep-going", "--cores", str(args.cores)]
     if args.slurm:
         command += ["--slurm", "--jobs", str(args.jobs)]
