@@ -21,8 +21,8 @@ RTCDevice embree_device() {
 }
 
 // The polygon grown by `pad` in its plane: each edge moved outwards by `pad`, each vertex
-// to where its two moved edges meet. A triangle is the quad (v0, v1, v2, v2), Embree's way.
-void padded_quad(const PatchCandidate& c, double pad, float* out) {
+// to where its two moved edges meet. A triangle gives the quad (v0, v1, v2, v2).
+void padded_quad(const PatchCandidate& c, double pad, Vec3 out[4]) {
   const int n = c.vertex_count;
   Vec3 outward[4];
   for (int k = 0; k < n; ++k) {
@@ -33,9 +33,23 @@ void padded_quad(const PatchCandidate& c, double pad, float* out) {
     const int v = std::min(k, n - 1);
     const Vec3& before = outward[(v + n - 1) % n];
     const Vec3& after = outward[v];
-    const Vec3 moved = c.vertices[v] + pad * (before + after) / (1.0 + glm::dot(before, after));
-    for (int axis = 0; axis < 3; ++axis) out[3 * k + axis] = float(moved[axis]);
+    out[k] = c.vertices[v] + pad * (before + after) / (1.0 + glm::dot(before, after));
   }
+}
+
+// Triangle (a, b, c) of a padded quad, cut along its diagonal c-a, with that diagonal moved
+// `pad` away from b: a and c slide outwards along the lines of the quad's edges b-a and b-c.
+// The two triangles of a quad then overlap by 2 pad across its diagonal, so a crossing of
+// the patch is at least `pad` inside one of them: Embree's triangle test need not be
+// watertight (no RTC_SCENE_FLAG_ROBUST), as it need not be at the quad's outer edges.
+void widened_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& normal, double pad,
+                      float* out) {
+  const Vec3 away = glm::normalize(glm::cross(a - c, normal));  // b is on the other side
+  const Vec3 along_a = glm::normalize(a - b), along_c = glm::normalize(c - b);
+  const Vec3 corners[3] = {a + pad / glm::dot(along_a, away) * along_a, b,
+                           c + pad / glm::dot(along_c, away) * along_c};
+  for (int k = 0; k < 3; ++k)
+    for (int axis = 0; axis < 3; ++axis) out[3 * k + axis] = float(corners[k][axis]);
 }
 
 }  // namespace
@@ -58,23 +72,41 @@ EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double p
     : candidates_(candidates), pad_(pad), near_(candidates, kNearRadius * pad) {
   RTCDevice device = embree_device();
   scene_ = rtcNewScene(device);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  if (!candidates.empty()) {
-    RTCGeometry quads = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
-    const std::size_t n = candidates.size();
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), n));
-    for (std::size_t i = 0; i < n; ++i) {
-      padded_quad(candidates[i], pad, vertices + 12 * i);
-      for (unsigned k = 0; k < 4; ++k) indices[4 * i + k] = unsigned(4 * i + k);
+  // Each patch as the triangles of its padded quad: one for a triangle, two widened ones
+  // for a quadrilateral (widened_triangle).
+  std::vector<float> corners;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const PatchCandidate& c = candidates[i];
+    Vec3 q[4];
+    padded_quad(c, pad, q);
+    float triangle[9];
+    if (c.vertex_count == 3) {
+      for (int k = 0; k < 3; ++k)
+        for (int axis = 0; axis < 3; ++axis) triangle[3 * k + axis] = float(q[k][axis]);
+      corners.insert(corners.end(), triangle, triangle + 9);
+      position_of_triangle_.push_back(int(i));
+    } else {
+      widened_triangle(q[0], q[1], q[2], c.normal, pad, triangle);
+      corners.insert(corners.end(), triangle, triangle + 9);
+      widened_triangle(q[2], q[3], q[0], c.normal, pad, triangle);
+      corners.insert(corners.end(), triangle, triangle + 9);
+      position_of_triangle_.insert(position_of_triangle_.end(), 2, int(i));
     }
-    rtcSetGeometryOccludedFilterFunction(quads, &EmbreeScene::exact_filter);
-    rtcCommitGeometry(quads);
-    rtcAttachGeometry(scene_, quads);
-    rtcReleaseGeometry(quads);
+  }
+  if (!position_of_triangle_.empty()) {
+    RTCGeometry triangles = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const std::size_t n = position_of_triangle_.size();
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
+    std::copy(corners.begin(), corners.end(), vertices);
+    for (unsigned k = 0; k < 3 * n; ++k) indices[k] = k;
+    rtcSetGeometryOccludedFilterFunction(triangles, &EmbreeScene::exact_filter);
+    rtcCommitGeometry(triangles);
+    rtcAttachGeometry(scene_, triangles);
+    rtcReleaseGeometry(triangles);
   }
   rtcCommitScene(scene_);
   if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
@@ -93,13 +125,14 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
   const unsigned n = args->N;
   int* valid = args->valid;
   const unsigned* ray_ids = &RTCRayN_id(args->ray, n, 0);
-  const unsigned* positions = &RTCHitN_primID(args->hit, n, 0);
+  const unsigned* triangles = &RTCHitN_primID(args->hit, n, 0);
+  const int* position_of = q.scene->position_of_triangle_.data();
   std::uint64_t lanes = 0;
   for (unsigned i = 0; i < n; ++i) lanes |= std::uint64_t(valid[i] != 0) << i;
   for (; lanes != 0; lanes &= lanes - 1) {
     const unsigned i = unsigned(__builtin_ctzll(lanes));
     const unsigned ray = ray_ids[i];
-    const int position = int(positions[i]);
+    const int position = position_of[triangles[i]];
     if (q.sets_of) {  // only hits that can tell of a set not yet known to block are tested
       const std::uint64_t sets = q.sets_of[position];
       if (position == q.excluded_a || position == q.excluded_b || (sets & ~q.ray_sets[ray]) == 0 ||

@@ -3,12 +3,17 @@
 // speed while the exact double test of ray_patch_test.h decides every answer.
 //
 // Embree works in single precision. To stay exact it only proposes, conservatively: every
-// patch goes in as a quad grown by `pad` in its plane, so every crossing the exact test
-// would find in the part of a ray Embree is asked about is among the hits Embree reports;
-// an occlusion filter runs the exact test on each reported hit and rejects those the exact
-// test denies (and the excluded receiver and shooter patches). Embree does the traversal,
-// the exact test decides. Rays nearly parallel to a plane are the caller's (occluders.h):
-// there single precision cannot be trusted at any padding (docs/performance.md).
+// patch goes in as triangles covering it grown by `pad` in its plane, each crossing of the
+// patch at least `pad` inside one of them, so every crossing the exact test would find in
+// the part of a ray Embree is asked about is among the hits Embree reports; an occlusion
+// filter runs the exact test on each reported hit and rejects those the exact test denies
+// (and the excluded receiver and shooter patches). Embree does the traversal, the exact test
+// decides. Rays nearly parallel to a plane are the caller's (occluders.h): there single
+// precision cannot be trusted at any padding (docs/performance.md). With that margin
+// everywhere, Embree's faster non-robust mode suffices: its triangle test is not watertight
+// (a ray along an edge shared by two triangles may miss both), but no crossing lies within
+// rounding distance of an edge of the triangle it is `pad` inside of; its box tests round
+// each bound monotonically and a flat box's two bounds alike (docs/performance.md).
 //
 // The ends of a ray are not Embree's: it is asked about the ray from kEndGap pads past its
 // point to kEndGap pads short of its target, so it does not meet the receiver's and the
@@ -25,7 +30,7 @@
 //    of the ray Embree is asked about, more than the single-precision error of Embree's hit
 //    parameter there: at most a pad (rounding of about 1e-6 of the scale over the sine of
 //    the crossing angle, above 2e-3 for every crossing left to Embree: the budget the
-//    quads' padding covers in their plane, and the old rays' reach past both ends along the
+//    triangles' padding covers in their plane, and the old rays' reach past both ends along the
 //    ray; docs/performance.md). Embree reports it, and the filter's exact test keeps it.
 // Rays shorter than 2 kEndGap pads are left to the near tests alone (every crossing is then
 // within kNearRadius pads of an end). Every answer is still the exact test's.
@@ -51,7 +56,7 @@ class EmbreeScene {
   static constexpr double kNearRadius = 2.0;
 
   // `candidates` (kept by reference: must outlive this scene) in their set order; `pad` is
-  // the margin (scene units) of the quads, far above the single-precision rounding of the
+  // the margin (scene units) of the triangles, far above the single-precision rounding of the
   // scene's coordinates.
   EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad);
   ~EmbreeScene();
@@ -76,7 +81,8 @@ class EmbreeScene {
 
   // Every candidate (not excluded) the segment to target k crosses by the exact test:
   // appends (k, position) pairs to `hits`, in no particular order, possibly more than once
-  // (Embree meets a quad as two triangles; a patch near an end may be found by Embree too).
+  // (a quadrilateral is two overlapping triangles; a patch near an end may be found by Embree
+  // too).
   // Every hit along each segment is examined (no early end).
   void all_blockers(const Vec3& from, int receiver, const RayTargets& targets,
                     std::vector<std::pair<int, int>>& hits) const;
@@ -102,6 +108,7 @@ class EmbreeScene {
   PartMask trace(Query& query, int count, PartMask done) const;
 
   const std::vector<PatchCandidate>& candidates_;
+  std::vector<int> position_of_triangle_;  // Embree's primitive -> candidate position
   double pad_;
   NearPatches near_;  // radius kNearRadius pads
   RTCScene scene_ = nullptr;
