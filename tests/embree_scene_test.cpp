@@ -98,30 +98,42 @@ TEST(EmbreeScene, FindsBlockersAtEveryDistanceFromTheEnds) {
 }
 
 TEST(EmbreeScene, FindsRaysThroughTheDiagonalOfAQuad) {
-  // Embree meets a quadrilateral as two triangles sharing its diagonal, and its fast
-  // (non-robust) triangle test may let a ray along that shared edge through both. Rays
-  // aimed exactly at points of the diagonal of squares and rectangles, upright and tilted,
-  // from all sides: every one must be found blocked, as the exact test finds it.
+  // Embree meets a quadrilateral as two triangles sharing a diagonal of the patch grown by
+  // the pad, and its fast (non-robust) triangle test may let a ray along that shared edge
+  // through both. Rays aimed exactly at points of both diagonals of the grown patch, for
+  // squares, long rectangles and slanted parallelograms, upright and tilted, from both
+  // sides: every one must be found blocked, as the exact test finds it.
+  const double pad = 5e-4 * 10.0;
   int rays = 0;
   std::uint64_t state = 12345;
   auto uniform = [&] {  // deterministic, in [0, 1)
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return double(state >> 11) / double(1ULL << 53);
   };
-  for (int shape = 0; shape < 6; ++shape) {
-    const double width = shape % 2 == 0 ? 1.0 : 7.3, tilt = 0.35 * (shape / 2);
+  for (int shape = 0; shape < 9; ++shape) {
+    const double width = shape % 3 == 0 ? 1.0 : 7.3, slant = shape % 3 == 2 ? 1.9 : 0.0;
+    const double tilt = 0.35 * (shape / 3);
     const Vec3 u{std::cos(tilt), 0.0, std::sin(tilt)}, v{0.0, 1.0, 0.0};
     const Vec3 corner{0.3, -0.2, 0.1};
-    const Polygon patch = Polygon::quad(corner, corner + width * u, corner + width * u + v,
-                                        corner + v);
-    const std::vector<PatchCandidate> candidates{make_candidate(patch, patch.normal(), 0)};
-    const EmbreeScene embree(candidates, 5e-4 * 10.0);
+    const Polygon patch = Polygon::quad(corner, corner + width * u,
+                                        corner + (width + slant) * u + v, corner + slant * u + v);
+    const Vec3 normal = patch.normal();
+    // The grown patch: each edge moved out by the pad, each corner where its edges meet.
+    Vec3 grown[4];
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 before = glm::normalize(glm::cross(patch[k] - patch[(k + 3) % 4], normal));
+      const Vec3 after = glm::normalize(glm::cross(patch[(k + 1) % 4] - patch[k], normal));
+      grown[k] = patch[k] + pad * (before + after) / (1.0 + glm::dot(before, after));
+    }
+    const std::vector<PatchCandidate> candidates{make_candidate(patch, normal, 0)};
+    const EmbreeScene embree(candidates, pad);
     for (int query = 0; query < 40; ++query) {
       const Vec3 from = corner + (uniform() * 3 - 1) * width * u + (uniform() * 3 - 1) * v +
-                        (query % 2 == 0 ? 1.0 : -1.0) * (0.5 + 3 * uniform()) * patch.normal();
+                        (query % 2 == 0 ? 1.0 : -1.0) * (0.5 + 3 * uniform()) * normal;
       std::vector<Vec3> targets;
       for (int k = 0; k < 64; ++k) {
-        const Vec3 on_diagonal = patch[0] + (0.001 + 0.998 * uniform()) * (patch[2] - patch[0]);
+        const Vec3 &a = grown[k % 2], &b = grown[k % 2 + 2];
+        const Vec3 on_diagonal = a + (0.01 + 0.98 * uniform()) * (b - a);
         targets.push_back(on_diagonal + (0.2 + 2 * uniform()) * (on_diagonal - from));
         ASSERT_TRUE(segment_crosses(candidates[0], from, targets.back() - from));
       }
@@ -131,7 +143,7 @@ TEST(EmbreeScene, FindsRaysThroughTheDiagonalOfAQuad) {
       rays += 64;
     }
   }
-  EXPECT_EQ(rays, 6 * 40 * 64);
+  EXPECT_EQ(rays, 9 * 40 * 64);
 }
 
 TEST(EmbreeScene, OwnPatchesDoNotBlockTheirRaysButOthersAtTheEndsDo) {

@@ -42,14 +42,34 @@ void padded_quad(const PatchCandidate& c, double pad, Vec3 out[4]) {
 // The two triangles of a quad then overlap by 2 pad across its diagonal, so a crossing of
 // the patch is at least `pad` inside one of them: Embree's triangle test need not be
 // watertight (no RTC_SCENE_FLAG_ROBUST), as it need not be at the quad's outer edges.
-void widened_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& normal, double pad,
-                      float* out) {
+struct WidenedTriangle {
+  Vec3 corners[3];
+  double sine;  // the smaller sine of the angles between the diagonal and the sliding edges
+};
+
+WidenedTriangle widened_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& normal,
+                                 double pad) {
   const Vec3 away = glm::normalize(glm::cross(a - c, normal));  // b is on the other side
   const Vec3 along_a = glm::normalize(a - b), along_c = glm::normalize(c - b);
-  const Vec3 corners[3] = {a + pad / glm::dot(along_a, away) * along_a, b,
-                           c + pad / glm::dot(along_c, away) * along_c};
-  for (int k = 0; k < 3; ++k)
-    for (int axis = 0; axis < 3; ++axis) out[3 * k + axis] = float(corners[k][axis]);
+  const double sine_a = glm::dot(along_a, away), sine_c = glm::dot(along_c, away);
+  return {{a + pad / sine_a * along_a, b, c + pad / sine_c * along_c}, std::min(sine_a, sine_c)};
+}
+
+// The two widened triangles of a padded quad, cut along the diagonal whose triangles slide
+// least (a slide is pad / sine: a long thin quad cut along the wrong diagonal would get
+// spikes far beyond it, costing only filter calls, but still).
+void widened_triangles(const Vec3 q[4], const Vec3& normal, double pad, float* out) {
+  WidenedTriangle cut[2][2];
+  for (int d = 0; d < 2; ++d) {
+    const Vec3 &a = q[d], &b = q[d + 1], &c = q[(d + 2) % 4], &e = q[(d + 3) % 4];
+    cut[d][0] = widened_triangle(a, b, c, normal, pad);
+    cut[d][1] = widened_triangle(c, e, a, normal, pad);
+  }
+  const int d = std::min(cut[1][0].sine, cut[1][1].sine) > std::min(cut[0][0].sine, cut[0][1].sine);
+  for (int t = 0; t < 2; ++t)
+    for (int k = 0; k < 3; ++k)
+      for (int axis = 0; axis < 3; ++axis)
+        out[9 * t + 3 * k + axis] = float(cut[d][t].corners[k][axis]);
 }
 
 }  // namespace
@@ -74,7 +94,7 @@ EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double p
   scene_ = rtcNewScene(device);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
   // Each patch as the triangles of its padded quad: one for a triangle, two widened ones
-  // for a quadrilateral (widened_triangle).
+  // for a quadrilateral (widened_triangles).
   std::vector<float> corners;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const PatchCandidate& c = candidates[i];
@@ -87,10 +107,9 @@ EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double p
       corners.insert(corners.end(), triangle, triangle + 9);
       position_of_triangle_.push_back(int(i));
     } else {
-      widened_triangle(q[0], q[1], q[2], c.normal, pad, triangle);
-      corners.insert(corners.end(), triangle, triangle + 9);
-      widened_triangle(q[2], q[3], q[0], c.normal, pad, triangle);
-      corners.insert(corners.end(), triangle, triangle + 9);
+      float pair[18];
+      widened_triangles(q, c.normal, pad, pair);
+      corners.insert(corners.end(), pair, pair + 18);
       position_of_triangle_.insert(position_of_triangle_.end(), 2, int(i));
     }
   }
