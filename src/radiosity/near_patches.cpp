@@ -11,13 +11,10 @@ NearPatches::NearPatches(const std::vector<PatchCandidate>& candidates, double r
   lo_ = Vec3(1e300);
   hi_ = Vec3(-1e300);
   for (const PatchCandidate& c : candidates) {
-    Vec3 lo(1e300), hi(-1e300);
-    for (int i = 0; i < c.vertex_count; ++i) {
-      lo = glm::min(lo, c.vertices[i]);
-      hi = glm::max(hi, c.vertices[i]);
-    }
-    box_lo_.push_back(lo - Vec3(radius));
-    box_hi_.push_back(hi + Vec3(radius));
+    Vec3 lo, hi;
+    grown_box(c, radius, lo, hi);
+    box_lo_.push_back(lo);
+    box_hi_.push_back(hi);
     lo_ = glm::min(lo_, box_lo_.back());
     hi_ = glm::max(hi_, box_hi_.back());
   }

@@ -31,13 +31,10 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
     const PatchCandidate c = make_candidate(p.polygon, p.normal, scene_index);
     position_of_scene_patch_[scene_index] = int(patches_.size());
     patches_.push_back(c);
-    Vec3 lo(1e300), hi(-1e300);
-    for (int i = 0; i < c.vertex_count; ++i) {
-      lo = glm::min(lo, c.vertices[i]);
-      hi = glm::max(hi, c.vertices[i]);
-    }
-    box_lo_.push_back(lo - Vec3(band_));
-    box_hi_.push_back(hi + Vec3(band_));
+    Vec3 lo, hi;
+    grown_box(c, band_, lo, hi);
+    box_lo_.push_back(lo);
+    box_hi_.push_back(hi);
     const std::array<double, 4> key{c.normal.x, c.normal.y, c.normal.z, c.plane_offset};
     auto [it, added] = plane_index.emplace(key, int(plane_size_.size()));
     if (added) {

@@ -21,14 +21,11 @@ Octree::Octree(const Scene& scene, const std::vector<int>& patch_indices, Octree
   for (int scene_index : patch_indices) {
     const Patch& p = scene.patches[std::size_t(scene_index)];
     const PatchCandidate c = make_candidate(p.polygon, p.normal, scene_index);
-    Vec3 lo(1e300), hi(-1e300);
-    for (int i = 0; i < c.vertex_count; ++i) {
-      lo = glm::min(lo, c.vertices[i]);
-      hi = glm::max(hi, c.vertices[i]);
-    }
+    Vec3 lo, hi;
+    grown_box(c, pad_, lo, hi);
     patches_.push_back(c);
-    box_lo_.push_back(lo - Vec3(pad_));
-    box_hi_.push_back(hi + Vec3(pad_));
+    box_lo_.push_back(lo);
+    box_hi_.push_back(hi);
     root_lo = glm::min(root_lo, box_lo_.back());
     root_hi = glm::max(root_hi, box_hi_.back());
   }

@@ -2,6 +2,7 @@
 // reference every faster way of answering "is this ray blocked" must agree with.
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "geometry/polygon.h"
@@ -18,6 +19,18 @@ struct PatchCandidate {
 };
 
 PatchCandidate make_candidate(const Polygon& polygon, const Vec3& normal, int scene_index);
+
+// The candidate's axis-aligned bounding box, grown by `margin` on every side.
+inline void grown_box(const PatchCandidate& c, double margin, Vec3& lo, Vec3& hi) {
+  lo = Vec3(1e300);
+  hi = Vec3(-1e300);
+  for (int i = 0; i < c.vertex_count; ++i) {
+    lo = glm::min(lo, c.vertices[i]);
+    hi = glm::max(hi, c.vertices[i]);
+  }
+  lo -= Vec3(margin);
+  hi += Vec3(margin);
+}
 
 // Ends of a shadow ray lie on the receiver and on the shooter; a relative margin keeps the
 // surfaces they start and end on (and coplanar neighbours) from blocking them.
