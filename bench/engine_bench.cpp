@@ -8,7 +8,9 @@
 #include <numeric>
 #include <string>
 
-#include "radiosity/host_threads.h"
+#include "host/host_threads.h"
+#include "host/fast_occluders.h"
+#include "host/threaded_assist.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene_loader.h"
 
@@ -24,7 +26,9 @@ void iteration(benchmark::State& state, const std::string& scene_name, int threa
   std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
   ncube::RadiosityEngine engine(scene, all);
-  const ncube::Occluders occluders(scene, all, ncube::RayTestPolicy::kTestAllPatches);
+  ncube::ThreadedAssist assist(threads);
+  engine.use_host_assist(&assist, 0);
+  const ncube::FastOccluders occluders(scene, all, ncube::RayTestPolicy::kTestAllPatches, threads);
   ncube::ProgressiveOptions options;
   options.max_iterations = 1;
   options.samples = 64;

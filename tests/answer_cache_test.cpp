@@ -1,4 +1,4 @@
-#include "radiosity/answer_cache.h"
+#include "host/answer_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,9 @@
 #include <vector>
 
 #include "nodes/placement.h"
-#include "radiosity/occluders.h"
-#include "radiosity/scene_blockers.h"
+#include "host/fast_occluders.h"
+#include "host/scene_blockers.h"
+#include "visibility/brute_force_occluders.h"
 #include "receiver_sample.h"
 #include "scene/scene_loader.h"
 
@@ -17,6 +18,11 @@ namespace ncube {
 namespace {
 
 Scene scene1() { return load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/scene1.json"); }
+// The scene every set of these tests is built on.
+const Scene& set_scene() {
+  static const Scene scene = scene1();
+  return scene;
+}
 
 struct Block {
   std::vector<Vec3> points;
@@ -25,27 +31,28 @@ struct Block {
   WorkCounts counts;
 };
 
-void ask(const Occluders& set, const Shooter& shooter, Block& block) {
+void ask(const FastOccluders& set, const Shooter& shooter, Block& block) {
   block.masks.assign(block.points.size(), 0);
   block.counts = WorkCounts{};
-  set.unblocked_parts(block.points.data(), block.patches.data(), block.points.size(), shooter,
-                      block.masks.data(), block.counts, 1);
+  set.unblocked_parts(PointBlock(block.points, block.patches), shooter, block.masks.data(),
+                      block.counts);
 }
 
 // The answers of a set built afresh (a new set has a new id: nothing in the cache is its).
 Block fresh(const Scene& scene, const std::vector<int>& patches, RayTestPolicy policy,
             const Shooter& shooter, Block block) {
-  const Occluders set(scene, patches, policy);
+  const FastOccluders set(scene, patches, policy);
   ask(set, shooter, block);
   return block;
 }
 
-// Per point, the literal brute-force loop.
-Block brute_force(const Occluders& set, const Shooter& shooter, Block block) {
+// Per point, the literal brute-force loop over the set's patches.
+Block brute_force(const FastOccluders& set, RayTestPolicy policy, const Shooter& shooter,
+                  Block block) {
+  const BruteForceOccluders loop(set_scene(), set.patch_indices(), policy);
   block.counts = WorkCounts{};
   for (std::size_t k = 0; k < block.points.size(); ++k)
-    block.masks[k] = set.unblocked_parts_brute_force(block.points[k], block.patches[k], shooter,
-                                                     block.counts);
+    block.masks[k] = loop.unblocked_parts(block.points[k], block.patches[k], shooter, block.counts);
   return block;
 }
 
@@ -59,7 +66,7 @@ TEST(AnswerCache, ABlockAskedAgainGetsTheAnswersAndCountsOfAFreshComputation) {
   for (const auto& [patches, policy] :
        {std::pair{share, RayTestPolicy::kTestAllPatches}, std::pair{all, RayTestPolicy::kTestAllPatches},
         std::pair{share, RayTestPolicy::kStopAtFirstBlocker}}) {
-    const Occluders set(scene, patches, policy);
+    const FastOccluders set(scene, patches, policy);
     for (int shooter_patch : {3, 40, 200}) {
       const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
       const ReceiverSample sample = sample_receivers(scene, shooter_patch, 100, random);
@@ -72,7 +79,7 @@ TEST(AnswerCache, ABlockAskedAgainGetsTheAnswersAndCountsOfAFreshComputation) {
       const Block reference = fresh(scene, patches, policy, shooter, first);
       EXPECT_EQ(again.masks, reference.masks);
       EXPECT_EQ(again.counts, reference.counts);
-      const Block exact = brute_force(set, shooter, first);
+      const Block exact = brute_force(set, policy, shooter, first);
       EXPECT_EQ(again.masks, exact.masks);
       EXPECT_EQ(again.counts, exact.counts);
       // The answers must tell blocked from unblocked rays for the comparison to mean much.
@@ -87,7 +94,7 @@ TEST(AnswerCache, ABlockAskedAgainGetsTheAnswersAndCountsOfAFreshComputation) {
 TEST(AnswerCache, ChangedPointsPatchesOrTargetsAreNotServedFromMemory) {
   const Scene scene = scene1();
   const std::vector<int> share = visibility_share(scene, 2, 0);
-  const Occluders set(scene, share, RayTestPolicy::kTestAllPatches);
+  const FastOccluders set(scene, share, RayTestPolicy::kTestAllPatches);
   const Shooter shooter = make_shooter(scene, 40, Rgb(1.0), 64);
   std::mt19937 random(11);
   const ReceiverSample sample = sample_receivers(scene, 40, 100, random);
@@ -96,7 +103,7 @@ TEST(AnswerCache, ChangedPointsPatchesOrTargetsAreNotServedFromMemory) {
   auto expect_exact = [&](const Block& changed, const Shooter& s, const char* what) {
     Block asked = changed;
     ask(set, s, asked);
-    const Block exact = brute_force(set, s, changed);
+    const Block exact = brute_force(set, RayTestPolicy::kTestAllPatches, s, changed);
     EXPECT_EQ(asked.masks, exact.masks) << what;
     EXPECT_EQ(asked.counts, exact.counts) << what;
   };
@@ -141,7 +148,7 @@ TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
     const std::vector<PartMask> masks(100, PartMask(i % 2 ? i : i | 0x100));  // partial masks
     WorkCounts counts;
     counts.rays = std::uint64_t(i);
-    cache.store(1, shooter, points.data(), patches.data(), 100, masks.data(), counts);
+    cache.store(1, shooter, PointBlock(points.data(), patches.data(), 100), masks.data(), counts);
     EXPECT_LE(cache.bytes(), budget);
   }
   EXPECT_LE(cache.peak_bytes(), budget);
@@ -150,22 +157,22 @@ TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
   // first went, the last is there with its own answers.
   WorkCounts counts;
   block_of(0);
-  EXPECT_FALSE(cache.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  EXPECT_FALSE(cache.find(1, shooter, PointBlock(points.data(), patches.data(), 100), out.data(), counts));
   block_of(199);
-  ASSERT_TRUE(cache.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  ASSERT_TRUE(cache.find(1, shooter, PointBlock(points.data(), patches.data(), 100), out.data(), counts));
   EXPECT_EQ(out[0], PartMask(199));
   EXPECT_EQ(out[99], PartMask(199));
   EXPECT_EQ(counts.rays, 199u);
   // Another set is never served another's answers; a forgotten set has none left.
-  EXPECT_FALSE(cache.find(2, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  EXPECT_FALSE(cache.find(2, shooter, PointBlock(points.data(), patches.data(), 100), out.data(), counts));
   cache.forget_set(1);
   EXPECT_EQ(cache.entries(), 0u);
   EXPECT_EQ(cache.bytes(), 0u) << "keys go with their last entry";
   // A budget of zero keeps nothing.
   AnswerCache off(0);
   const std::vector<PartMask> ones(100, 1);
-  off.store(1, shooter, points.data(), patches.data(), 100, ones.data(), WorkCounts{});
-  EXPECT_FALSE(off.find(1, shooter, points.data(), patches.data(), 100, out.data(), counts));
+  off.store(1, shooter, PointBlock(points.data(), patches.data(), 100), ones.data(), WorkCounts{});
+  EXPECT_FALSE(off.find(1, shooter, PointBlock(points.data(), patches.data(), 100), out.data(), counts));
 }
 
 }  // namespace
@@ -189,27 +196,25 @@ TEST(AnswerCache, ValuesComeBackOnlyForTheSameMasks) {
   }
   AnswerCache cache(1 << 20);
   const std::uint64_t set = AnswerCache::new_set_id();
-  cache.store_values(set, shooter, sample.points.data(), sample.patches.data(), 20, masks.data(),
+  cache.store_values(set, shooter, PointBlock(sample.points.data(), sample.patches.data(), 20), masks.data(),
                      values.data());
   EXPECT_GT(cache.bytes(), 20 * (sizeof(PartMask) + sizeof(double)));
   std::vector<double> got(20, -1.0);
-  ASSERT_TRUE(cache.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+  ASSERT_TRUE(cache.find_values(set, shooter, PointBlock(sample.points.data(), sample.patches.data(), 20),
                                 masks.data(), got.data()));
   EXPECT_EQ(got, values);
   std::vector<PartMask> other = masks;
   other[19] ^= 2;
-  EXPECT_FALSE(cache.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+  EXPECT_FALSE(cache.find_values(set, shooter, PointBlock(sample.points.data(), sample.patches.data(), 20),
                                  other.data(), got.data()));
-  EXPECT_FALSE(cache.find_values(AnswerCache::new_set_id(), shooter, sample.points.data(),
-                                 sample.patches.data(), 20, masks.data(), got.data()));
-  EXPECT_FALSE(cache.find_values(set, make_shooter(scene, 41, Rgb(1.0), 16), sample.points.data(),
-                                 sample.patches.data(), 20, masks.data(), got.data()));
+  EXPECT_FALSE(cache.find_values(AnswerCache::new_set_id(), shooter, PointBlock(sample.points.data(), sample.patches.data(), 20), masks.data(), got.data()));
+  EXPECT_FALSE(cache.find_values(set, make_shooter(scene, 41, Rgb(1.0), 16), PointBlock(sample.points.data(), sample.patches.data(), 20), masks.data(), got.data()));
   cache.forget_set(set);
   EXPECT_EQ(cache.bytes(), 0u);
   AnswerCache none(0);
-  none.store_values(set, shooter, sample.points.data(), sample.patches.data(), 20, masks.data(),
+  none.store_values(set, shooter, PointBlock(sample.points.data(), sample.patches.data(), 20), masks.data(),
                     values.data());
-  EXPECT_FALSE(none.find_values(set, shooter, sample.points.data(), sample.patches.data(), 20,
+  EXPECT_FALSE(none.find_values(set, shooter, PointBlock(sample.points.data(), sample.patches.data(), 20),
                                 masks.data(), got.data()));
 }
 

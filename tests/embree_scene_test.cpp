@@ -2,7 +2,7 @@
 // ends exactly (embree_scene.h): blockers crossing a ray a tenth of a pad from its start or
 // its end (panel_room.h) must be found in all three query modes, as the brute-force loop
 // finds them, while the receiver's and the shooter's own patches never block.
-#include "radiosity/embree_scene.h"
+#include "host/embree_scene.h"
 
 #include <gtest/gtest.h>
 

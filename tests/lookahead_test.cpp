@@ -13,7 +13,8 @@
 
 #include "receiver_sample.h"
 #include "nodes/placement.h"
-#include "radiosity/lookahead.h"
+#include "host/lookahead.h"
+#include "visibility/brute_force_occluders.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene_loader.h"
 
@@ -30,17 +31,20 @@ struct Fixture {
     // The reference: the same shares on their own, without the lookahead.
     for (int j = 0; j < kShares; ++j)
       reference.emplace_back(scene, visibility_share(scene, kShares, j), policy);
+    for (int j = 0; j < kShares; ++j)
+      brute_force.emplace_back(scene, visibility_share(scene, kShares, j), policy);
   }
   Scene scene;
-  std::deque<Occluders> shares, reference;
+  std::deque<BruteForceOccluders> brute_force;  // the literal loop
+  std::deque<FastOccluders> shares, reference;
 };
 
 void check_policy(RayTestPolicy policy) {
   Fixture f(policy);
-  std::vector<const Occluders*> sets;
-  for (const Occluders& s : f.shares) sets.push_back(&s);
+  std::vector<const FastOccluders*> sets;
+  for (const FastOccluders& s : f.shares) sets.push_back(&s);
   Lookahead lookahead(f.scene, sets, 1);
-  for (Occluders& s : f.shares) s.use_lookahead(&lookahead);
+  for (FastOccluders& s : f.shares) s.use_lookahead(&lookahead);
   // The second round repeats the shots: answers and form factors come from the caches.
   for (int round = 0; round < 2; ++round) {
   std::mt19937 random(7);
@@ -52,26 +56,27 @@ void check_policy(RayTestPolicy policy) {
     // computes some, this thread the others).
     for (std::size_t first = 0; first < sample.points.size(); first += kBlock) {
       const std::size_t n = std::min<std::size_t>(kBlock, sample.points.size() - first);
-      const Vec3* points = sample.points.data() + first;
-      const int* patches = sample.patches.data() + first;
+      const PointBlock block = PointBlock(sample.points, sample.patches).part(first, first + n);
+      const Vec3* points = block.points;
+      const int* patches = block.patches;
       std::vector<PartMask> visible(n, shooter.all_parts());
       for (int j = 0; j < kShares; ++j) {
         std::vector<PartMask> got(n), expected(n);
         WorkCounts got_counts, expected_counts, brute_counts;
-        ASSERT_TRUE(lookahead.answers(f.shares[j], shooter, points, patches, n, got.data(), got_counts));
-        f.reference[j].unblocked_parts(points, patches, n, shooter, expected.data(), expected_counts, 1);
+        ASSERT_TRUE(lookahead.answers(f.shares[j], shooter, block, got.data(), got_counts));
+        f.reference[j].unblocked_parts(block, shooter, expected.data(), expected_counts);
         EXPECT_EQ(got, expected) << "shooter " << shooter_patch << ", block at " << first << ", share " << j;
         EXPECT_EQ(got_counts, expected_counts) << "shooter " << shooter_patch << ", share " << j;
         for (std::size_t k = 0; k < n; ++k) {
-          EXPECT_EQ(got[k], f.reference[j].unblocked_parts_brute_force(points[k], patches[k], shooter,
-                                                                        brute_counts));
+          EXPECT_EQ(got[k], f.brute_force[j].unblocked_parts(points[k], patches[k], shooter,
+                                                             brute_counts));
           visible[k] &= got[k];
         }
         EXPECT_EQ(got_counts, brute_counts);
         // The share's own batch call goes through the lookahead too, with the same result.
         std::vector<PartMask> again(n);
         WorkCounts again_counts;
-        f.shares[j].unblocked_parts(points, patches, n, shooter, again.data(), again_counts, 1);
+        f.shares[j].unblocked_parts(block, shooter, again.data(), again_counts);
         EXPECT_EQ(again, expected);
         EXPECT_EQ(again_counts, expected_counts);
       }
@@ -92,15 +97,16 @@ void check_policy(RayTestPolicy policy) {
     moved[3].x = std::nextafter(moved[3].x, 1e300);
     std::vector<PartMask> masks(kBlock);
     WorkCounts counts;
-    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter, moved.data(), sample.patches.data(), kBlock,
+    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter,
+                                   PointBlock(moved.data(), sample.patches.data(), kBlock),
                                    masks.data(), counts));
     const Shooter other = make_shooter(f.scene, shooter_patch + 1, Rgb(1.0), 64);
-    EXPECT_FALSE(lookahead.answers(f.shares[0], other, sample.points.data(), sample.patches.data(),
-                                   kBlock, masks.data(), counts));
-    EXPECT_FALSE(lookahead.answers(f.reference[0], shooter, sample.points.data(),
-                                   sample.patches.data(), kBlock, masks.data(), counts));
-    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter, sample.points.data() + 1,
-                                   sample.patches.data() + 1, kBlock, masks.data(), counts));
+    const PointBlock first_block(sample.points.data(), sample.patches.data(), kBlock);
+    EXPECT_FALSE(lookahead.answers(f.shares[0], other, first_block, masks.data(), counts));
+    EXPECT_FALSE(lookahead.answers(f.reference[0], shooter, first_block, masks.data(), counts));
+    EXPECT_FALSE(lookahead.answers(f.shares[0], shooter,
+                                   PointBlock(sample.points, sample.patches).part(1, 1 + kBlock),
+                                   masks.data(), counts));
     EXPECT_EQ(counts, WorkCounts{});
   }
   }
@@ -120,8 +126,8 @@ TEST(Lookahead, FirstBlockerAnswersAsTheSharesThemselves) {
 // remembers each such block with its own batch call's answers and counts.
 TEST(Lookahead, GuessesTheNextFirstShotInTheBlocksEachRankWouldPost) {
   Fixture f(RayTestPolicy::kTestAllPatches);
-  std::vector<const Occluders*> sets;
-  for (const Occluders& s : f.shares) sets.push_back(&s);
+  std::vector<const FastOccluders*> sets;
+  for (const FastOccluders& s : f.shares) sets.push_back(&s);
   Lookahead lookahead(f.scene, sets, 1);
   constexpr int kSamples = 16;
   lookahead.guess_shots(kSamples, kBlock, 2);
@@ -154,13 +160,14 @@ TEST(Lookahead, GuessesTheNextFirstShotInTheBlocksEachRankWouldPost) {
         // The workers get there in their own time (a few seconds at most).
         bool held = false;
         for (int wait = 0; wait < 3000 && !held; ++wait) {
-          held = f.shares[j].remembered(shooter, receivers.data() + first,
-                                        receiver_patches.data() + first, n, got.data(), got_counts);
+          held = f.shares[j].remembered(
+              shooter, PointBlock(receivers, receiver_patches).part(first, first + n), got.data(),
+              got_counts);
           if (!held) std::this_thread::sleep_for(std::chrono::milliseconds(10));
         }
         ASSERT_TRUE(held) << "rank " << rank << ", block at " << first << ", share " << j;
-        f.reference[j].unblocked_parts(receivers.data() + first, receiver_patches.data() + first,
-                                       n, shooter, expected.data(), expected_counts, 1);
+        f.reference[j].unblocked_parts(PointBlock(receivers, receiver_patches).part(first, first + n),
+                                       shooter, expected.data(), expected_counts);
         EXPECT_EQ(got, expected);
         EXPECT_EQ(got_counts, expected_counts);
       }

@@ -1,4 +1,4 @@
-#include "radiosity/near_patches.h"
+#include "host/near_patches.h"
 
 #include <gtest/gtest.h>
 

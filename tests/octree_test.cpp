@@ -9,8 +9,9 @@
 #include "receiver_sample.h"
 #include "hand_counted_scene.h"
 #include "nodes/placement.h"
-#include "radiosity/occluders.h"
-#include "radiosity/octree.h"
+#include "host/threaded_occluders.h"
+#include "visibility/brute_force_occluders.h"
+#include "visibility/octree.h"
 #include "scene/scene_loader.h"
 
 namespace ncube {
@@ -118,8 +119,8 @@ struct Tally {
 
 void compare(const Scene& scene, const std::vector<int>& set, const std::vector<int>& shooters,
              int points_per_shooter, unsigned seed, Tally& tally) {
-  const Occluders brute_force(scene, set, RayTestPolicy::kTestAllPatches);
-  const Octree octree(scene, set);
+  const BruteForceOccluders brute_force(scene, set, RayTestPolicy::kTestAllPatches);
+  const ThreadedOccluders octree(std::make_unique<const Octree>(scene, set), 2);
   std::mt19937 random(seed);
   for (int shooter_patch : shooters) {
     const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
@@ -128,11 +129,10 @@ void compare(const Scene& scene, const std::vector<int>& set, const std::vector<
     const std::vector<int>& patches = sample.patches;
     std::vector<PartMask> masks(points.size());
     WorkCounts walked, looped;
-    octree.unblocked_parts(points.data(), patches.data(), points.size(), shooter, masks.data(),
-                           walked, 2);
+    octree.unblocked_parts(PointBlock(points, patches), shooter, masks.data(), walked);
     for (std::size_t k = 0; k < points.size(); ++k) {
       const PartMask expected =
-          brute_force.unblocked_parts_brute_force(points[k], patches[k], shooter, looped);
+          brute_force.unblocked_parts(points[k], patches[k], shooter, looped);
       if (masks[k] != expected) {
         ++tally.differing;
         ADD_FAILURE() << scene.name << ": shooter " << shooter_patch << ", point on patch "

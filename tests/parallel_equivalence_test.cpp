@@ -5,6 +5,8 @@
 // the last bit; the stated tolerance is 1e-12 relative. Each TEST runs its own SimGrid
 // Engine, hence its own process under ctest.
 #include <gtest/gtest.h>
+
+#include "host/fast_occluders.h"
 #include <numeric>
 
 #include "machine/cost_model.h"
@@ -28,7 +30,7 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
   std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
   RadiosityEngine reference(scene, all);
-  const Occluders occluders(scene, all, options.ray_policy);
+  const FastOccluders occluders(scene, all, options.ray_policy);
   const ProgressiveRun sequential = run_progressive(reference, occluders, options);
 
   SimulationConfig config;

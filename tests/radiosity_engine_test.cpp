@@ -1,6 +1,8 @@
 #include "radiosity/radiosity_engine.h"
 
 #include <gtest/gtest.h>
+
+#include "host/fast_occluders.h"
 #include <numeric>
 
 namespace ncube {
@@ -41,7 +43,7 @@ TEST(RadiosityEngine, WhiteFurnaceConvergesToEmissionOverOneMinusReflectance) {
   const double E = 1.0, rho = 0.5;
   const Scene box = closed_box(8, rho, E, 0.0);
   RadiosityEngine engine(box, all_patches(box));
-  const Occluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.convergence_fraction = 1e-6;
   const ProgressiveRun run = run_progressive(engine, occluders, options);
@@ -56,7 +58,7 @@ TEST(RadiosityEngine, OneShotInAClosedBoxDeliversAllTheShootersPower) {
   const double rho = 0.5;
   const Scene box = closed_box(20, rho, 0.0, 1.0);
   RadiosityEngine engine(box, all_patches(box));
-  const Occluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.max_iterations = 1;
   run_progressive(engine, occluders, options);
@@ -72,7 +74,7 @@ TEST(RadiosityEngine, TotalPowerNeverExceedsTheGeometricSeriesBound) {
   const double rho = 0.7;
   const Scene box = closed_box(6, rho, 0.0, 2.0);
   RadiosityEngine engine(box, all_patches(box));
-  const Occluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.convergence_fraction = 1e-4;
   run_progressive(engine, occluders, options);
@@ -94,7 +96,7 @@ TEST(RadiosityEngine, ABlockerCastsAShadow) {
   s.patches[0].polygon = Polygon::quad({-0.2, 2, -0.2}, {0.2, 2, -0.2}, {0.2, 2, 0.2}, {-0.2, 2, 0.2});
   s.build_elements();
   RadiosityEngine engine(s, all_patches(s));
-  const Occluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.max_iterations = 1;
   const ProgressiveRun run = run_progressive(engine, occluders, options);
@@ -135,7 +137,7 @@ TEST(RadiosityEngine, TracingFromReceiversThatCannotSeeTheShooterChangesWorkNotL
   skip.skip_facing_away = true;
   trace_all.skip_facing_away = false;  // the default
   RadiosityEngine a(s, all_patches(s)), b(s, all_patches(s));
-  const Occluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
   const ProgressiveRun run_a = run_progressive(a, occluders, skip);
   const ProgressiveRun run_b = run_progressive(b, occluders, trace_all);
   EXPECT_GT(run_b.total.rays, run_a.total.rays);

@@ -3,6 +3,8 @@
 // that cuts recursively where the light changes and nowhere else.
 #include <gtest/gtest.h>
 
+#include "host/fast_occluders.h"
+
 #include <numeric>
 
 #include "radiosity/radiosity_engine.h"
@@ -64,7 +66,7 @@ TEST(Subdivision, OneShotCutsRecursivelyAtTheShadowEdgeOnly) {
   const Scene s = shadow_scene();
   std::vector<int> all{0, 1, 2};
   RadiosityEngine engine(s, all);
-  const Occluders occluders(s, all, RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(s, all, RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.max_iterations = 1;
   options.subdivision.enabled = true;
@@ -104,7 +106,7 @@ TEST(Subdivision, OffByDefaultAndBoundedByTheRoomGiven) {
   const Scene s = shadow_scene();
   std::vector<int> all{0, 1, 2};
   RadiosityEngine engine(s, all);
-  const Occluders occluders(s, all, RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(s, all, RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
   options.max_iterations = 1;
   run_progressive(engine, occluders, options);

@@ -28,7 +28,7 @@ ShooterChoice ShooterSelection::reduce_to_master(const ShooterChoice& local_best
       const std::unique_ptr<Message> message = runtime_.receive({MessageKind::kCandidate});
       WorkCounts compare;
       compare.shooter_candidates = 1;
-      runtime_.compute(compare);
+      runtime_.charge(compare);
       if (message->candidate.better_than(best)) best = message->candidate;
       loads.insert(loads.end(), message->loads.begin(), message->loads.end());
     }

@@ -42,7 +42,7 @@ void ExposureSelection::count_round(const FrameShare& frame, int round, Exposure
         ++state.histogram[std::size_t(set) * kSelectionBuckets + key_digit(key, round)];
     }
   });
-  runtime_.compute(work);
+  runtime_.charge(work);
 }
 
 void ExposureSelection::reduce_to_node0(int round, ExposureRound& state) {
@@ -64,7 +64,7 @@ void ExposureSelection::reduce_to_node0(int round, ExposureRound& state) {
         state.max[set] = std::max(state.max[set], child->exposure.max[set]);
       RenderCounts work;
       work.histogram_buckets = state.histogram.size();
-      runtime_.compute(work);
+      runtime_.charge(work);
     }
   }
 }

@@ -1,7 +1,7 @@
 #include "nodes/memory_plan.h"
 
 #include "nodes/messages.h"
-#include "radiosity/octree.h"
+#include "visibility/octree.h"
 
 namespace ncube {
 

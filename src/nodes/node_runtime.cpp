@@ -1,5 +1,7 @@
 #include "nodes/node_runtime.h"
 
+#include <algorithm>
+
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Comm.hpp>
 #include <simgrid/s4u/Engine.hpp>
@@ -75,12 +77,12 @@ void NodeRuntime::run_charged() {
   charged_.clear();
 }
 
-void NodeRuntime::compute(const WorkCounts& counts) {
+void NodeRuntime::charge(const WorkCounts& counts) {
   stats_.counts += counts;
   busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
 }
 
-void NodeRuntime::compute(const RenderCounts& counts) {
+void NodeRuntime::charge(const RenderCounts& counts) {
   render_counts_ += counts;
   busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
 }
@@ -132,6 +134,12 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
   XBT_DEBUG("node %d <- node %d: kind %d", stats_.node, message->from, int(message->kind));
   busy(platform_.receive_overhead, "overhead", stats_.overhead_seconds);
   return message;
+}
+
+long NodeRuntime::records_that_fit(double bytes_each) const {
+  const double free_bytes = node_memory() - memory();
+  return free_bytes >= 0x1p62 * bytes_each ? long(1) << 62
+                                           : long(std::max(0.0, free_bytes) / bytes_each);
 }
 
 }  // namespace ncube

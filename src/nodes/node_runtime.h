@@ -53,10 +53,11 @@ class NodeRuntime {
   // was left blocked when the simulation ended (a deadlock).
   bool finished() const { return finished_; }
 
-  // Runs the counted work on this node's CPU: one execute() for the whole batch.
-  void compute(const WorkCounts& counts);
+  // Charges the counted work as CPU time of this node (simulated time, through the cost
+  // model); the host computed it already.
+  void charge(const WorkCounts& counts);
   // The same for the rendering phase's work (kept in render_counts()).
-  void compute(const RenderCounts& counts);
+  void charge(const RenderCounts& counts);
   const RenderCounts& render_counts() const { return render_counts_; }
   // Sends `message` to node `to`: the sender's overhead, then its modeled bytes (its
   // payload_bytes plus the header) over the e-cube route (asynchronously: the sender goes on).
@@ -74,6 +75,8 @@ class NodeRuntime {
     if (memory_ > stats_.peak_memory_bytes) stats_.peak_memory_bytes = memory_;
   }
   double memory() const { return memory_; }
+  // How many more records of `bytes_each` fit in the node's memory (at most 2^62).
+  long records_that_fit(double bytes_each) const;
   double node_memory() const { return platform_.node_memory; }
   // The simulated time, after the CPU time charged so far has run.
   double now();

@@ -10,28 +10,25 @@ XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_radiosity, "the radiosity processors (section
 namespace ncube {
 
 RadiosityProcessor::RadiosityProcessor(const ProgramSetup& setup, int rank, NodeRuntime& runtime,
-                                       RadiosityEngine& engine, const Occluders* occluders,
-                                       Lookahead* lookahead)
+                                       RadiosityEngine& engine, const OccluderSet* occluders)
     : setup_(setup),
       rank_(rank),
       runtime_(runtime),
       engine_(engine),
       occluders_(occluders),
-      lookahead_(lookahead),
       selection_(runtime, setup_.placement, rank) {}
 
 void RadiosityProcessor::run() {
   runtime_.start();
-  if (lookahead_) tell_lookahead_receivers();
   // Section 6: with octree visibility, a node that tests rays first builds its octree.
-  if (occluders_) runtime_.compute(occluders_->build_work());
+  if (occluders_) runtime_.charge(occluders_->build_work());
   for (;;) {
     // Every processor offers the patch with the most unshot radiosity (and, when loads can
     // change, its load); the master chooses the globally best as shooter, and the patches
     // to move, and sends its decision to all (sections 2.2, 4.2).
     WorkCounts search;
     const ShooterChoice local_best = engine_.best_shooter(search);
-    runtime_.compute(search);
+    runtime_.charge(search);
     std::vector<ProcessorLoad> loads;
     if (setup_.loads_change()) loads.push_back(load(local_best.patch));
     const ShooterChoice global_best = selection_.reduce_to_master(local_best, loads);
@@ -43,30 +40,9 @@ void RadiosityProcessor::run() {
     shoot(make_shooter(setup_.scene, decision.shooter.patch, decision.shooter.unshot,
                        setup_.options.samples));
     // Only the holder keeps the shooter's unshot radiosity; it has now been shot.
-    if (engine_.holds(decision.shooter.patch)) engine_.clear_unshot(decision.shooter.patch);
-    if (lookahead_) tell_lookahead_unshot();
+    engine_.finish_shot(decision.shooter.patch);
   }
   runtime_.finish();
-}
-
-void RadiosityProcessor::tell_lookahead_receivers() {
-  std::vector<ElementRef> all;
-  const auto& patches = engine_.store().patches();
-  for (int slot = 0; slot < int(patches.size()); ++slot)
-    for (int k = 0; k < int(patches[std::size_t(slot)].elements.size()); ++k) all.push_back({slot, k});
-  std::vector<Vec3> points;
-  std::vector<int> point_patches;
-  engine_.visibility_points(all, points, point_patches);
-  lookahead_->know_receivers(rank_, std::move(points), std::move(point_patches));
-}
-
-void RadiosityProcessor::tell_lookahead_unshot() {
-  std::vector<std::pair<int, double>> powers;
-  for (const StoredPatch& s : engine_.store().patches()) {
-    const Rgb& u = s.unshot;
-    powers.emplace_back(s.patch, (u.r + u.g + u.b) * setup_.scene.patches[std::size_t(s.patch)].area);
-  }
-  lookahead_->know_unshot(powers);
 }
 
 ProcessorLoad RadiosityProcessor::load(int candidate) const {
@@ -163,26 +139,30 @@ void RadiosityProcessor::shoot(const Shooter& shooter) {
   WorkCounts facing;
   std::vector<ElementRef> receivers =
       engine_.receivers(shooter, setup_.options.skip_facing_away, facing);
-  runtime_.compute(facing);
+  runtime_.charge(facing);
   wanted_bytes_ = 0.0;
   while (!receivers.empty()) {
     find_visible_parts_and_gather(shooter, receivers);
     if (!setup_.options.subdivision.enabled) break;
     // Section 4.1: "The test is done after the energy has been distributed to all
     // elements"; elements whose corners differ too much are cut, and the children receive
-    // the current shot at their own centres, recursively. Each cut costs 4 element records.
-    const double element_bytes = runtime_.costs().element_bytes;
-    const double free_bytes = setup_.memory_cap ? runtime_.node_memory() - runtime_.memory()
-                                                : std::numeric_limits<double>::infinity();
-    const long room = free_bytes >= 0x1p62 * element_bytes ? long(1) << 62
-                                                           : long(std::max(0.0, free_bytes) / element_bytes);
-    bool out_of_room = false;
-    WorkCounts cutting;
-    receivers = engine_.subdivide(receivers, setup_.options.subdivision, room, out_of_room, cutting);
-    runtime_.compute(cutting);
-    runtime_.change_memory(double(receivers.size()) * element_bytes);
-    if (out_of_room) wanted_bytes_ = 4.0 * element_bytes;  // at least one more cut
+    // the current shot at their own centres, recursively.
+    receivers = subdivide(receivers);
   }
+}
+
+std::vector<ElementRef> RadiosityProcessor::subdivide(const std::vector<ElementRef>& receivers) {
+  // Each cut costs 4 element records of the node's memory.
+  const double element_bytes = runtime_.costs().element_bytes;
+  const long room = setup_.memory_cap ? runtime_.records_that_fit(element_bytes) : long(1) << 62;
+  bool out_of_room = false;
+  WorkCounts cutting;
+  std::vector<ElementRef> children =
+      engine_.subdivide(receivers, setup_.options.subdivision, room, out_of_room, cutting);
+  runtime_.charge(cutting);
+  runtime_.change_memory(double(children.size()) * element_bytes);
+  if (out_of_room) wanted_bytes_ = 4.0 * element_bytes;  // at least one more cut
+  return children;
 }
 
 void RadiosityProcessor::find_visible_parts_and_gather(const Shooter& shooter,
@@ -194,11 +174,9 @@ void RadiosityProcessor::find_visible_parts_and_gather(const Shooter& shooter,
   // Section 2.2: trace a ray from each receiver to every part of the shooter and intersect
   // it with all other patches.
   WorkCounts work;
-  const int threads = setup_.options.host_threads;
-  const std::vector<PartMask> visible =
-      visible_parts(engine_, *occluders_, receivers, shooter, work, threads);
-  engine_.gather(shooter, receivers, visible, work, threads);
-  runtime_.compute(work);
+  const std::vector<PartMask> visible = visible_parts(engine_, *occluders_, receivers, shooter, work);
+  engine_.gather(shooter, receivers, visible, work);
+  runtime_.charge(work);
 }
 
 void RadiosityProcessor::gather_with_visibility_processors(const Shooter& shooter,
@@ -206,49 +184,36 @@ void RadiosityProcessor::gather_with_visibility_processors(const Shooter& shoote
   // Section 3: the visibility points go in blocks to every visibility processor of this
   // group; each answers with one bit vector per point (bit set: that part of the shooter is
   // not blocked by its share of the patches); the AND of the V answers is the visibility.
-  std::vector<Vec3> points;
-  std::vector<int> patches;
-  engine_.visibility_points(receivers, points, patches);
+  const PointBlocks blocks = engine_.point_blocks(shooter, receivers, setup_.block_size);
   const int V = setup_.placement.visibility_processors;
-  const int B = setup_.block_size;
-  const int blocks = int((receivers.size() + B - 1) / B);
   std::vector<PartMask> visible(receivers.size(), shooter.all_parts());
-  std::vector<int> answers(std::size_t(blocks), 0);
-  // Host-side only: the blocks' answers and form factors are computed ahead on the host's
-  // other threads (lookahead.h); what the programs compute and are charged is unchanged.
-  const std::shared_ptr<Lookahead::Shot> ahead =
-      lookahead_ ? lookahead_->post(shooter, points, patches, B) : nullptr;
-  if (blocks > 0) send_block(points, patches, 0);
-  for (int block = 0; block < blocks; ++block) {
-    if (setup_.pipelined && block + 1 < blocks) send_block(points, patches, block + 1);
+  std::vector<int> answers(std::size_t(blocks.count()), 0);
+  if (blocks.count() > 0) send_block(blocks, 0);
+  for (int block = 0; block < blocks.count(); ++block) {
+    if (setup_.pipelined && block + 1 < blocks.count()) send_block(blocks, block + 1);
     while (answers[block] < V) {
       const std::unique_ptr<Message> answer = runtime_.receive({MessageKind::kAnswers});
       for (std::size_t k = 0; k < answer->masks.size(); ++k)
-        visible[std::size_t(answer->block) * B + k] &= answer->masks[k];
+        visible[blocks.first(answer->block) + k] &= answer->masks[k];
       ++answers[answer->block];
     }
-    const auto first = std::size_t(block) * B;
-    const auto last = std::min(receivers.size(), first + B);
-    const std::vector<ElementRef> part(receivers.begin() + first, receivers.begin() + last);
-    const std::vector<PartMask> masks(visible.begin() + first, visible.begin() + last);
+    const std::vector<PartMask> masks(visible.begin() + std::ptrdiff_t(blocks.first(block)),
+                                      visible.begin() + std::ptrdiff_t(blocks.end(block)));
     WorkCounts work;
-    engine_.gather(shooter, part, masks, work, setup_.options.host_threads,
-                   ahead ? lookahead_->form_factors(*ahead, block, masks.data(), masks.size()) : nullptr);
-    runtime_.compute(work);
-    if (!setup_.pipelined && block + 1 < blocks) send_block(points, patches, block + 1);
+    engine_.gather_block(shooter, receivers, blocks, block, masks, work);
+    runtime_.charge(work);
+    if (!setup_.pipelined && block + 1 < blocks.count()) send_block(blocks, block + 1);
   }
 }
 
-void RadiosityProcessor::send_block(const std::vector<Vec3>& points, const std::vector<int>& patches,
-                                    int block) {
-  const auto first = std::size_t(block) * setup_.block_size;
-  const auto last = std::min(points.size(), first + setup_.block_size);
+void RadiosityProcessor::send_block(const PointBlocks& blocks, int block) {
+  const PointBlock points = blocks.block(block);
   for (int j = 0; j < setup_.placement.visibility_processors; ++j) {
     auto message = std::make_unique<Message>();
     message->kind = MessageKind::kPoints;
     message->block = block;
-    message->points.assign(points.begin() + first, points.begin() + last);
-    message->point_patches.assign(patches.begin() + first, patches.begin() + last);
+    message->points.assign(points.points, points.points + points.count);
+    message->point_patches.assign(points.patches, points.patches + points.count);
     runtime_.send(setup_.placement.visibility_node(rank_, j), std::move(message));
   }
 }

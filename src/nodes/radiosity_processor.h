@@ -13,7 +13,7 @@
 #include "nodes/collectives.h"
 #include "nodes/node_runtime.h"
 #include "nodes/program_setup.h"
-#include "radiosity/lookahead.h"
+#include "visibility/occluder_set.h"
 
 namespace ncube {
 
@@ -26,11 +26,8 @@ struct RunOutOfMemory {
 class RadiosityProcessor {
  public:
   // `occluders` is the whole scene when V = 0, unused (may be null) when V > 0.
-  // `lookahead`: host threads computing the blocks' answers and form factors ahead
-  // (host-side only, lookahead.h; null: none).
   RadiosityProcessor(const ProgramSetup& setup, int rank, NodeRuntime& runtime,
-                     RadiosityEngine& engine, const Occluders* occluders,
-                     Lookahead* lookahead = nullptr);
+                     RadiosityEngine& engine, const OccluderSet* occluders);
 
   void run();  // the actor's body
 
@@ -60,19 +57,17 @@ class RadiosityProcessor {
   void find_visible_parts_and_gather(const Shooter& shooter, const std::vector<ElementRef>& receivers);
   void gather_with_visibility_processors(const Shooter& shooter,
                                          const std::vector<ElementRef>& receivers);
-  void send_block(const std::vector<Vec3>& points, const std::vector<int>& patches, int block);
-  // Host-side only: what the host threads computing ahead guess the next shots from
-  // (lookahead.h): this processor's receivers, and its patches' unshot power after a shot.
-  void tell_lookahead_receivers();
-  void tell_lookahead_unshot();
+  void send_block(const PointBlocks& blocks, int block);
+  // Section 4.1: cuts the shot's receivers where the light changes too fast, as far as the
+  // node's memory allows; returns the new elements (to receive the same shot).
+  std::vector<ElementRef> subdivide(const std::vector<ElementRef>& receivers);
   bool holds_geometry_of_all_patches() const { return setup_.placement.visibility_processors == 0; }
 
   const ProgramSetup& setup_;
   int rank_;
   NodeRuntime& runtime_;
   RadiosityEngine& engine_;
-  const Occluders* occluders_;
-  Lookahead* lookahead_;
+  const OccluderSet* occluders_;
   ShooterSelection selection_;
   std::vector<double> iteration_ends_;
   std::vector<int> shooters_;

@@ -23,7 +23,7 @@ void RenderProcessor::run() {
   const double scale = ExposureSelection(runtime_, node_, setup_.nodes).agree(*frame_);
   RenderCounts work;
   const Image rows = frame_->resolve(scale, work);
-  runtime_.compute(work);
+  runtime_.charge(work);
   frame_.reset();  // the frame share is freed before node 0 collects the picture
   collect_pieces(rows);
   runtime_.finish();
@@ -33,7 +33,7 @@ void RenderProcessor::rasterise(const ElementShare& share) {
   RenderCounts work;
   for (const RenderElement& element : *share) frame_->draw(element, work);
   const double before = runtime_.stats().compute_seconds;
-  runtime_.compute(work);
+  runtime_.charge(work);
   rasterise_seconds_ += runtime_.stats().compute_seconds - before;
 }
 

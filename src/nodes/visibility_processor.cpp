@@ -8,12 +8,12 @@ XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_visibility, "the visibility processors (secti
 namespace ncube {
 
 VisibilityProcessor::VisibilityProcessor(const ProgramSetup& setup, NodeRuntime& runtime,
-                                         const Occluders& share)
+                                         const OccluderSet& share)
     : setup_(setup), runtime_(runtime), share_(share) {}
 
 void VisibilityProcessor::run() {
   runtime_.start();
-  runtime_.compute(share_.build_work());  // section 6: the octree over the share, if any
+  runtime_.charge(share_.build_work());  // section 6: the octree over the share, if any
   Shooter shooter;
   for (;;) {
     const std::unique_ptr<Message> message =
@@ -30,10 +30,9 @@ void VisibilityProcessor::run() {
     answer->block = message->block;
     WorkCounts work;
     answer->masks.resize(message->points.size());
-    share_.unblocked_parts(message->points.data(), message->point_patches.data(),
-                           message->points.size(), shooter, answer->masks.data(), work,
-                           setup_.options.host_threads);
-    runtime_.compute(work);
+    share_.unblocked_parts(PointBlock(message->points, message->point_patches), shooter,
+                           answer->masks.data(), work);
+    runtime_.charge(work);
     XBT_DEBUG("block %d from node %d: %zu points, %llu ray-patch tests", message->block,
               message->from, message->points.size(), (unsigned long long)work.ray_patch_tests);
     answer->mask_parts = setup_.options.samples;

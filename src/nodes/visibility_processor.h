@@ -5,20 +5,20 @@
 
 #include "nodes/node_runtime.h"
 #include "nodes/program_setup.h"
-#include "radiosity/occluders.h"
+#include "visibility/occluder_set.h"
 
 namespace ncube {
 
 class VisibilityProcessor {
  public:
-  VisibilityProcessor(const ProgramSetup& setup, NodeRuntime& runtime, const Occluders& share);
+  VisibilityProcessor(const ProgramSetup& setup, NodeRuntime& runtime, const OccluderSet& share);
 
   void run();  // the actor's body: answer blocks until told to stop
 
  private:
   const ProgramSetup& setup_;
   NodeRuntime& runtime_;
-  const Occluders& share_;
+  const OccluderSet& share_;
 };
 
 }  // namespace ncube

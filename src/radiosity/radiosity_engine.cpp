@@ -1,16 +1,21 @@
 #include "radiosity/radiosity_engine.h"
 
+#include <algorithm>
 #include <bitset>
 #include <stdexcept>
 #include <glm/geometric.hpp>
 
 #include "radiosity/form_factor.h"
-#include "radiosity/host_threads.h"
 
 namespace ncube {
 
 RadiosityEngine::RadiosityEngine(const Scene& scene, const std::vector<int>& owned_patches)
     : store_(scene, owned_patches) {}
+
+void RadiosityEngine::use_host_assist(HostAssist* assist, int rank) {
+  assist_ = assist;
+  if (assist_) assist_->engine_started(rank, *this);
+}
 
 ShooterChoice RadiosityEngine::best_shooter(WorkCounts& counts) const {
   ShooterChoice best;
@@ -56,20 +61,52 @@ double receiver_form_factor(const Shooter& shooter, const Vec3& centre, const Ve
   return visible_parts_form_factor(centre, normal, shooter, mask);
 }
 
+PointBlocks RadiosityEngine::point_blocks(const Shooter& shooter,
+                                          const std::vector<ElementRef>& receivers,
+                                          int block_size) const {
+  PointBlocks blocks;
+  visibility_points(receivers, blocks.points, blocks.patches);
+  blocks.block_size = std::max(1, block_size);
+  if (assist_) blocks.posted = assist_->blocks_to_send(shooter, blocks.points, blocks.patches, block_size);
+  return blocks;
+}
+
 void RadiosityEngine::gather(const Shooter& shooter, const std::vector<ElementRef>& receivers,
-                             const std::vector<PartMask>& masks, WorkCounts& counts, int threads,
-                             const double* computed_form_factors) {
+                             const std::vector<PartMask>& masks, WorkCounts& counts) {
+  add_light(shooter, receivers, masks, nullptr, counts);
+}
+
+void RadiosityEngine::gather_block(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                                   const PointBlocks& blocks, int block,
+                                   const std::vector<PartMask>& masks, WorkCounts& counts) {
+  const std::vector<ElementRef> part(receivers.begin() + std::ptrdiff_t(blocks.first(block)),
+                                     receivers.begin() + std::ptrdiff_t(blocks.end(block)));
+  const double* form_factors =
+      assist_ && blocks.posted ? assist_->form_factors(*blocks.posted, block, masks.data(), masks.size())
+                               : nullptr;
+  add_light(shooter, part, masks, form_factors, counts);
+}
+
+void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                                const std::vector<PartMask>& masks,
+                                const double* computed_form_factors, WorkCounts& counts) {
   std::vector<double> form_factors;
   if (!computed_form_factors) {
     form_factors.assign(receivers.size(), 0.0);
-    parallel_chunks(threads, receivers.size(), 64, [&](std::size_t begin, std::size_t end) {
+    const auto compute = [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k) {
         const StoredElement& element = store_.element(receivers[k]);
         const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
         form_factors[k] = receiver_form_factor(shooter, element.centre,
                                                scene().patches[std::size_t(patch)].normal, masks[k]);
       }
-    });
+    };
+    // Each receiver's form factor is independent of the others': the host may compute them
+    // on several threads (host_assist.h).
+    if (assist_)
+      assist_->share_out(receivers.size(), 64, compute);
+    else
+      compute(0, receivers.size());
     computed_form_factors = form_factors.data();
   }
   for (std::size_t k = 0; k < receivers.size(); ++k) {
@@ -130,8 +167,10 @@ std::vector<ElementRef> RadiosityEngine::subdivide(const std::vector<ElementRef>
   return children;
 }
 
-void RadiosityEngine::clear_unshot(int patch) {
-  store_.patches()[std::size_t(store_.slot_of(patch))].unshot = Rgb(0.0);
+void RadiosityEngine::finish_shot(int patch) {
+  const int slot = store_.slot_of(patch);
+  if (slot >= 0) store_.patches()[std::size_t(slot)].unshot = Rgb(0.0);
+  if (assist_) assist_->shot_finished(*this);
 }
 
 const Rgb& RadiosityEngine::unshot(int patch) const {
@@ -163,19 +202,18 @@ bool has_converged(const ShooterChoice& best, double emitted_power, double fract
   return best.patch < 0 || best.power < fraction * emitted_power;
 }
 
-std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const Occluders& occluders,
+std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const OccluderSet& occluders,
                                     const std::vector<ElementRef>& receivers,
-                                    const Shooter& shooter, WorkCounts& counts, int threads) {
+                                    const Shooter& shooter, WorkCounts& counts) {
   std::vector<Vec3> points;
   std::vector<int> patches;
   engine.visibility_points(receivers, points, patches);
   std::vector<PartMask> masks(receivers.size());
-  occluders.unblocked_parts(points.data(), patches.data(), receivers.size(), shooter, masks.data(),
-                            counts, threads);
+  occluders.unblocked_parts(PointBlock(points, patches), shooter, masks.data(), counts);
   return masks;
 }
 
-ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occluders,
+ProgressiveRun run_progressive(RadiosityEngine& engine, const OccluderSet& occluders,
                                const ProgressiveOptions& options) {
   ProgressiveRun run;
   const double emitted = engine.scene().emitted_power();
@@ -192,14 +230,13 @@ ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occlude
     // Section 4.1: shoot, then cut where the light changes too fast and shoot the current
     // shooter to the new elements, until no element is cut.
     while (!receivers.empty()) {
-      const std::vector<PartMask> masks =
-          visible_parts(engine, occluders, receivers, shooter, counts, options.host_threads);
-      engine.gather(shooter, receivers, masks, counts, options.host_threads);
+      const std::vector<PartMask> masks = visible_parts(engine, occluders, receivers, shooter, counts);
+      engine.gather(shooter, receivers, masks, counts);
       if (!options.subdivision.enabled) break;
       bool out_of_room = false;
       receivers = engine.subdivide(receivers, options.subdivision, 1L << 62, out_of_room, counts);
     }
-    engine.clear_unshot(best.patch);
+    engine.finish_shot(best.patch);
     ++run.iterations;
     run.shooters.push_back(best.patch);
     run.elements.push_back(engine.store().element_count());

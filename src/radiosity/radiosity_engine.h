@@ -3,13 +3,15 @@
 // drive it step by step; `run_progressive` drives it alone on the host.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "radiosity/element_store.h"
-#include "radiosity/occluders.h"
+#include "radiosity/host_assist.h"
 #include "radiosity/shooter.h"
 #include "radiosity/subdivision.h"
 #include "radiosity/work_counts.h"
+#include "visibility/occluder_set.h"
 
 namespace ncube {
 
@@ -27,9 +29,26 @@ struct ShooterChoice {
   }
 };
 
+// The receivers' visibility points cut into the blocks a radiosity processor sends its
+// visibility processors (section 3: "blocks of e.g. 100").
+struct PointBlocks {
+  std::vector<Vec3> points;
+  std::vector<int> patches;  // the patch each point lies on
+  int block_size = 1;
+  std::shared_ptr<HostAssist::PostedShot> posted;  // the host's handle on them (may be null)
+
+  int count() const { return int((points.size() + std::size_t(block_size) - 1) / std::size_t(block_size)); }
+  std::size_t first(int block) const { return std::size_t(block) * std::size_t(block_size); }
+  std::size_t end(int block) const { return std::min(points.size(), first(block + 1)); }
+  PointBlock block(int b) const { return PointBlock(points, patches).part(first(b), end(b)); }
+};
+
 class RadiosityEngine {
  public:
   RadiosityEngine(const Scene& scene, const std::vector<int>& owned_patches);
+
+  // The host's help (host_assist.h; not owned; null: none) for radiosity processor `rank`.
+  void use_host_assist(HostAssist* assist, int rank);
 
   // Step 1 of section 2.2: the held patch with the most unshot power.
   ShooterChoice best_shooter(WorkCounts& counts) const;
@@ -41,15 +60,18 @@ class RadiosityEngine {
   // The receivers' visibility points (element centres) and their patches.
   void visibility_points(const std::vector<ElementRef>& receivers, std::vector<Vec3>& points,
                          std::vector<int>& patches) const;
+  // The same cut into blocks of `block_size` for the visibility processors (section 3).
+  PointBlocks point_blocks(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                           int block_size) const;
   // Adds the shooter's light to each receiver through the parts its mask marks visible:
-  // form factor = sum of the point-to-part contour integrals (section 2.2). The form factors
-  // are computed on `threads` host threads, the light is added in receiver order, so the
-  // result does not depend on `threads`.
-  // `form_factors`, when given, are the receivers' receiver_form_factor values computed
-  // beforehand (by the host threads computing ahead, lookahead.h).
+  // form factor = sum of the point-to-part contour integrals (section 2.2). The light is
+  // added in receiver order.
   void gather(const Shooter& shooter, const std::vector<ElementRef>& receivers,
-              const std::vector<PartMask>& masks, WorkCounts& counts, int threads = 1,
-              const double* form_factors = nullptr);
+              const std::vector<PartMask>& masks, WorkCounts& counts);
+  // The same for block `block` of `blocks` (made from `receivers`), `masks` its answers.
+  void gather_block(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                    const PointBlocks& blocks, int block, const std::vector<PartMask>& masks,
+                    WorkCounts& counts);
   // Section 4.1, after the shot's light has been distributed: tests the elements that have
   // just received it and cuts those whose corner radiosities differ too much. A cut
   // element's children start from its radiosity before this shot (its share of the shot is
@@ -59,8 +81,8 @@ class RadiosityEngine {
   std::vector<ElementRef> subdivide(const std::vector<ElementRef>& shot,
                                     const SubdivisionOptions& options, long room,
                                     bool& out_of_room, WorkCounts& counts);
-  // The shooter's owner forgets the radiosity it has just shot.
-  void clear_unshot(int patch);
+  // After shooting `patch`: its holder forgets the radiosity it has just shot.
+  void finish_shot(int patch);
 
   const Scene& scene() const { return store_.scene(); }
   ElementStore& store() { return store_; }
@@ -72,7 +94,14 @@ class RadiosityEngine {
   const Rgb& element_radiosity(int e) const;
 
  private:
+  // gather's work; `form_factors`: the receivers' receiver_form_factor values computed
+  // beforehand (by the host, host_assist.h), or null.
+  void add_light(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                 const std::vector<PartMask>& masks, const double* form_factors,
+                 WorkCounts& counts);
+
   ElementStore store_;
+  HostAssist* assist_ = nullptr;
 };
 
 struct ProgressiveOptions {
@@ -83,6 +112,8 @@ struct ProgressiveOptions {
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged
   int host_threads = 0;                // host threads per compute step (0: all cores); no
+                                       // effect on any result, only on host time
+  bool reference_visibility = false;   // the readable definitions alone (occluder_set.h): no
                                        // effect on any result, only on host time
   SubdivisionOptions subdivision;      // section 4.1, off by default
 };
@@ -105,13 +136,13 @@ double receiver_form_factor(const Shooter& shooter, const Vec3& centre, const Ve
 bool has_converged(const ShooterChoice& best, double emitted_power, double fraction);
 
 // The visible parts of the shooter from each receiving element's centre (one mask per
-// receiver, in order), on `threads` host threads; adds the brute-force counts.
-std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const Occluders& occluders,
+// receiver, in order); adds the set's counts.
+std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const OccluderSet& occluders,
                                     const std::vector<ElementRef>& receivers,
-                                    const Shooter& shooter, WorkCounts& counts, int threads);
+                                    const Shooter& shooter, WorkCounts& counts);
 
-// The whole solution on the host, one processor, brute-force-equivalent visibility.
-ProgressiveRun run_progressive(RadiosityEngine& engine, const Occluders& occluders,
+// The whole solution on the host, one processor, without the simulated machine.
+ProgressiveRun run_progressive(RadiosityEngine& engine, const OccluderSet& occluders,
                                const ProgressiveOptions& options);
 
 }  // namespace ncube

@@ -7,7 +7,6 @@
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Engine.hpp>
 
-#include "radiosity/host_threads.h"
 
 namespace ncube {
 
@@ -25,39 +24,26 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
                           const std::vector<simgrid::s4u::Host*>& hosts) {
   const Scene& scene = setup.scene;
   const int R = setup.placement.radiosity_processors, V = setup.placement.visibility_processors;
-  const ProgressiveOptions& o = setup.options;
+  // The sets are read-only and the same for every group: built once and shared.
+  std::vector<std::vector<int>> patch_sets;
   if (V == 0) {
-    std::vector<int> all_patches(scene.patches.size());
-    std::iota(all_patches.begin(), all_patches.end(), 0);
-    programs.occluders.emplace_back(scene, all_patches, o.ray_policy, o.visibility);
+    patch_sets.emplace_back(scene.patches.size());
+    std::iota(patch_sets.back().begin(), patch_sets.back().end(), 0);
   }
-  for (int j = 0; j < V; ++j)
-    programs.occluders.emplace_back(scene, visibility_share(scene, V, j), o.ray_policy,
-                                    o.visibility);
-  const Occluders* all = V == 0 ? &programs.occluders.front() : nullptr;
-  // Host-side only: with visibility processors and more than one host thread, the blocks'
-  // answers and form factors are computed ahead on the other threads (lookahead.h).
-  const int threads = resolve_host_threads(o.host_threads);
-  if (V > 0 && threads > 1 && o.visibility == VisibilityMethod::kBruteForce) {
-    std::vector<const Occluders*> shares;
-    for (const Occluders& share : programs.occluders) shares.push_back(&share);
-    programs.lookahead = std::make_unique<Lookahead>(scene, shares, threads - 1);
-    for (Occluders& share : programs.occluders) share.use_lookahead(programs.lookahead.get());
-    // Guesses of the next shots need receivers that never change and do not depend on the
-    // shooter.
-    if (!setup.loads_change() && !o.skip_facing_away)
-      programs.lookahead->guess_shots(o.samples, setup.block_size, R);
-  }
+  for (int j = 0; j < V; ++j) patch_sets.push_back(visibility_share(scene, V, j));
+  build_host_machinery(programs.host, scene, patch_sets, setup.options, V, R, setup.block_size,
+                       setup.loads_change());
+  const OccluderSet* all = V == 0 ? programs.host.occluders.front().get() : nullptr;
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
     RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[std::size_t(rank)]);
-    RadiosityProcessor& rp =
-        programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all, programs.lookahead.get());
+    radiosity.use_host_assist(programs.host.assist.get(), rank);
+    RadiosityProcessor& rp = programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
     simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
                                 hosts[setup.placement.radiosity_node(rank)], [&rp] { rp.run(); });
     for (int j = 0; j < V; ++j) {
-      const Occluders& share = programs.occluders[std::size_t(j)];
+      const OccluderSet& share = *programs.host.occluders[std::size_t(j)];
       VisibilityProcessor& vp =
           programs.visibility.emplace_back(setup, programs.runtimes[next_runtime++], share);
       simgrid::s4u::Actor::create(

@@ -17,8 +17,8 @@
 #include "nodes/program_setup.h"
 #include "nodes/radiosity_processor.h"
 #include "nodes/visibility_processor.h"
-#include "radiosity/occluders.h"
 #include "radiosity/radiosity_engine.h"
+#include "simulation/host_machinery.h"
 #include "simulation/simulation_config.h"
 
 namespace ncube {
@@ -27,11 +27,11 @@ namespace ncube {
 struct NodePrograms {
   std::deque<NodeRuntime> runtimes;  // in node order
   std::deque<RadiosityEngine> engines;
-  std::deque<Occluders> occluders;
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
-  // Host threads computing ahead (lookahead.h); last, so that it stops first.
-  std::unique_ptr<Lookahead> lookahead;
+  // The occluder sets and the engines' host help (host_machinery.h); last, so that the
+  // host's threads stop first.
+  HostMachinery host;
 };
 
 // One runtime per node of `memory` (node order), each holding its planned bytes.

@@ -181,6 +181,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  "host threads for one run (0: all cores); results do not depend on it")
       ->capture_default_str()
       ->check(kDecimalInteger & CLI::Range(0, 1024));
+  app.add_flag("--reference-visibility", config.options.reference_visibility,
+               "answer every ray with the readable definitions alone (the paper's loop, or the "
+               "octree walk), one host thread, no answer cache, no lookahead: slow, and the "
+               "same result file as without it (docs/architecture.md)");
 
   try {
     app.parse(argc, argv);

@@ -1,23 +1,23 @@
-#include "radiosity/occluders.h"
+#include "host/fast_occluders.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
 
-#include "radiosity/answer_cache.h"
-#include "radiosity/host_threads.h"
-#include "radiosity/lookahead.h"
-#include "radiosity/octree.h"
+#include "host/answer_cache.h"
+#include "host/host_threads.h"
+#include "host/lookahead.h"
 
 namespace ncube {
-Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
-                     VisibilityMethod method)
+FastOccluders::FastOccluders(const Scene& scene, std::vector<int> patch_indices,
+                             RayTestPolicy policy, int threads)
     : policy_(policy),
+      threads_(threads),
+      patch_indices_(patch_indices),
       position_of_scene_patch_(scene.patches.size(), -1),
       cache_id_(AnswerCache::new_set_id()) {
-  if (method == VisibilityMethod::kOctree) octree_ = std::make_unique<const Octree>(scene, patch_indices);
-  side_tolerance_ = 1e-9 * (1.0 + scene_bounds(scene).diagonal());
+  side_tolerance_ = plane_side_tolerance(scene);  // the brute-force loop's
   // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
   // radians, too flat for single precision: the exact test alone decides them against that
   // plane's patches. Every other crossing is steep enough for Embree's padded quads
@@ -76,42 +76,29 @@ Occluders::Occluders(const Scene& scene, std::vector<int> patch_indices, RayTest
   }
   class_begin_[6] = int(axis_order_.size());
   for (int g : axis_order_) axis_offsets_.push_back(plane_offset_[std::size_t(g)]);
-  if (octree_) return;  // the brute-force machinery below is only the reference's
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
   if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
     set_bit_ = blockers_->register_set(patch_indices);
 }
 
-WorkCounts Occluders::build_work() const {
-  WorkCounts work;
-  if (octree_) {
-    work.octree_overlap_tests = octree_->build_counts().overlap_tests;
-    work.octree_cells_built = octree_->build_counts().cells;
-  }
-  return work;
-}
-
-Occluders::~Occluders() {
+FastOccluders::~FastOccluders() {
   if (set_bit_ >= 0) blockers_->unregister_set(set_bit_);
   blockers_->answer_cache().forget_set(cache_id_);
 }
 
-std::shared_ptr<const Occluders::TargetSides> Occluders::target_sides(const Shooter& shooter) const {
-  const int m = shooter.part_count;
-  if (sides_ && sides_->part_count == m && sides_->ray_targets.patch == shooter.patch &&
-      std::equal(shooter.targets.begin(), shooter.targets.begin() + m, sides_->targets.begin()))
-    return sides_;
+std::shared_ptr<const FastOccluders::TargetSides> FastOccluders::target_sides(const Shooter& shooter) const {
+  if (sides_ && sides_->shooter.is(shooter)) return sides_;
   sides_ = sides_for(shooter);
   return sides_;
 }
 
-std::shared_ptr<const Occluders::TargetSides> Occluders::sides_for(const Shooter& shooter) const {
+std::shared_ptr<const FastOccluders::TargetSides> FastOccluders::sides_for(const Shooter& shooter) const {
   const int m = shooter.part_count;
   auto made = std::make_shared<TargetSides>();
   TargetSides& sides = *made;
   const std::size_t planes = plane_size_.size();
+  sides.shooter = ShooterKey(shooter);
   sides.part_count = m;
-  sides.targets = shooter.targets;
   sides.in_front_tests.assign(planes, 0);
   sides.behind_tests.assign(planes, 0);
   sides.in_front.assign(planes, 0);
@@ -142,7 +129,7 @@ std::shared_ptr<const Occluders::TargetSides> Occluders::sides_for(const Shooter
   return made;
 }
 
-void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
+void FastOccluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const Shooter& shooter,
                                   int receiver_position, int shooter_position, PartMask& blocked,
                                   int* first) const {
   // The plane's patches share its normal and offset, so the test's first half (where the ray
@@ -167,7 +154,7 @@ void Occluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, const
   }
 }
 
-std::int64_t Occluders::crossings_over_planes(const Vec3& point, const TargetSides& sides) const {
+std::int64_t FastOccluders::crossings_over_planes(const Vec3& point, const TargetSides& sides) const {
   // A point in front of a plane is crossed by the rays to the targets behind it, and the
   // other way round.
   std::int64_t crossings = 0;
@@ -197,7 +184,7 @@ std::int64_t Occluders::crossings_over_planes(const Vec3& point, const TargetSid
   return crossings;
 }
 
-void Occluders::first_blocker_counts(const PartMask* crossing, const int* first, int m,
+void FastOccluders::first_blocker_counts(const PartMask* crossing, const int* first, int m,
                                      int receiver_position, int shooter_position,
                                      WorkCounts& counts) const {
   // The loop of ray k tests positions 0 .. end_k - 1 (end_k: its first blocker + 1, or all
@@ -227,7 +214,7 @@ void Occluders::first_blocker_counts(const PartMask* crossing, const int* first,
   counts.plane_crossings += crossings;
 }
 
-PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
+PartMask FastOccluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            const TargetSides& sides, const SceneBlockers::Lists* lists,
                            const SceneBlockers::SetMasks* masks, std::size_t index,
                            WorkCounts& counts) const {
@@ -299,107 +286,66 @@ PartMask Occluders::answer(const Vec3& point, int receiver_patch, const Shooter&
   return all & ~blocked;
 }
 
-PartMask Occluders::unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
-                                    WorkCounts& counts) const {
-  PartMask mask = 0;
-  unblocked_parts(&point, &receiver_patch, 1, shooter, &mask, counts, 1);
-  return mask;
-}
-
-void Occluders::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
-                                const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                                int threads) const {
+void FastOccluders::unblocked_parts(const PointBlock& block, const Shooter& shooter,
+                                    PartMask* masks, WorkCounts& counts) const {
   // A block posted to the host threads computing ahead: computed once for the group's sets.
-  if (lookahead_ && lookahead_->answers(*this, shooter, points, receiver_patches, count, masks, counts))
-    return;
+  if (lookahead_ && lookahead_->answers(*this, shooter, block, masks, counts)) return;
   // A block asked about before for the same shooter: the same answers and counts as then
   // (answer_cache.h; the points are compared, not assumed unchanged).
-  if (remembered(shooter, points, receiver_patches, count, masks, counts)) return;
+  if (remembered(shooter, block, masks, counts)) return;
   WorkCounts block_counts;
-  answer_block(points, receiver_patches, count, shooter, masks, block_counts, threads);
+  answer_block(block, shooter, masks, block_counts);
   counts += block_counts;
-  remember(shooter, points, receiver_patches, count, masks, block_counts);
+  remember(shooter, block, masks, block_counts);
 }
 
-bool Occluders::remembered(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
-                           std::size_t count, PartMask* masks, WorkCounts& counts) const {
-  return blockers_->answer_cache().find(cache_id_, shooter, points, receiver_patches, count, masks,
-                                        counts);
+bool FastOccluders::remembered(const Shooter& shooter, const PointBlock& block, PartMask* masks,
+                               WorkCounts& counts) const {
+  return blockers_->answer_cache().find(cache_id_, shooter, block, masks, counts);
 }
 
-void Occluders::remember(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
-                         std::size_t count, const PartMask* masks, const WorkCounts& counts) const {
-  blockers_->answer_cache().store(cache_id_, shooter, points, receiver_patches, count, masks, counts);
+void FastOccluders::remember(const Shooter& shooter, const PointBlock& block, const PartMask* masks,
+                             const WorkCounts& counts) const {
+  blockers_->answer_cache().store(cache_id_, shooter, block, masks, counts);
 }
 
-void Occluders::answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
-                             const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                             int threads) const {
-  if (octree_) {
-    octree_->unblocked_parts(points, receiver_patches, count, shooter, masks, counts, threads);
-    return;
-  }
+void FastOccluders::answer_block(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                                 WorkCounts& counts) const {
   const std::shared_ptr<const TargetSides> sides = target_sides(shooter);  // before the threads start
   SharedBlock shared;
   if (uses_masks() && !patches_.empty())
-    shared.set_masks = blockers_->blocked_sets(points, receiver_patches, count, shooter, threads);
+    shared.set_masks = blockers_->blocked_sets(block, shooter, threads_);
   else if (uses_lists() && !patches_.empty())
-    shared.lists = blockers_->blockers(points, receiver_patches, count, shooter, threads,
-                                       /*memo=*/!whole_scene_ && count > 1);
-  answer_points(points, receiver_patches, count, shooter, *sides, shared, masks, counts, threads);
+    shared.lists = blockers_->blockers(block, shooter, threads_,
+                                       /*memo=*/!whole_scene_ && block.count > 1);
+  answer_points(block, shooter, *sides, shared, masks, counts, threads_);
 }
 
-void Occluders::answer_block_here(const Vec3* points, const int* receiver_patches,
-                                  std::size_t count, const Shooter& shooter,
-                                  const TargetSides& sides, SharedBlock& shared, PartMask* masks,
-                                  WorkCounts& counts) const {
+void FastOccluders::answer_block_here(const PointBlock& block, const Shooter& shooter,
+                                      const TargetSides& sides, SharedBlock& shared,
+                                      PartMask* masks, WorkCounts& counts) const {
   if (uses_masks() && !patches_.empty() && !shared.set_masks)
-    shared.set_masks = blockers_->blocked_sets_here(points, receiver_patches, count, shooter);
+    shared.set_masks = blockers_->blocked_sets_here(block, shooter);
   else if (uses_lists() && !patches_.empty() && !shared.lists)
-    shared.lists = blockers_->blockers(points, receiver_patches, count, shooter, 1, /*memo=*/false);
-  answer_points(points, receiver_patches, count, shooter, sides, shared, masks, counts, 1);
+    shared.lists = blockers_->blockers(block, shooter, 1, /*memo=*/false);
+  answer_points(block, shooter, sides, shared, masks, counts, 1);
 }
 
-void Occluders::answer_points(const Vec3* points, const int* receiver_patches, std::size_t count,
-                              const Shooter& shooter, const TargetSides& sides,
-                              const SharedBlock& shared, PartMask* masks, WorkCounts& counts,
-                              int threads) const {
+void FastOccluders::answer_points(const PointBlock& block, const Shooter& shooter,
+                                  const TargetSides& sides, const SharedBlock& shared,
+                                  PartMask* masks, WorkCounts& counts, int threads) const {
   const SceneBlockers::Lists* lists = uses_lists() ? shared.lists.get() : nullptr;
   const SceneBlockers::SetMasks* set_masks = uses_masks() ? shared.set_masks.get() : nullptr;
   std::mutex merge;
   // Whole-scene answers cost an Embree query per point; the others only read memos.
   const std::size_t grain = lists || set_masks ? 64 : 8;
-  parallel_chunks(threads, count, grain, [&](std::size_t begin, std::size_t end) {
+  parallel_chunks(threads, block.count, grain, [&](std::size_t begin, std::size_t end) {
     WorkCounts local;
     for (std::size_t k = begin; k < end; ++k)
-      masks[k] = answer(points[k], receiver_patches[k], shooter, sides, lists, set_masks, k, local);
+      masks[k] = answer(block.points[k], block.patches[k], shooter, sides, lists, set_masks, k, local);
     const std::lock_guard<std::mutex> lock(merge);
     counts += local;  // integer sums: the same whatever the order
   });
-}
-
-PartMask Occluders::unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
-                                                const Shooter& shooter, WorkCounts& counts) const {
-  PartMask visible = 0;
-  for (int part = 0; part < shooter.part_count; ++part) {
-    const Vec3& target = shooter.targets[part];
-    const Vec3 delta = target - point;
-    bool blocked = false;
-    for (const PatchCandidate& c : patches_) {
-      if (c.scene_index == receiver_patch || c.scene_index == shooter.patch) continue;
-      ++counts.ray_patch_tests;
-      const double nx = c.normal.x, ny = c.normal.y, nz = c.normal.z, d = c.plane_offset;
-      if (side_of(nx, ny, nz, d, point) * side_of(nx, ny, nz, d, target) < 0)
-        ++counts.plane_crossings;
-      if (segment_crosses(c, point, delta)) {
-        blocked = true;
-        if (policy_ == RayTestPolicy::kStopAtFirstBlocker) break;
-      }
-    }
-    ++counts.rays;
-    if (!blocked) visible |= PartMask(1) << part;
-  }
-  return visible;
 }
 
 }  // namespace ncube

@@ -1,4 +1,5 @@
-#include "radiosity/occluders.h"
+#include "host/fast_occluders.h"
+#include "visibility/brute_force_occluders.h"
 
 #include <gtest/gtest.h>
 #include <random>
@@ -47,7 +48,8 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
   std::vector<int> share;
   for (int i = 1; i < int(all.size()); i += 3) share.push_back(i);
   for (const auto& set : {all, share}) {
-    const Occluders occluders(scene, set, policy);
+    const FastOccluders occluders(scene, set, policy);
+    const BruteForceOccluders brute_force(scene, set, policy);
     int blocked_rays = 0, visible_rays = 0;
     std::uint64_t tests = 0, crossings = 0;
     for (int shooter_patch = 0; shooter_patch < 12; ++shooter_patch) {
@@ -58,7 +60,7 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
         WorkCounts fast, slow;
         const PartMask a = occluders.unblocked_parts(element.centre, element.patch, shooter, fast);
         const PartMask b =
-            occluders.unblocked_parts_brute_force(element.centre, element.patch, shooter, slow);
+            brute_force.unblocked_parts(element.centre, element.patch, shooter, slow);
         ASSERT_EQ(a, b) << "element " << e << " shooter " << shooter_patch;
         ASSERT_EQ(fast, slow) << "element " << e << " shooter " << shooter_patch;
         tests += slow.ray_patch_tests;
@@ -77,20 +79,21 @@ void expect_same_as_brute_force(RayTestPolicy policy, unsigned seed) {
   }
 }
 
-TEST(Occluders, HostAnswersGiveBruteForceAnswersAndCountsWhenTestingAllPatches) {
+TEST(FastOccluders, HostAnswersGiveBruteForceAnswersAndCountsWhenTestingAllPatches) {
   for (unsigned seed : {1u, 2u, 3u}) expect_same_as_brute_force(RayTestPolicy::kTestAllPatches, seed);
 }
 
-TEST(Occluders, HostAnswersGiveBruteForceAnswersAndCountsWhenStoppingAtFirstBlocker) {
+TEST(FastOccluders, HostAnswersGiveBruteForceAnswersAndCountsWhenStoppingAtFirstBlocker) {
   for (unsigned seed : {4u, 5u, 6u})
     expect_same_as_brute_force(RayTestPolicy::kStopAtFirstBlocker, seed);
 }
 
-TEST(Occluders, EachRayIsTestedAgainstAllOtherPatches) {
+TEST(FastOccluders, EachRayIsTestedAgainstAllOtherPatches) {
   const Scene scene = random_scene(7, 50);
   std::vector<int> all(50);
   for (int i = 0; i < 50; ++i) all[i] = i;
-  const Occluders occluders(scene, all, RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(scene, all, RayTestPolicy::kTestAllPatches);
+    const BruteForceOccluders brute_force(scene, all, RayTestPolicy::kTestAllPatches);
   const Shooter shooter = make_shooter(scene, 3, Rgb(1.0), 64);
   WorkCounts counts;
   occluders.unblocked_parts(scene.elements[0].centre, 0, shooter, counts);
@@ -109,9 +112,10 @@ Scene wall_scene() {
   return scene;
 }
 
-TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
+TEST(FastOccluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
   const Scene scene = wall_scene();
-  const Occluders occluders(scene, {0}, RayTestPolicy::kTestAllPatches);
+  const FastOccluders occluders(scene, {0}, RayTestPolicy::kTestAllPatches);
+    const BruteForceOccluders brute_force(scene, {0}, RayTestPolicy::kTestAllPatches);
   Shooter shooter;
   shooter.patch = -1;
   shooter.part_count = 2;
@@ -121,7 +125,7 @@ TEST(Occluders, SegmentTestFindsACrossingSquareAndIgnoresTheEndpoints) {
   EXPECT_EQ(occluders.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, counts), PartMask(2));
 }
 
-TEST(Occluders, CountsARayAsAPlaneCrossingWhenItsEndsLieOnOppositeSides) {
+TEST(FastOccluders, CountsARayAsAPlaneCrossingWhenItsEndsLieOnOppositeSides) {
   // The wall x = 0, |y|, |z| <= 1. From (-1, 0, 0): the first ray goes through the wall, the
   // second stays on its side, the third crosses its plane beside it (no hit, but the loop
   // still computes the hit point and tests the edges), the fourth ends in the plane.
@@ -134,17 +138,18 @@ TEST(Occluders, CountsARayAsAPlaneCrossingWhenItsEndsLieOnOppositeSides) {
   shooter.targets[2] = Vec3(1, 0, 5);
   shooter.targets[3] = Vec3(0, 0, 5);
   for (RayTestPolicy policy : {RayTestPolicy::kTestAllPatches, RayTestPolicy::kStopAtFirstBlocker}) {
-    const Occluders occluders(scene, {0}, policy);
+    const FastOccluders occluders(scene, {0}, policy);
+    const BruteForceOccluders brute_force(scene, {0}, policy);
     WorkCounts counts, reference;
     EXPECT_EQ(occluders.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, counts), PartMask(0b1110));
-    occluders.unblocked_parts_brute_force(Vec3(-1, 0, 0), -1, shooter, reference);
+    brute_force.unblocked_parts(Vec3(-1, 0, 0), -1, shooter, reference);
     EXPECT_EQ(counts.ray_patch_tests, 4u);
     EXPECT_EQ(counts.plane_crossings, 2u);
     EXPECT_EQ(counts, reference);
   }
 }
 
-TEST(Occluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
+TEST(FastOccluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
   // panel_room.h: blockers a tenth of a pad from a ray's start or end, which Embree is not
   // asked about: the whole scene (one Embree query, or lists for the first-blocker loop)
   // and a share holding the panels (a registered set's bits, or lists) all find them.
@@ -152,7 +157,8 @@ TEST(Occluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
   const std::vector<int> all{0, 1, 2, 3}, panels{kPanelRoomStanding, kPanelRoomHanging};
   for (RayTestPolicy policy : {RayTestPolicy::kTestAllPatches, RayTestPolicy::kStopAtFirstBlocker})
     for (const auto& set : {all, panels}) {
-      const Occluders occluders(scene, set, policy);
+      const FastOccluders occluders(scene, set, policy);
+    const BruteForceOccluders brute_force(scene, set, policy);
       for (const PanelRoomCase& c : panel_room_cases()) {
         Shooter shooter;
         shooter.patch = kPanelRoomLight;
@@ -161,7 +167,7 @@ TEST(Occluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
         WorkCounts counts, reference;
         const PartMask visible = PartMask(0b111 & ~c.blocked_rays);
         EXPECT_EQ(occluders.unblocked_parts(c.point, kPanelRoomFloor, shooter, counts), visible);
-        EXPECT_EQ(occluders.unblocked_parts_brute_force(c.point, kPanelRoomFloor, shooter, reference),
+        EXPECT_EQ(brute_force.unblocked_parts(c.point, kPanelRoomFloor, shooter, reference),
                   visible);
         EXPECT_EQ(counts, reference);
       }

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/polygon.h"
+#include "scene/scene.h"
 
 namespace ncube {
 
@@ -30,6 +31,12 @@ inline void grown_box(const PatchCandidate& c, double margin, Vec3& lo, Vec3& hi
   }
   lo -= Vec3(margin);
   hi += Vec3(margin);
+}
+
+// Distances from a plane within this count as "on the plane" in the loop's side tests (plane
+// crossings): relative to the scene's size.
+inline double plane_side_tolerance(const Scene& scene) {
+  return 1e-9 * (1.0 + scene_bounds(scene).diagonal());
 }
 
 // Ends of a shadow ray lie on the receiver and on the shooter; a relative margin keeps the

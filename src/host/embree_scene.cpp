@@ -1,4 +1,4 @@
-#include "radiosity/embree_scene.h"
+#include "host/embree_scene.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "radiosity/host_threads.h"
+#include "host/host_threads.h"
 
 #include <omp.h>
 

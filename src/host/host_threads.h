@@ -1,7 +1,11 @@
 // The host's threads for one compute step of a node program (a radiosity processor's
 // receivers, a visibility processor's block of points). Host threads only share out work
 // whose items are independent, so no answer, count or result depends on how many there are.
+// Contract (host side): no answer, count or result depends on the number of threads
+// (tests/host_threads_test.sh).
 #pragma once
+
+#include "host/host_side.h"
 
 #include <cstddef>
 #include <functional>

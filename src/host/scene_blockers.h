@@ -7,6 +7,7 @@
 // the exact test says for that share's patches; no count depends on it). Shares testing all
 // patches need only "does my share block this ray": they register as sets and get one bit
 // per set and ray (cheaper than lists of every blocker, which first-blocker sets read).
+// Contract (host side): it changes no answer and no count (tests/fast_occluders_scenes_test.cpp).
 #pragma once
 
 #include <cstddef>
@@ -15,8 +16,10 @@
 #include <memory>
 #include <vector>
 
-#include "radiosity/answer_cache.h"
-#include "radiosity/embree_scene.h"
+#include "host/answer_cache.h"
+#include "host/embree_scene.h"
+#include "host/host_side.h"
+#include "host/question_key.h"
 #include "scene/scene.h"
 
 namespace ncube {
@@ -45,9 +48,8 @@ class SceneBlockers {
   };
   // Computed on `threads` host threads; with `memo`, a block asked about before (same
   // points, same shooter) is answered from memory. Not to be called from two threads at once.
-  std::shared_ptr<const Lists> blockers(const Vec3* points, const int* receiver_patches,
-                                        std::size_t count, const Shooter& shooter, int threads,
-                                        bool memo) const;
+  std::shared_ptr<const Lists> blockers(const PointBlock& block, const Shooter& shooter,
+                                        int threads, bool memo) const;
 
   // Cheaper when only "does my set block it" is asked (a share, testing all patches): sets
   // of patches registered here (up to 64 at a time; -1 when full) get one bit each, and
@@ -61,37 +63,30 @@ class SceneBlockers {
     // that each of the V shares reads its answer in one word)
     std::vector<PartMask> blocked;
   };
-  std::shared_ptr<const SetMasks> blocked_sets(const Vec3* points, const int* receiver_patches,
-                                               std::size_t count, const Shooter& shooter,
+  std::shared_ptr<const SetMasks> blocked_sets(const PointBlock& block, const Shooter& shooter,
                                                int threads) const;
   // The same without the memo, on the calling thread only: safe on several host threads at
   // once (for the threads computing ahead, lookahead.h). So is blockers(..., 1, false).
-  std::shared_ptr<const SetMasks> blocked_sets_here(const Vec3* points,
-                                                    const int* receiver_patches,
-                                                    std::size_t count,
+  std::shared_ptr<const SetMasks> blocked_sets_here(const PointBlock& block,
                                                     const Shooter& shooter) const {
-    return compute_sets(points, receiver_patches, count, shooter, 1);
+    return compute_sets(block, shooter, 1);
   }
 
  private:
   struct Entry {
     int kind;               // 0: lists, 1: set masks
     std::uint64_t version;  // of the registered sets (masks only)
-    int shooter_patch, part_count;
-    std::vector<Vec3> targets, points;
-    std::vector<int> receiver_patches;
+    ShooterKey shooter;
+    BlockKey block;
     std::shared_ptr<const Lists> lists;
     std::shared_ptr<const SetMasks> masks;
   };
   // The memo entry for this block, or null.
-  Entry* find(int kind, const Vec3* points, const int* receiver_patches, std::size_t count,
-              const Shooter& shooter) const;
+  Entry* find(int kind, const PointBlock& block, const Shooter& shooter) const;
   void remember(Entry entry) const;
-  std::shared_ptr<const Lists> compute(const Vec3* points, const int* receiver_patches,
-                                       std::size_t count, const Shooter& shooter,
+  std::shared_ptr<const Lists> compute(const PointBlock& block, const Shooter& shooter,
                                        int threads) const;
-  std::shared_ptr<const SetMasks> compute_sets(const Vec3* points, const int* receiver_patches,
-                                               std::size_t count, const Shooter& shooter,
+  std::shared_ptr<const SetMasks> compute_sets(const PointBlock& block, const Shooter& shooter,
                                                int threads) const;
 
   double scale_;

@@ -18,9 +18,11 @@
 // Its answers go to the answer cache (answer_cache.h) for when the patch is shot; a wrong
 // guess costs only host time that would have been idle.
 //
-// Nothing simulated depends on it: every answer, count and form factor is the one the node
-// program would compute itself (the same functions, the same inputs; tested bit for bit),
-// and the simulated machine is charged for the counts whoever computed them.
+// Contract (host side): nothing simulated depends on it. Every answer, count and form factor
+// is the one the node program would compute itself (the same functions, the same inputs;
+// tested bit for bit), and the simulated machine is charged for the counts whoever computed
+// them. It reaches the simulated program only through HostAssist (radiosity/host_assist.h)
+// and through the shares' batch calls (fast_occluders.h).
 #pragma once
 
 #include <atomic>
@@ -33,19 +35,21 @@
 #include <unordered_map>
 #include <vector>
 
-#include "radiosity/occluders.h"
+#include "host/fast_occluders.h"
+#include "host/host_side.h"
+#include "host/threaded_assist.h"
 #include "radiosity/shooter.h"
 #include "radiosity/work_counts.h"
 #include "scene/scene.h"
 
 namespace ncube {
 
-class Lookahead {
+class Lookahead : public ThreadedAssist {
  public:
   // `shares`: the sets every block is asked about (the V visibility processors' shares, the
   // same for every group; not owned). `workers` >= 1 host threads besides the main one.
-  Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers);
-  ~Lookahead();  // stops the workers (blocks still posted are dropped)
+  Lookahead(const Scene& scene, std::vector<const FastOccluders*> shares, int workers);
+  ~Lookahead() override;  // stops the workers (blocks still posted are dropped)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
 
@@ -55,16 +59,26 @@ class Lookahead {
   std::shared_ptr<Shot> post(const Shooter& shooter, const std::vector<Vec3>& points,
                              const std::vector<int>& patches, int block_size);
 
-  // When a posted block has exactly these points, patches and shooter and `set` is one of
-  // the shares: writes the set's answers to masks[0 .. count), adds its counts and returns
-  // true (false: not posted; the caller computes it).
-  bool answers(const Occluders& set, const Shooter& shooter, const Vec3* points,
-               const int* patches, std::size_t count, PartMask* masks, WorkCounts& counts);
+  // When a posted block has exactly these points, patches and shooter (question_key.h) and
+  // `set` is one of the shares: writes the set's answers to masks[0 .. count), adds its
+  // counts and returns true (false: not posted; the caller computes it).
+  bool answers(const FastOccluders& set, const Shooter& shooter, const PointBlock& block,
+               PartMask* masks, WorkCounts& counts);
 
   // The receivers' form factors (receiver_form_factor) of block `block` of `shot`, when
   // `visible` (count masks) is the block's visibility (the AND of the shares' answers);
   // null otherwise.
   const double* form_factors(Shot& shot, int block, const PartMask* visible, std::size_t count);
+
+  // HostAssist: the blocks are posted, their form factors taken from here, and the engines'
+  // receivers and unshot power feed the guesses.
+  std::shared_ptr<PostedShot> blocks_to_send(const Shooter& shooter, const std::vector<Vec3>& points,
+                                             const std::vector<int>& patches,
+                                             int block_size) override;
+  const double* form_factors(PostedShot& shot, int block, const PartMask* visible,
+                             std::size_t count) override;
+  void engine_started(int rank, const RadiosityEngine& engine) override;
+  void shot_finished(const RadiosityEngine& engine) override;
 
   int workers() const { return int(threads_.size()); }
 
@@ -85,15 +99,14 @@ class Lookahead {
   void compute(Shot& shot, Block& block);                  // the block's answers and form factors
   // Every share's answers (answers[s * n + k]) and counts for n points, as its batch call.
   void answer_shares(const Shooter& shooter,
-                     const std::vector<std::shared_ptr<const Occluders::TargetSides>>& sides,
-                     const Vec3* points, const int* patches, std::size_t n, PartMask* answers,
-                     WorkCounts* counts) const;
+                     const std::vector<std::shared_ptr<const FastOccluders::TargetSides>>& sides,
+                     const PointBlock& block, PartMask* answers, WorkCounts* counts) const;
   void finish(Block& block);                               // done: wake those waiting
   void complete(Shot& shot, Block& block);                 // done when it returns
   // Under mutex_: the next block of a guessed shot (false: no guess to work on).
   struct GuessBlock {
     std::shared_ptr<const Shooter> shooter;
-    std::shared_ptr<const std::vector<std::shared_ptr<const Occluders::TargetSides>>> sides;
+    std::shared_ptr<const std::vector<std::shared_ptr<const FastOccluders::TargetSides>>> sides;
     std::vector<Vec3> points;
     std::vector<int> patches;
   };
@@ -101,7 +114,7 @@ class Lookahead {
   void compute_guess(const GuessBlock& block);
 
   const Scene& scene_;
-  std::vector<const Occluders*> shares_;
+  std::vector<const FastOccluders*> shares_;
   // The form factors of blocks shot before (a repeated shot has the same) are kept in the
   // scene's answer cache under this id.
   std::shared_ptr<const SceneBlockers> blockers_;
@@ -128,13 +141,14 @@ class Lookahead {
   std::vector<std::thread> threads_;
 };
 
-class Lookahead::Shot {
+class Lookahead::Shot : public HostAssist::PostedShot {
  private:
   friend class Lookahead;
   Shooter shooter_;
+  ShooterKey key_;
   std::vector<Vec3> points_;
   std::vector<int> patches_;
-  std::vector<std::shared_ptr<const Occluders::TargetSides>> sides_;  // per share
+  std::vector<std::shared_ptr<const FastOccluders::TargetSides>> sides_;  // per share
   std::vector<std::unique_ptr<Block>> blocks_;
   std::size_t next_unclaimed_ = 0;  // under owner_->mutex_
 };

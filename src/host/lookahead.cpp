@@ -1,10 +1,10 @@
-#include "radiosity/lookahead.h"
+#include "host/lookahead.h"
 
 #include <algorithm>
 #include <cstring>
 #include <pthread.h>
 
-#include "radiosity/answer_cache.h"
+#include "host/answer_cache.h"
 #include "radiosity/radiosity_engine.h"
 
 namespace ncube {
@@ -22,17 +22,10 @@ struct Lookahead::Block {
   std::vector<double> form_factors;
 };
 
-namespace {
 
-bool same_shooter(const Shooter& a, const Shooter& b) {
-  return a.patch == b.patch && a.part_count == b.part_count &&
-         std::memcmp(a.targets.data(), b.targets.data(), std::size_t(a.part_count) * sizeof(Vec3)) == 0;
-}
-
-}  // namespace
-
-Lookahead::Lookahead(const Scene& scene, std::vector<const Occluders*> shares, int workers)
-    : scene_(scene),
+Lookahead::Lookahead(const Scene& scene, std::vector<const FastOccluders*> shares, int workers)
+    : ThreadedAssist(std::max(1, workers) + 1),
+      scene_(scene),
       shares_(std::move(shares)),
       blockers_(SceneBlockers::for_scene(scene)),
       form_factor_set_(AnswerCache::new_set_id()),
@@ -63,16 +56,17 @@ std::shared_ptr<Lookahead::Shot> Lookahead::post(const Shooter& shooter,
                                                  int block_size) {
   auto shot = std::make_shared<Shot>();
   shot->shooter_ = shooter;
+  shot->key_ = ShooterKey(shooter);
   shot->points_ = points;
   shot->patches_ = patches;
   // The sides of the shooter's targets, once per share (main thread: the sets keep the last).
-  for (const Occluders* share : shares_) shot->sides_.push_back(share->target_sides(shooter));
+  for (const FastOccluders* share : shares_) shot->sides_.push_back(share->target_sides(shooter));
   const std::size_t size = std::size_t(std::max(1, block_size));
   for (std::size_t first = 0; first < points.size(); first += size) {
     auto block = std::make_unique<Block>();
     block->first = first;
     block->count = std::min(size, points.size() - first);
-    block->hash = hash_points(points.data() + first, patches.data() + first, block->count);
+    block->hash = question_hash(PointBlock(points, patches).part(first, first + block->count));
     shot->blocks_.push_back(std::move(block));
   }
   {
@@ -196,8 +190,8 @@ bool Lookahead::next_guess_block(GuessBlock& block) {
     if (best < 0) return false;
     guessed_patch_[std::size_t(best)] = 1;
     auto shooter = std::make_shared<Shooter>(make_shooter(scene_, best, Rgb(0.0), samples_));
-    auto sides = std::make_shared<std::vector<std::shared_ptr<const Occluders::TargetSides>>>();
-    for (const Occluders* share : shares_) sides->push_back(share->sides_for(*shooter));
+    auto sides = std::make_shared<std::vector<std::shared_ptr<const FastOccluders::TargetSides>>>();
+    for (const FastOccluders* share : shares_) sides->push_back(share->sides_for(*shooter));
     guess_.shooter = shooter;
     guess_.sides = sides;
     guess_rank_ = 0;
@@ -209,47 +203,46 @@ void Lookahead::compute_guess(const GuessBlock& block) {
   const std::size_t n = block.points.size();
   std::vector<PartMask> answers(shares_.size() * n);
   std::vector<WorkCounts> counts(shares_.size());
-  answer_shares(*block.shooter, *block.sides, block.points.data(), block.patches.data(), n,
+  answer_shares(*block.shooter, *block.sides, PointBlock(block.points, block.patches),
                 answers.data(), counts.data());
 }
 
 void Lookahead::answer_shares(const Shooter& shooter,
-                              const std::vector<std::shared_ptr<const Occluders::TargetSides>>& sides,
-                              const Vec3* points, const int* patches, std::size_t n,
-                              PartMask* answers, WorkCounts* counts) const {
-  // Exactly what each share's batch call does (occluders.h): its remembered answers, or the
-  // computation from the block's scene-wide answers, computed once for all shares.
-  Occluders::SharedBlock shared;
+                              const std::vector<std::shared_ptr<const FastOccluders::TargetSides>>& sides,
+                              const PointBlock& block, PartMask* answers, WorkCounts* counts) const {
+  // Exactly what each share's batch call does (fast_occluders.h): its remembered answers, or
+  // the computation from the block's scene-wide answers, computed once for all shares.
+  FastOccluders::SharedBlock shared;
   for (std::size_t s = 0; s < shares_.size(); ++s) {
-    const Occluders& set = *shares_[s];
-    PartMask* masks = answers + s * n;
-    if (set.remembered(shooter, points, patches, n, masks, counts[s])) continue;
-    set.answer_block_here(points, patches, n, shooter, *sides[s], shared, masks, counts[s]);
-    set.remember(shooter, points, patches, n, masks, counts[s]);
+    const FastOccluders& set = *shares_[s];
+    PartMask* masks = answers + s * block.count;
+    if (set.remembered(shooter, block, masks, counts[s])) continue;
+    set.answer_block_here(block, shooter, *sides[s], shared, masks, counts[s]);
+    set.remember(shooter, block, masks, counts[s]);
   }
 }
 
 void Lookahead::compute(Shot& shot, Block& block) {
   const std::size_t n = block.count;
-  const Vec3* points = shot.points_.data() + block.first;
-  const int* patches = shot.patches_.data() + block.first;
+  const PointBlock asked = PointBlock(shot.points_, shot.patches_).part(block.first, block.first + n);
+  const Vec3* points = asked.points;
+  const int* patches = asked.patches;
   const Shooter& shooter = shot.shooter_;
   block.answers.assign(shares_.size() * n, 0);
   block.counts.assign(shares_.size(), WorkCounts{});
-  answer_shares(shooter, shot.sides_, points, patches, n, block.answers.data(),
-                block.counts.data());
+  answer_shares(shooter, shot.sides_, asked, block.answers.data(), block.counts.data());
   block.visible.assign(n, shooter.all_parts());
   for (std::size_t s = 0; s < shares_.size(); ++s)
     for (std::size_t k = 0; k < n; ++k) block.visible[k] &= block.answers[s * n + k];
   block.form_factors.resize(n);
   AnswerCache& cache = blockers_->answer_cache();
-  if (cache.find_values(form_factor_set_, shooter, points, patches, n, block.visible.data(),
+  if (cache.find_values(form_factor_set_, shooter, asked, block.visible.data(),
                         block.form_factors.data()))
     return;
   for (std::size_t k = 0; k < n; ++k)
     block.form_factors[k] = receiver_form_factor(
         shooter, points[k], scene_.patches[std::size_t(patches[k])].normal, block.visible[k]);
-  cache.store_values(form_factor_set_, shooter, points, patches, n, block.visible.data(),
+  cache.store_values(form_factor_set_, shooter, asked, block.visible.data(),
                      block.form_factors.data());
 }
 
@@ -285,17 +278,19 @@ void Lookahead::complete(Shot& shot, Block& block) {
   }
 }
 
-bool Lookahead::answers(const Occluders& set, const Shooter& shooter, const Vec3* points,
-                        const int* patches, std::size_t count, PartMask* masks,
-                        WorkCounts& counts) {
+bool Lookahead::answers(const FastOccluders& set, const Shooter& shooter, const PointBlock& asked,
+                        PartMask* masks, WorkCounts& counts) {
+  const std::size_t count = asked.count;
   const auto share = std::find(shares_.begin(), shares_.end(), &set);
   if (share == shares_.end() || count == 0) return false;
   std::shared_ptr<Shot> shot;
   Block* found = nullptr;
+  // The same question (question_key.h): the shooter's and the block's bits.
   const auto is_asked = [&](const Shot& s, const Block& b) {
-    return b.count == count && same_shooter(s.shooter_, shooter) &&
-           std::memcmp(s.points_.data() + b.first, points, count * sizeof(Vec3)) == 0 &&
-           std::memcmp(s.patches_.data() + b.first, patches, count * sizeof(int)) == 0;
+    if (b.count != count || !s.key_.is(shooter)) return false;
+    const PointBlock posted = PointBlock(s.points_, s.patches_).part(b.first, b.first + b.count);
+    return std::memcmp(posted.points, asked.points, count * sizeof(Vec3)) == 0 &&
+           std::memcmp(posted.patches, asked.patches, count * sizeof(int)) == 0;
   };
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -305,7 +300,7 @@ bool Lookahead::answers(const Occluders& set, const Shooter& shooter, const Vec3
       found = last_found_.block;
     }
     if (!found) {
-      auto [begin, end] = posted_.equal_range(hash_points(points, patches, count));
+      auto [begin, end] = posted_.equal_range(question_hash(asked));
       for (auto it = begin; it != end && !found; ++it) {
         std::shared_ptr<Shot> s = it->second.shot.lock();
         if (!s || !is_asked(*s, *it->second.block)) continue;
@@ -330,6 +325,39 @@ const double* Lookahead::form_factors(Shot& shot, int block, const PartMask* vis
   complete(shot, b);
   if (b.count != count || !std::equal(visible, visible + count, b.visible.begin())) return nullptr;
   return b.form_factors.data();
+}
+
+std::shared_ptr<HostAssist::PostedShot> Lookahead::blocks_to_send(const Shooter& shooter,
+                                                                  const std::vector<Vec3>& points,
+                                                                  const std::vector<int>& patches,
+                                                                  int block_size) {
+  return post(shooter, points, patches, block_size);
+}
+
+const double* Lookahead::form_factors(PostedShot& shot, int block, const PartMask* visible,
+                                      std::size_t count) {
+  return form_factors(static_cast<Shot&>(shot), block, visible, count);
+}
+
+void Lookahead::engine_started(int rank, const RadiosityEngine& engine) {
+  // Every element of the engine is a receiver of every shooter but its own patch's.
+  std::vector<ElementRef> all;
+  const auto& patches = engine.store().patches();
+  for (int slot = 0; slot < int(patches.size()); ++slot)
+    for (int k = 0; k < int(patches[std::size_t(slot)].elements.size()); ++k) all.push_back({slot, k});
+  std::vector<Vec3> points;
+  std::vector<int> point_patches;
+  engine.visibility_points(all, points, point_patches);
+  know_receivers(rank, std::move(points), std::move(point_patches));
+}
+
+void Lookahead::shot_finished(const RadiosityEngine& engine) {
+  std::vector<std::pair<int, double>> powers;
+  for (const StoredPatch& s : engine.store().patches()) {
+    const Rgb& u = s.unshot;
+    powers.emplace_back(s.patch, (u.r + u.g + u.b) * scene_.patches[std::size_t(s.patch)].area);
+  }
+  know_unshot(powers);
 }
 
 }  // namespace ncube

@@ -8,7 +8,7 @@
 // the part of a ray Embree is asked about is among the hits Embree reports; an occlusion
 // filter runs the exact test on each reported hit and rejects those the exact test denies
 // (and the excluded receiver and shooter patches). Embree does the traversal, the exact test
-// decides. Rays nearly parallel to a plane are the caller's (occluders.h): there single
+// decides. Rays nearly parallel to a plane are the caller's (fast_occluders.h): there single
 // precision cannot be trusted at any padding (docs/performance.md). With that margin
 // everywhere, Embree's faster non-robust mode suffices: its triangle test is not watertight
 // (a ray along an edge shared by two triangles may miss both), but no crossing lies within
@@ -34,7 +34,11 @@
 //    ray; docs/performance.md). Embree reports it, and the filter's exact test keeps it.
 // Rays shorter than 2 kEndGap pads are left to the near tests alone (every crossing is then
 // within kNearRadius pads of an end). Every answer is still the exact test's.
+// Contract (host side): it changes no answer and no count; it only proposes blockers, and
+// the exact test decides (tests/embree_scene_test.cpp, tests/fast_occluders_scenes_test.cpp).
 #pragma once
+
+#include "host/host_side.h"
 
 #include <embree3/rtcore.h>
 
@@ -42,8 +46,8 @@
 #include <utility>
 #include <vector>
 
-#include "radiosity/near_patches.h"
-#include "radiosity/ray_patch_test.h"
+#include "host/near_patches.h"
+#include "visibility/ray_patch_test.h"
 #include "radiosity/shooter.h"
 
 namespace ncube {

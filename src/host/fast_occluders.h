@@ -1,9 +1,14 @@
-// The patches a node intersects visibility rays with: all patches of the scene on a node
-// without visibility processors (section 2.2), a 1/V share on a visibility processor
-// (section 3). The paper's program tests each ray against every patch of the set; the host
-// finds the same answers with a ray-tracing library (embree_scene.h: Embree proposes, the
-// exact test of ray_patch_test.h decides), and counts the tests the brute-force loop would
-// have made, independently of how the host found its answers.
+// The brute-force loop's answers and counts (visibility/brute_force_occluders.h), computed
+// fast on the host: Embree proposes the blockers (embree_scene.h), the exact test of
+// ray_patch_test.h decides, and the loop's ray-patch tests and plane crossings are counted in
+// bulk from per-plane sides of the ray targets instead of one by one. A block asked about
+// before is answered from the answer cache (answer_cache.h), a block posted to the host
+// threads computing ahead from there (lookahead.h).
+//
+// Contract (host side): it changes no answer and no count. Every mask and every counter it
+// returns equals BruteForceOccluders' for the same set, policy, block and shooter, bit for bit
+// (tests/occluders_test.cpp, tests/occluders_scenes_test.cpp on every scene, and whole result
+// files against --reference-visibility in tests/seam_test.sh).
 #pragma once
 
 #include <array>
@@ -12,57 +17,38 @@
 #include <memory>
 #include <vector>
 
-#include "radiosity/scene_blockers.h"
-#include "radiosity/ray_patch_test.h"
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
+#include "host/host_side.h"
+#include "host/question_key.h"
+#include "host/scene_blockers.h"
+#include "visibility/occluder_set.h"
+#include "visibility/ray_patch_test.h"
 
 namespace ncube {
 
-// How far the brute-force loop runs for one ray (a model choice the paper leaves open).
-enum class RayTestPolicy {
-  kTestAllPatches,        // "each ray is intersected with all other patches" (default)
-  kStopAtFirstBlocker,    // the loop ends at the first patch, in set order, that blocks
-};
-
-// How the node program finds a ray's blockers: the paper's loop over all patches (sections
-// 2.2, 3; the calibrated default) or an octree walk (section 6, octree.h; the ray policy then
-// has no effect: the walk always stops at the first blocker). The answers are the same.
-enum class VisibilityMethod { kBruteForce, kOctree };
-
-class Octree;
 class Lookahead;
 
-class Occluders {
+class FastOccluders : public OccluderSet {
  public:
-  // `patch_indices` are scene patch indices in the order the brute-force loop visits them.
-  Occluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
-            VisibilityMethod method = VisibilityMethod::kBruteForce);
-  ~Occluders();
-  Occluders(const Occluders&) = delete;
-  Occluders& operator=(const Occluders&) = delete;
+  // `patch_indices` are scene patch indices in the order the brute-force loop visits them;
+  // a block's points are shared out over `threads` host threads (0: all cores).
+  FastOccluders(const Scene& scene, std::vector<int> patch_indices, RayTestPolicy policy,
+                int threads = 1);
+  ~FastOccluders() override;
+  FastOccluders(const FastOccluders&) = delete;
+  FastOccluders& operator=(const FastOccluders&) = delete;
 
-  // Bit p of the result is set when the segment from `point` to the shooter's part p crosses
-  // none of this set's patches other than `receiver_patch` and the shooter itself. Adds the
-  // rays, the ray-patch tests and the plane crossings of the brute-force loop to `counts`.
-  // A test is a plane crossing when the ray's two ends lie strictly on opposite sides of the
-  // patch's plane: only then does the loop go on to the hit point and the edge tests.
-  PartMask unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
-                           WorkCounts& counts) const;
-
-  // The same for `count` points at once (masks[k] for points[k] on receiver_patches[k]),
-  // shared out over `threads` host threads (0: all cores). Answers and counts do not depend
-  // on `threads`. Not to be called from two threads at once on the same set (it keeps the
-  // last shooter's ray-target sides).
-  void unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
-                       const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                       int threads) const;
+  // BruteForceOccluders::unblocked_parts, fast. Not to be called from two threads at once on
+  // the same set (it keeps the last shooter's ray-target sides).
+  void unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                       WorkCounts& counts) const override;
+  using OccluderSet::unblocked_parts;
+  const std::vector<int>& patch_indices() const override { return patch_indices_; }
 
   // Which side of each plane the shooter's ray targets lie on. The targets depend only on
   // the shooter's geometry and M, so the last shooter's sides are kept.
   struct TargetSides {
+    ShooterKey shooter;  // whose targets these are
     int part_count = -1;
-    std::array<Vec3, kMaxShooterParts> targets{};
     // Per plane: its patches times the targets strictly in front of / behind it.
     std::vector<std::int64_t> in_front_tests, behind_tests;
     std::vector<PartMask> in_front, behind;  // per plane: which targets lie on each side
@@ -86,40 +72,30 @@ class Occluders {
     std::shared_ptr<const SceneBlockers::SetMasks> set_masks;
     std::shared_ptr<const SceneBlockers::Lists> lists;
   };
-  void answer_block_here(const Vec3* points, const int* receiver_patches, std::size_t count,
-                         const Shooter& shooter, const TargetSides& sides, SharedBlock& shared,
-                         PartMask* masks, WorkCounts& counts) const;
+  void answer_block_here(const PointBlock& block, const Shooter& shooter,
+                         const TargetSides& sides, SharedBlock& shared, PartMask* masks,
+                         WorkCounts& counts) const;
   // This set's answers in the process's answer cache (answer_cache.h), thread-safe.
-  bool remembered(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
-                  std::size_t count, PartMask* masks, WorkCounts& counts) const;
-  void remember(const Shooter& shooter, const Vec3* points, const int* receiver_patches,
-                std::size_t count, const PartMask* masks, const WorkCounts& counts) const;
+  bool remembered(const Shooter& shooter, const PointBlock& block, PartMask* masks,
+                  WorkCounts& counts) const;
+  void remember(const Shooter& shooter, const PointBlock& block, const PartMask* masks,
+                const WorkCounts& counts) const;
   // From now on the batch call first asks `lookahead` (host threads computing ahead, not
   // owned; null: none), which knows the blocks posted to it.
   void use_lookahead(Lookahead* lookahead) { lookahead_ = lookahead; }
 
-  // The literal brute-force loop (reference for tests): same answers, same counts.
-  PartMask unblocked_parts_brute_force(const Vec3& point, int receiver_patch,
-                                       const Shooter& shooter, WorkCounts& counts) const;
-
-  int size() const { return int(patches_.size()); }
-  // The octree of VisibilityMethod::kOctree (null for brute force), and the work of building
-  // it, charged once when the node program starts (zero for brute force).
-  const Octree* octree() const { return octree_.get(); }
-  WorkCounts build_work() const;
   // Distinct planes among the set's patches (coplanar patches share one side test).
   int plane_count() const { return int(plane_size_.size()); }
 
  private:
   // The batch call's work when the answer cache does not hold the block.
-  void answer_block(const Vec3* points, const int* receiver_patches, std::size_t count,
-                    const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                    int threads) const;
+  void answer_block(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                    WorkCounts& counts) const;
   // Each point's answer from the block's scene-wide answers in `shared` (as this set uses
   // them), on `threads` host threads.
-  void answer_points(const Vec3* points, const int* receiver_patches, std::size_t count,
-                     const Shooter& shooter, const TargetSides& sides, const SharedBlock& shared,
-                     PartMask* masks, WorkCounts& counts, int threads) const;
+  void answer_points(const PointBlock& block, const Shooter& shooter, const TargetSides& sides,
+                     const SharedBlock& shared, PartMask* masks, WorkCounts& counts,
+                     int threads) const;
   // The answer for one point; reads only constant data (safe on several threads). `lists`
   // and `index`: the point's blocking patches of the whole scene (null: ask Embree here).
   // `masks`: the same as bits of registered sets (this set's is set_bit_).
@@ -162,6 +138,8 @@ class Occluders {
   }
 
   RayTestPolicy policy_;
+  int threads_;
+  std::vector<int> patch_indices_;
   std::vector<PatchCandidate> patches_;  // in brute-force order (position = index)
   // The distinct planes (bit-identical normal and offset), one array per coordinate.
   std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
@@ -186,7 +164,6 @@ class Occluders {
   std::shared_ptr<const SceneBlockers> blockers_;
   bool whole_scene_ = false;  // every scene patch is in the set
   int set_bit_ = -1;          // this set's bit in blockers_'s registered sets, or -1
-  std::unique_ptr<const Octree> octree_;  // answers all batch queries when set
   std::uint64_t cache_id_;                // this set's answers in blockers_'s answer cache
   Lookahead* lookahead_ = nullptr;
 };

@@ -1,6 +1,6 @@
 // Octree visibility (section 6: "We are currently implementing an octree method to improve
 // the performance of the visibility tests"), a simulated option beside the paper's
-// brute-force loop (occluders.h). A node builds an octree over the patches it holds and walks
+// brute-force loop (brute_force_occluders.h). A node builds an octree over the patches it holds and walks
 // each shadow ray through the cells it meets, front to back, testing each patch of a visited
 // leaf once (mailbox) with the exact ray-patch test, and stops at the first blocker. The
 // answers are those of the brute-force loop; the counts are the walk's own (what the nCube2
@@ -10,10 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "radiosity/ray_patch_test.h"
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
 #include "scene/scene.h"
+#include "visibility/occluder_set.h"
+#include "visibility/ray_patch_test.h"
 
 namespace ncube {
 
@@ -31,7 +30,7 @@ struct OctreeBuildCounts {
   std::uint64_t leaves = 0;
 };
 
-class Octree {
+class Octree : public OccluderSet {
  public:
   // `patch_indices` are scene patch indices in the order the leaves list them.
   Octree(const Scene& scene, const std::vector<int>& patch_indices, OctreeParameters parameters = {});
@@ -49,14 +48,15 @@ class Octree {
   PartMask unblocked_parts(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            WorkCounts& counts, Scratch& scratch) const;
 
-  // The same for `count` points over `threads` host threads; answers and counts do not
-  // depend on `threads`.
-  void unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
-                       const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                       int threads) const;
+  // The same for a block of points, one after the other with one mailbox.
+  void unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                       WorkCounts& counts) const override;
+  using OccluderSet::unblocked_parts;
+  // Building it: the overlap tests and the cells made.
+  WorkCounts build_work() const override;
+  const std::vector<int>& patch_indices() const override { return patch_indices_; }
 
   const OctreeBuildCounts& build_counts() const { return build_; }
-  int size() const { return int(patches_.size()); }
 
  private:
   struct Cell {
@@ -75,6 +75,7 @@ class Octree {
   }
 
   OctreeParameters parameters_;
+  std::vector<int> patch_indices_;
   std::vector<PatchCandidate> patches_;      // by position in the set
   std::vector<Vec3> box_lo_, box_hi_;        // per position: bounding box grown by pad_
   std::vector<Cell> cells_;                  // cells_[0] is the root
@@ -82,7 +83,7 @@ class Octree {
                                              // (stored grown once, as the nCube2 program would)
   std::vector<std::int32_t> references_;     // leaves' patch lists (positions)
   double pad_ = 0.0;             // boxes grow by this, so rounding never loses a hit
-  double side_tolerance_ = 0.0;  // as the brute-force loop's (occluders.cpp)
+  double side_tolerance_ = 0.0;  // as the brute-force loop's (plane_side_tolerance)
   OctreeBuildCounts build_;
 };
 

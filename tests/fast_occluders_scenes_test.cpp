@@ -13,7 +13,8 @@
 
 #include "receiver_sample.h"
 #include "nodes/placement.h"
-#include "radiosity/occluders.h"
+#include "host/fast_occluders.h"
+#include "visibility/brute_force_occluders.h"
 #include "scene/scene_loader.h"
 
 namespace ncube {
@@ -33,8 +34,9 @@ struct Tally {
 
 // Compares the batch answers (2 host threads) with the brute-force loop for `points` sampled
 // receivers of each shooter.
-void compare(const Scene& scene, const Occluders& occluders, const std::vector<int>& shooters,
-             int points_per_shooter, unsigned seed, Tally& tally) {
+void compare(const Scene& scene, const FastOccluders& occluders, RayTestPolicy policy,
+             const std::vector<int>& shooters, int points_per_shooter, unsigned seed, Tally& tally) {
+  const BruteForceOccluders brute_force(scene, occluders.patch_indices(), policy);
   std::mt19937 random(seed);
   for (int shooter_patch : shooters) {
     const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
@@ -43,11 +45,10 @@ void compare(const Scene& scene, const Occluders& occluders, const std::vector<i
     const std::vector<int>& patches = sample.patches;
     std::vector<PartMask> masks(points.size());
     WorkCounts fast, slow;
-    occluders.unblocked_parts(points.data(), patches.data(), points.size(), shooter, masks.data(),
-                              fast, 2);
+    occluders.unblocked_parts(PointBlock(points, patches), shooter, masks.data(), fast);
     for (std::size_t k = 0; k < points.size(); ++k) {
       const PartMask expected =
-          occluders.unblocked_parts_brute_force(points[k], patches[k], shooter, slow);
+          brute_force.unblocked_parts(points[k], patches[k], shooter, slow);
       if (masks[k] != expected) {
         ++tally.differing_points;
         ADD_FAILURE() << scene.name << ": shooter " << shooter_patch << ", point on patch "
@@ -61,7 +62,7 @@ void compare(const Scene& scene, const Occluders& occluders, const std::vector<i
   }
 }
 
-class OccludersOnScene : public ::testing::TestWithParam<std::string> {};
+class FastOccludersOnScene : public ::testing::TestWithParam<std::string> {};
 
 void check_scene(const std::string& name, RayTestPolicy policy) {
   const Scene scene = load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -77,14 +78,14 @@ void check_scene(const std::string& name, RayTestPolicy policy) {
   std::vector<int> all(std::size_t(n), 0);
   for (int p = 0; p < n; ++p) all[std::size_t(p)] = p;
   Tally whole, shares;
-  compare(scene, Occluders(scene, all, policy), shooters, points, 1, whole);
+  compare(scene, FastOccluders(scene, all, policy, 2), policy, shooters, points, 1, whole);
   // The 7 shares live at once, as in a run (each registers its bit with the whole scene's
   // query), and are asked about the same blocks, as the V visibility processors of a group
   // are: one query answers all 7, each share reads its own bit.
-  std::deque<Occluders> share_sets;
-  for (int j = 0; j < 7; ++j) share_sets.emplace_back(scene, visibility_share(scene, 7, j), policy);
-  for (const Occluders& share : share_sets)
-    compare(scene, share, shooters, points / 2 + 1, 10, shares);
+  std::deque<FastOccluders> share_sets;
+  for (int j = 0; j < 7; ++j) share_sets.emplace_back(scene, visibility_share(scene, 7, j), policy, 2);
+  for (const FastOccluders& share : share_sets)
+    compare(scene, share, policy, shooters, points / 2 + 1, 10, shares);
   std::cout << name << ": " << whole.rays << " rays against the whole scene (" << whole.blocked
             << " blocked), " << shares.rays << " against shares (" << shares.blocked
             << " blocked); differing points: " << whole.differing_points + shares.differing_points
@@ -96,15 +97,15 @@ void check_scene(const std::string& name, RayTestPolicy policy) {
   EXPECT_GT(shares.blocked, 0);
 }
 
-TEST_P(OccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopTestingAllPatches) {
+TEST_P(FastOccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopTestingAllPatches) {
   check_scene(GetParam(), RayTestPolicy::kTestAllPatches);
 }
 
-TEST_P(OccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopStoppingAtFirstBlocker) {
+TEST_P(FastOccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopStoppingAtFirstBlocker) {
   check_scene(GetParam(), RayTestPolicy::kStopAtFirstBlocker);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, OccludersOnScene, ::testing::ValuesIn(scene_files()),
+INSTANTIATE_TEST_SUITE_P(Scenes, FastOccludersOnScene, ::testing::ValuesIn(scene_files()),
                          [](const auto& info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');

@@ -1,4 +1,4 @@
-#include "radiosity/ray_patch_test.h"
+#include "visibility/ray_patch_test.h"
 
 
 namespace ncube {

@@ -8,6 +8,8 @@
 // (a hash only finds the candidates), never assumed stable between iterations. The simulated
 // machine never sees it: the counts it is charged for are the counts of the brute-force
 // loop, whether computed now or remembered.
+// Contract (host side): it changes no answer and no count; it hands back only answers to the
+// very same question (question_key.h; tests/answer_cache_test.cpp).
 #pragma once
 
 #include <array>
@@ -19,13 +21,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "host/host_side.h"
+#include "host/question_key.h"
 #include "radiosity/shooter.h"
 #include "radiosity/work_counts.h"
 
 namespace ncube {
-
-// A hash of a block of points and their patches (bit for bit).
-std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t count);
 
 class AnswerCache {
  public:
@@ -41,22 +42,19 @@ class AnswerCache {
   // When set `set` (an id no other set ever had) was asked about exactly this block for
   // this shooter before and its answers are still held: writes them to masks[0 .. count),
   // adds the block's counts to `counts` and returns true.
-  bool find(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-            const int* receiver_patches, std::size_t count, PartMask* masks, WorkCounts& counts);
+  bool find(std::uint64_t set, const Shooter& shooter, const PointBlock& block, PartMask* masks,
+            WorkCounts& counts);
   // Remembers masks[0 .. count) and the block's counts (the least recently used answers go
   // when over budget; answers larger than the whole budget are not kept).
-  void store(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-             const int* receiver_patches, std::size_t count, const PartMask* masks,
-             const WorkCounts& counts);
+  void store(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
+             const PartMask* masks, const WorkCounts& counts);
   // Values per point computed from a block's answers (the form factors of lookahead.h), kept
   // under the same budget: found only for the same set id, shooter and block, and the same
   // `masks` (compared in full).
-  bool find_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                   const int* receiver_patches, std::size_t count, const PartMask* masks,
-                   double* values);
-  void store_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                    const int* receiver_patches, std::size_t count, const PartMask* masks,
-                    const double* values);
+  bool find_values(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
+                   const PartMask* masks, double* values);
+  void store_values(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
+                    const PartMask* masks, const double* values);
   // Drops every answer of a set (it is being destroyed).
   void forget_set(std::uint64_t set);
 
@@ -73,19 +71,16 @@ class AnswerCache {
  private:
   // Keys are kept once however many sets are asked about them: the V shares of a group are
   // asked about the same block for the same shooter.
+  // Keys (question_key.h) with their hash and the number of entries using them.
   struct Block {
     std::uint64_t hash;
-    std::vector<Vec3> points;
-    std::vector<int> patches;
+    BlockKey key;
     int users = 0;
-    bool is(const Vec3* other_points, const int* other_patches, std::size_t count) const;
   };
   struct Target {
     std::uint64_t hash;
-    int patch, part_count;
-    std::vector<Vec3> targets;
+    ShooterKey key;
     int users = 0;
-    bool is(const Shooter& shooter) const;  // the same patch and targets, bit for bit
   };
   // Most answers are "every part visible" or "none": two bits per point say which, and
   // only the other masks are kept (0: none, 1: all parts, 2: the next of `partial`).
@@ -113,15 +108,12 @@ class AnswerCache {
   };
 
   // The block with these points and patches (bit for bit), or null; `hash`: its hash.
-  Block* find_block(const Vec3* points, const int* patches, std::size_t count,
-                    std::uint64_t& hash) const;
+  Block* find_block(const PointBlock& block, std::uint64_t& hash) const;
   Target* find_target(const Shooter& shooter) const;
   // The entry of (set, shooter, block), or null (under mutex_).
-  Entry* find_entry(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                    const int* receiver_patches, std::size_t count);
+  Entry* find_entry(std::uint64_t set, const Shooter& shooter, const PointBlock& block);
   // Keeps `entry` (its set, payload and bytes filled in) unless one is held already.
-  void insert(Entry entry, const Shooter& shooter, const Vec3* points,
-              const int* receiver_patches, std::size_t count);
+  void insert(Entry entry, const Shooter& shooter, const PointBlock& block);
   void release(Entry& entry);
   void evict_until(std::size_t bytes);
 

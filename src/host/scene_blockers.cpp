@@ -1,4 +1,4 @@
-#include "radiosity/scene_blockers.h"
+#include "host/scene_blockers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <mutex>
 #include <tuple>
 
-#include "radiosity/host_threads.h"
+#include "host/host_threads.h"
 
 namespace ncube {
 namespace {
@@ -60,15 +60,16 @@ SceneBlockers::SceneBlockers(const Scene& scene)
   for (int p = 0; p < int(scene.patches.size()); ++p)
     candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
   // Quads grow by 5e-4 of the coordinate scale: a ray crossing a plane at more than 2e-3
-  // radians (occluders.cpp decides the others) then meets the grown quad wherever the exact
+  // radians (fast_occluders.cpp decides the others) then meets the grown quad wherever the exact
   // test finds a crossing, with single-precision errors up to about 1e-6 of the scale
   // (several units in the last place; docs/performance.md).
   embree_ = std::make_unique<EmbreeScene>(candidates_, 5e-4 * scale_);
 }
 
-std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
-    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
-    int threads) const {
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(const PointBlock& block,
+                                                                  const Shooter& shooter,
+                                                                  int threads) const {
+  const std::size_t count = block.count;
   const int m = shooter.part_count;
   auto lists = std::make_shared<Lists>();
   lists->part_count = m;
@@ -76,7 +77,7 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   const EmbreeScene::RayTargets targets = embree_->ray_targets(shooter.targets.data(), m, shooter.patch);
   parallel_chunks(threads, count, 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
-      embree_->all_blockers(points[k], receiver_patches[k], targets, per_point[k]);
+      embree_->all_blockers(block.points[k], block.patches[k], targets, per_point[k]);
   });
   // Grouped by ray (a patch may be listed twice for a ray: Embree meets a quad as two
   // triangles; the readers only OR and take minima, so repeats do no harm).
@@ -92,18 +93,13 @@ std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(
   return lists;
 }
 
-SceneBlockers::Entry* SceneBlockers::find(int kind, const Vec3* points,
-                                           const int* receiver_patches, std::size_t count,
+SceneBlockers::Entry* SceneBlockers::find(int kind, const PointBlock& block,
                                            const Shooter& shooter) const {
-  const int m = shooter.part_count;
   for (auto it = memo_.begin(); it != memo_.end(); ++it) {
     const Entry& e = *it;
     // The points first: the blocks of one shot share their shooter, not their points.
-    if (e.kind != kind || (kind == 1 && e.version != version_) ||
-        e.shooter_patch != shooter.patch || e.part_count != m || e.points.size() != count ||
-        !std::equal(e.points.begin(), e.points.end(), points) ||
-        !std::equal(e.targets.begin(), e.targets.end(), shooter.targets.begin()) ||
-        !std::equal(e.receiver_patches.begin(), e.receiver_patches.end(), receiver_patches))
+    if (e.kind != kind || (kind == 1 && e.version != version_) || !e.block.is(block) ||
+        !e.shooter.is(shooter))
       continue;
     if (it != memo_.begin()) {  // most recent first
       Entry moved = std::move(*it);
@@ -120,17 +116,13 @@ void SceneBlockers::remember(Entry entry) const {
   if (memo_.size() > kMemoBlocks) memo_.pop_back();
 }
 
-std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(
-    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
-    int threads, bool memo) const {
-  if (!memo) return compute(points, receiver_patches, count, shooter, threads);
-  if (const Entry* e = find(0, points, receiver_patches, count, shooter)) return e->lists;
-  const int m = shooter.part_count;
-  auto lists = compute(points, receiver_patches, count, shooter, threads);
-  remember(Entry{0, 0, shooter.patch, m,
-                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + m),
-                 std::vector<Vec3>(points, points + count),
-                 std::vector<int>(receiver_patches, receiver_patches + count), lists, nullptr});
+std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::blockers(const PointBlock& block,
+                                                                   const Shooter& shooter,
+                                                                   int threads, bool memo) const {
+  if (!memo) return compute(block, shooter, threads);
+  if (const Entry* e = find(0, block, shooter)) return e->lists;
+  auto lists = compute(block, shooter, threads);
+  remember(Entry{0, 0, ShooterKey(shooter), BlockKey(block), lists, nullptr});
   return lists;
 }
 
@@ -150,20 +142,16 @@ void SceneBlockers::unregister_set(int bit) const {
 }
 
 std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::blocked_sets(
-    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
-    int threads) const {
-  if (const Entry* e = find(1, points, receiver_patches, count, shooter)) return e->masks;
-  auto masks = compute_sets(points, receiver_patches, count, shooter, threads);
-  remember(Entry{1, version_, shooter.patch, shooter.part_count,
-                 std::vector<Vec3>(shooter.targets.begin(), shooter.targets.begin() + shooter.part_count),
-                 std::vector<Vec3>(points, points + count),
-                 std::vector<int>(receiver_patches, receiver_patches + count), nullptr, masks});
+    const PointBlock& block, const Shooter& shooter, int threads) const {
+  if (const Entry* e = find(1, block, shooter)) return e->masks;
+  auto masks = compute_sets(block, shooter, threads);
+  remember(Entry{1, version_, ShooterKey(shooter), BlockKey(block), nullptr, masks});
   return masks;
 }
 
 std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::compute_sets(
-    const Vec3* points, const int* receiver_patches, std::size_t count, const Shooter& shooter,
-    int threads) const {
+    const PointBlock& block, const Shooter& shooter, int threads) const {
+  const std::size_t count = block.count;
   const int m = shooter.part_count;
   auto masks = std::make_shared<SetMasks>();
   masks->part_count = m;
@@ -172,7 +160,7 @@ std::shared_ptr<const SceneBlockers::SetMasks> SceneBlockers::compute_sets(
   parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
     std::uint64_t ray_sets[kMaxShooterParts];
     for (std::size_t k = begin; k < end; ++k) {
-      embree_->blocked_sets(points[k], receiver_patches[k], targets, sets_of_patch_.data(),
+      embree_->blocked_sets(block.points[k], block.patches[k], targets, sets_of_patch_.data(),
                             registered_, ray_sets);
       PartMask* by_set = masks->blocked.data() + k * 64;
       for (int r = 0; r < m; ++r)

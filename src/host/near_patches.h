@@ -6,13 +6,17 @@
 // each cell lists the patches whose grown box overlaps it; a point reads its cell's list and
 // keeps those whose grown box holds it, so the answer is the box test's alone, whatever the
 // grid's resolution.
+// Contract (host side): it changes no answer and no count; its answer is the box test's
+// alone (tests/near_patches_test.cpp).
 #pragma once
+
+#include "host/host_side.h"
 
 #include <array>
 #include <cmath>
 #include <vector>
 
-#include "radiosity/ray_patch_test.h"
+#include "visibility/ray_patch_test.h"
 
 namespace ncube {
 

@@ -1,4 +1,4 @@
-#include "radiosity/answer_cache.h"
+#include "host/answer_cache.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,48 +11,6 @@ namespace {
 // What a node of a standard container costs besides its element (pointers, hash, malloc's
 // header): counted with every entry and key so that the budget bounds the real footprint.
 constexpr std::size_t kNodeOverhead = 64;
-
-std::uint64_t mix(std::uint64_t h, std::uint64_t word) {
-  h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-  h *= 0xbf58476d1ce4e5b9ull;
-  return h ^ (h >> 31);
-}
-
-std::uint64_t bits_of(double x) {
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
-
-}  // namespace
-
-std::uint64_t hash_points(const Vec3* points, const int* patches, std::size_t count) {
-  std::uint64_t h = mix(0, count);
-  for (std::size_t k = 0; k < count; ++k) {
-    h = mix(h, bits_of(points[k].x));
-    h = mix(h, bits_of(points[k].y));
-    h = mix(h, bits_of(points[k].z));
-    h = mix(h, std::uint64_t(std::uint32_t(patches[k])));
-  }
-  return h;
-}
-
-namespace {
-
-std::uint64_t hash_shooter(const Shooter& shooter) {
-  std::uint64_t h = mix(std::uint64_t(std::uint32_t(shooter.patch)), std::uint64_t(shooter.part_count));
-  for (int k = 0; k < shooter.part_count; ++k) {
-    h = mix(h, bits_of(shooter.targets[k].x));
-    h = mix(h, bits_of(shooter.targets[k].y));
-    h = mix(h, bits_of(shooter.targets[k].z));
-  }
-  return h;
-}
-
-// Bit for bit (not ==, which takes -0.0 for 0.0): the answers were computed from these bits.
-bool same_bits(const Vec3* a, const Vec3* b, std::size_t count) {
-  return std::memcmp(a, b, count * sizeof(Vec3)) == 0;
-}
 
 }  // namespace
 
@@ -74,54 +32,43 @@ std::uint64_t AnswerCache::new_set_id() {
 AnswerCache::AnswerCache(std::size_t budget_bytes) : budget_(budget_bytes) {}
 
 std::size_t AnswerCache::KeyHash::operator()(const Key& k) const {
-  return std::size_t(mix(mix(k.set, std::uint64_t(reinterpret_cast<std::uintptr_t>(k.target))),
-                         std::uint64_t(reinterpret_cast<std::uintptr_t>(k.block))));
+  std::uint64_t h = k.set * 0x9e3779b97f4a7c15ull;
+  h ^= std::uint64_t(reinterpret_cast<std::uintptr_t>(k.target)) + (h << 6) + (h >> 2);
+  h ^= std::uint64_t(reinterpret_cast<std::uintptr_t>(k.block)) + (h << 6) + (h >> 2);
+  return std::size_t(h);
 }
 
-bool AnswerCache::Block::is(const Vec3* other_points, const int* other_patches,
-                            std::size_t count) const {
-  return points.size() == count && same_bits(points.data(), other_points, count) &&
-         std::memcmp(patches.data(), other_patches, count * sizeof(int)) == 0;
-}
-
-AnswerCache::Block* AnswerCache::find_block(const Vec3* points, const int* patches,
-                                            std::size_t count, std::uint64_t& hash) const {
+AnswerCache::Block* AnswerCache::find_block(const PointBlock& block, std::uint64_t& hash) const {
   // The V shares of a group are asked about the same block one after the other: the
   // blocks found last are compared first (blocks of other groups differ at their first point).
   for (Block* b : recent_blocks_)
-    if (b && b->is(points, patches, count)) {
+    if (b && b->key.is(block)) {
       hash = b->hash;
       return b;
     }
-  hash = hash_points(points, patches, count);
+  hash = question_hash(block);
   auto [begin, end] = blocks_.equal_range(hash);
   for (auto it = begin; it != end; ++it)
-    if (it->second->is(points, patches, count)) {
+    if (it->second->key.is(block)) {
       recent_blocks_[next_recent_++ % recent_blocks_.size()] = it->second.get();
       return it->second.get();
     }
   return nullptr;
 }
 
-bool AnswerCache::Target::is(const Shooter& shooter) const {
-  return patch == shooter.patch && part_count == shooter.part_count &&
-         same_bits(targets.data(), shooter.targets.data(), std::size_t(part_count));
-}
-
 AnswerCache::Target* AnswerCache::find_target(const Shooter& shooter) const {
   // Every block of a shot has the same shooter: the last one found is compared first.
-  if (last_target_ && last_target_->is(shooter)) return last_target_;
-  auto [begin, end] = targets_.equal_range(hash_shooter(shooter));
+  if (last_target_ && last_target_->key.is(shooter)) return last_target_;
+  auto [begin, end] = targets_.equal_range(question_hash(shooter));
   for (auto it = begin; it != end; ++it)
-    if (it->second->is(shooter)) return last_target_ = it->second.get();
+    if (it->second->key.is(shooter)) return last_target_ = it->second.get();
   return nullptr;
 }
 
 AnswerCache::Entry* AnswerCache::find_entry(std::uint64_t set, const Shooter& shooter,
-                                             const Vec3* points, const int* receiver_patches,
-                                             std::size_t count) {
+                                             const PointBlock& points) {
   std::uint64_t block_hash;
-  const Block* block = find_block(points, receiver_patches, count, block_hash);
+  const Block* block = find_block(points, block_hash);
   const Target* target = block ? find_target(shooter) : nullptr;
   const auto it = target ? index_.find(Key{set, target, block}) : index_.end();
   if (it == index_.end()) {
@@ -133,12 +80,12 @@ AnswerCache::Entry* AnswerCache::find_entry(std::uint64_t set, const Shooter& sh
   return &*it->second;
 }
 
-bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                       const int* receiver_patches, std::size_t count, PartMask* masks,
-                       WorkCounts& counts) {
+bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
+                       PartMask* masks, WorkCounts& counts) {
   if (budget_ == 0) return false;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const Entry* entry = find_entry(set, shooter, points, receiver_patches, count);
+  const Entry* entry = find_entry(set, shooter, block);
+  const std::size_t count = block.count;
   if (!entry) return false;
   const PartMask all = shooter.all_parts();
   std::size_t next = 0;
@@ -150,21 +97,21 @@ bool AnswerCache::find(std::uint64_t set, const Shooter& shooter, const Vec3* po
   return true;
 }
 
-bool AnswerCache::find_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                              const int* receiver_patches, std::size_t count,
+bool AnswerCache::find_values(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
                               const PartMask* masks, double* values) {
   if (budget_ == 0) return false;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const Entry* entry = find_entry(set, shooter, points, receiver_patches, count);
+  const Entry* entry = find_entry(set, shooter, block);
+  const std::size_t count = block.count;
   if (!entry || entry->values.size() != count || !std::equal(masks, masks + count, entry->masks.begin()))
     return false;
   std::copy(entry->values.begin(), entry->values.end(), values);
   return true;
 }
 
-void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                        const int* receiver_patches, std::size_t count, const PartMask* masks,
-                        const WorkCounts& counts) {
+void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
+                        const PartMask* masks, const WorkCounts& counts) {
+  const std::size_t count = block.count;
   const PartMask all = shooter.all_parts();
   Entry entry{};
   entry.set = set;
@@ -179,22 +126,22 @@ void AnswerCache::store(std::uint64_t set, const Shooter& shooter, const Vec3* p
   entry.counts = counts;
   entry.bytes = sizeof(Entry) + 2 * kNodeOverhead + entry.codes.size() * sizeof(std::uint64_t) +
                 entry.partial.size() * sizeof(PartMask);
-  insert(std::move(entry), shooter, points, receiver_patches, count);
+  insert(std::move(entry), shooter, block);
 }
 
-void AnswerCache::store_values(std::uint64_t set, const Shooter& shooter, const Vec3* points,
-                               const int* receiver_patches, std::size_t count,
+void AnswerCache::store_values(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
                                const PartMask* masks, const double* values) {
+  const std::size_t count = block.count;
   Entry entry{};
   entry.set = set;
   entry.masks.assign(masks, masks + count);
   entry.values.assign(values, values + count);
   entry.bytes = sizeof(Entry) + 2 * kNodeOverhead + count * (sizeof(PartMask) + sizeof(double));
-  insert(std::move(entry), shooter, points, receiver_patches, count);
+  insert(std::move(entry), shooter, block);
 }
 
-void AnswerCache::insert(Entry entry, const Shooter& shooter, const Vec3* points,
-                         const int* receiver_patches, std::size_t count) {
+void AnswerCache::insert(Entry entry, const Shooter& shooter, const PointBlock& points) {
+  const std::size_t count = points.count;
   const std::size_t entry_bytes = entry.bytes;
   const std::size_t block_bytes =
       sizeof(Block) + kNodeOverhead + count * (sizeof(Vec3) + sizeof(int));
@@ -203,7 +150,7 @@ void AnswerCache::insert(Entry entry, const Shooter& shooter, const Vec3* points
   if (budget_ == 0 || entry_bytes + block_bytes + target_bytes > budget_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
   std::uint64_t block_hash;
-  Block* block = find_block(points, receiver_patches, count, block_hash);
+  Block* block = find_block(points, block_hash);
   Target* target = find_target(shooter);
   if (block && target && index_.count(Key{entry.set, target, block})) return;  // held already
   // Make room first; the keys found may go with the entries evicted, and then need room too.
@@ -211,26 +158,23 @@ void AnswerCache::insert(Entry entry, const Shooter& shooter, const Vec3* points
     const std::size_t needed = entry_bytes + (block ? 0 : block_bytes) + (target ? 0 : target_bytes);
     if (bytes_ + needed <= budget_) break;
     evict_until(budget_ - needed);
-    block = find_block(points, receiver_patches, count, block_hash);
+    block = find_block(points, block_hash);
     target = find_target(shooter);
   }
   if (!block) {
     auto b = std::make_unique<Block>();
     b->hash = block_hash;
-    b->points.assign(points, points + count);
-    b->patches.assign(receiver_patches, receiver_patches + count);
+    b->key = BlockKey(points);
     block = b.get();
     blocks_.emplace(block_hash, std::move(b));
     recent_blocks_[next_recent_++ % recent_blocks_.size()] = block;
     bytes_ += block_bytes;
   }
   if (!target) {
-    const std::uint64_t target_hash = hash_shooter(shooter);
+    const std::uint64_t target_hash = question_hash(shooter);
     auto t = std::make_unique<Target>();
     t->hash = target_hash;
-    t->patch = shooter.patch;
-    t->part_count = shooter.part_count;
-    t->targets.assign(shooter.targets.begin(), shooter.targets.begin() + shooter.part_count);
+    t->key = ShooterKey(shooter);
     target = t.get();
     targets_.emplace(target_hash, std::move(t));
     bytes_ += target_bytes;
@@ -256,7 +200,7 @@ void AnswerCache::release(Entry& entry) {
     for (auto it = begin; it != end; ++it)
       if (it->second.get() == entry.block) {
         bytes_ -= sizeof(Block) + kNodeOverhead +
-                  entry.block->points.size() * (sizeof(Vec3) + sizeof(int));
+                  entry.block->key.bytes();
         blocks_.erase(it);
         break;
       }
@@ -266,7 +210,7 @@ void AnswerCache::release(Entry& entry) {
     auto [begin, end] = targets_.equal_range(entry.target->hash);
     for (auto it = begin; it != end; ++it)
       if (it->second.get() == entry.target) {
-        bytes_ -= sizeof(Target) + kNodeOverhead + entry.target->targets.size() * sizeof(Vec3);
+        bytes_ -= sizeof(Target) + kNodeOverhead + entry.target->key.bytes();
         targets_.erase(it);
         break;
       }

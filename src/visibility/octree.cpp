@@ -1,19 +1,17 @@
-#include "radiosity/octree.h"
+#include "visibility/octree.h"
 
 #include <algorithm>
-#include <mutex>
 #include <stdexcept>
 
-#include "radiosity/host_threads.h"
 
 namespace ncube {
 
 Octree::Octree(const Scene& scene, const std::vector<int>& patch_indices, OctreeParameters parameters)
-    : parameters_(parameters) {
+    : parameters_(parameters), patch_indices_(patch_indices) {
   if (parameters_.max_depth < 0 || parameters_.max_depth > 60 || parameters_.max_leaf_patches < 1)
     throw std::invalid_argument("Octree: max_depth must be 0..60 and max_leaf_patches at least 1");
   const double scale = 1.0 + scene_bounds(scene).diagonal();
-  side_tolerance_ = 1e-9 * scale;  // the brute-force loop's (occluders.cpp)
+  side_tolerance_ = plane_side_tolerance(scene);  // the brute-force loop's
   // A hit point is computed with rounding errors of about 1e-16 x scale; boxes grown by far
   // more than that keep every hit inside a visited leaf that lists the patch.
   pad_ = 1e-9 * scale;
@@ -145,18 +143,18 @@ PartMask Octree::unblocked_parts(const Vec3& point, int receiver_patch, const Sh
   return visible;
 }
 
-void Octree::unblocked_parts(const Vec3* points, const int* receiver_patches, std::size_t count,
-                             const Shooter& shooter, PartMask* masks, WorkCounts& counts,
-                             int threads) const {
-  std::mutex merge;
-  parallel_chunks(threads, count, 8, [&](std::size_t begin, std::size_t end) {
-    WorkCounts local;
-    Scratch scratch = make_scratch();
-    for (std::size_t k = begin; k < end; ++k)
-      masks[k] = unblocked_parts(points[k], receiver_patches[k], shooter, local, scratch);
-    const std::lock_guard<std::mutex> lock(merge);
-    counts += local;  // integer sums: the same whatever the order
-  });
+void Octree::unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                             WorkCounts& counts) const {
+  Scratch scratch = make_scratch();
+  for (std::size_t k = 0; k < block.count; ++k)
+    masks[k] = unblocked_parts(block.points[k], block.patches[k], shooter, counts, scratch);
+}
+
+WorkCounts Octree::build_work() const {
+  WorkCounts work;
+  work.octree_overlap_tests = build_.overlap_tests;
+  work.octree_cells_built = build_.cells;
+  return work;
 }
 
 }  // namespace ncube
