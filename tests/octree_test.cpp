@@ -104,6 +104,121 @@ TEST(Octree, WalkCountsOfTheHandCountedScene) {
   EXPECT_EQ(w.counts.plane_crossings, 0u);
 }
 
+// The default build parameters (max depth 8, at most 8 patches per leaf), worked by hand on a
+// cluster: nine squares of side 1e-4 stacked at y = 0, 1e-5, ..., 8e-5 over x, z in [0, 1e-4]
+// (positions 0 .. 8), and one more square at y = 1 over x, z in [1, 1.0001] (position 9).
+// The root (x, z in [0, 1.0001], y in [0, 1], grown by a pad of 1e-9 x scale) holds 10 > 8
+// patches: split. The cluster lies in child 0 at every depth (its 1e-4 is below the
+// 1.0001 / 2^9 of a depth-8 cell's half), the far square in the root's child 7, the other
+// children are empty. So child 0 is split again at depths 1 .. 7 (9 > 8 patches) and its
+// depth-8 child is a leaf because of the depth limit: 8 splits, 1 + 8 x 8 = 65 cells,
+// 10 x 8 + 7 x 9 x 8 = 584 overlap tests, 65 - 8 = 57 leaves, 9 + 1 = 10 references.
+Scene cluster_scene(int cluster) {
+  const Vec3 X(1e-4, 0, 0), Z(0, 0, 1e-4);
+  Scene s;
+  s.name = "cluster";
+  for (int k = 0; k < cluster; ++k) s.patches.push_back(hand_counted_patch({0, 1e-5 * k, 0}, Z, X, 0.0, 1, 1));
+  s.patches.push_back(hand_counted_patch({1, 1, 1}, Z, X, 0.0, 1, 1));
+  s.build_elements();
+  return s;
+}
+
+std::vector<int> every_patch(const Scene& scene) {
+  std::vector<int> all(scene.patches.size());
+  for (int p = 0; p < int(all.size()); ++p) all[std::size_t(p)] = p;
+  return all;
+}
+
+TEST(Octree, DefaultParametersSplitAboveEightPatchesAndStopAtDepthEight) {
+  const Scene scene = cluster_scene(9);
+  const Octree octree(scene, every_patch(scene));
+  EXPECT_EQ(octree.build_counts().cells, 65u);
+  EXPECT_EQ(octree.build_counts().overlap_tests, 584u);
+  EXPECT_EQ(octree.build_counts().leaves, 57u);
+  EXPECT_EQ(octree.build_counts().patch_references, 10u);
+  EXPECT_EQ(octree.build_work().octree_cells_built, 65u);
+  EXPECT_EQ(octree.build_work().octree_overlap_tests, 584u);
+  // Eight patches in all (seven in the cluster) fit one leaf: the root alone.
+  const Scene eight = cluster_scene(7);
+  EXPECT_EQ(Octree(eight, every_patch(eight)).build_counts().cells, 1u);
+  // Nine in all split the root once; its child 0 holds 8 and is a leaf: 9 cells, 72 tests.
+  const Scene nine = cluster_scene(8);
+  EXPECT_EQ(Octree(nine, every_patch(nine)).build_counts().cells, 9u);
+  EXPECT_EQ(Octree(nine, every_patch(nine)).build_counts().overlap_tests, 72u);
+}
+
+TEST(Octree, WalkDescendsFrontToBackToTheDepthLimit) {
+  const Scene scene = cluster_scene(9);
+  const Octree octree(scene, every_patch(scene));
+  // Straight down through the cluster at x = z = 5e-5, from y = 1e-3 to -1e-3: it runs
+  // downwards in y, so the children come in the order 2, 3, 0, 1, 6, 7, 4, 5. At every depth
+  // 0 .. 7 it is missed by children 2 (its y is above 1e-3 until depth 9) and 3 (upper x),
+  // and meets child 0, which is split, down to the depth-8 leaf of the cluster: there the
+  // first patch listed (y = 0) blocks it. 1 + 8 x 3 = 25 cells, 1 test, 1 crossing.
+  Walk w = walk(octree, {5e-5, 1e-3, 5e-5}, {5e-5, -1e-3, 5e-5}, -1);
+  EXPECT_FALSE(w.visible);
+  EXPECT_EQ(w.counts.octree_cells_visited, 25u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 1u);
+  EXPECT_EQ(w.counts.plane_crossings, 1u);
+  // Inside the root's child 7, below the far square: the root and its 8 children are
+  // slab-tested (9), child 7 is a leaf listing the far square, tested once, not crossed.
+  w = walk(octree, {0.9, 0.9, 0.9}, {0.95, 0.95, 0.95}, -1);
+  EXPECT_TRUE(w.visible);
+  EXPECT_EQ(w.counts.octree_cells_visited, 9u);
+  EXPECT_EQ(w.counts.ray_patch_tests, 1u);
+  EXPECT_EQ(w.counts.plane_crossings, 0u);
+}
+
+// A whole real scene: the counts of building scene1's octree and of one shot of its first
+// emitter to every element (M = 16) are the walk's as of this model (recorded when the test
+// was written, 2026-11-24; they depend on the build parameters and the walk's order, which
+// the tests above work out by hand). On scene1 a leaf of 9 patches changes them (465 cells,
+// 2,452,419 cells visited); the depth limit is not reached on any whole scene of scenes/
+// (the cluster case above pins it).
+WorkCounts scene1_shot(const OctreeParameters& parameters, OctreeBuildCounts& build) {
+  const Scene scene = load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/scene1.json");
+  const Octree octree(scene, every_patch(scene), parameters);
+  build = octree.build_counts();
+  int shooter_patch = 0;
+  while (scene.patches[std::size_t(shooter_patch)].emission == Rgb(0.0)) ++shooter_patch;
+  const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 16);
+  std::vector<Vec3> points;
+  std::vector<int> patches;
+  for (const Element& e : scene.elements)
+    if (e.patch != shooter_patch) {
+      points.push_back(e.centre);
+      patches.push_back(e.patch);
+    }
+  std::vector<PartMask> masks(points.size());
+  WorkCounts counts;
+  octree.unblocked_parts(PointBlock(points, patches), shooter, masks.data(), counts);
+  return counts;
+}
+
+std::uint64_t scene1_elements_off_first_emitter() {
+  const Scene scene = load_scene(std::string(NCUBE_SOURCE_DIR) + "/scenes/scene1.json");
+  int emitter = 0;
+  while (scene.patches[std::size_t(emitter)].emission == Rgb(0.0)) ++emitter;
+  return scene.elements.size() - std::size_t(scene.patches[std::size_t(emitter)].element_count());
+}
+
+TEST(Octree, WholeSceneCountsOfScene1) {
+  OctreeBuildCounts build;
+  const WorkCounts counts = scene1_shot(OctreeParameters{}, build);
+  std::cout << "scene1: " << build.cells << " cells, " << build.overlap_tests << " overlap tests, "
+            << counts.octree_cells_visited << " cells visited, " << counts.ray_patch_tests
+            << " tests, " << counts.plane_crossings << " crossings\n";
+  EXPECT_EQ(build.cells, 641u);
+  EXPECT_EQ(build.overlap_tests, 13000u);
+  EXPECT_EQ(counts.rays, 16u * (scene1_elements_off_first_emitter()));
+  EXPECT_EQ(counts.octree_cells_visited, 2671077u);
+  EXPECT_EQ(counts.ray_patch_tests, 938789u);
+  EXPECT_EQ(counts.plane_crossings, 140259u);
+  OctreeBuildCounts bigger_leaves;
+  EXPECT_NE(scene1_shot(OctreeParameters{8, 9}, bigger_leaves).octree_cells_visited,
+            counts.octree_cells_visited);
+}
+
 std::vector<std::string> scene_files() {
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
