@@ -1,5 +1,12 @@
 """The four scenes of the paper (furnished interiors) and scene4, a floor of a school
-building made of copies of them."""
+building made of copies of them.
+
+The order in which a scene adds its patches is the order of the scene file, and so decides
+which patches each visibility processor holds (an even 1/V run of them, section 3): each room
+adds its surfaces, then its lights, then its furniture and wall decorations. The paper gives
+no order; the fitted plane-crossing cost and finding F4 rest on this one
+(analysis/patch-order.md), so it is counted in analysis/model_choices.json. Changing the order
+of the calls below changes the scenes and the calibration."""
 
 from .builder import Builder, Frame
 from .furniture import (bookshelf, cabinet, chair, desk_and_chair, panel_table, plant, sofa,

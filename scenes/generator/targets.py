@@ -1,8 +1,9 @@
 """What each scene must be: the paper's patch and element counts, and the shape of the
 partition of whole patches over the radiosity processors that the element fitting keeps to.
 
-These are choices made by looking at the paper (section 5's scene table; section 4's
-distribution of patches); analysis/model_choices.json counts them."""
+The counts are the paper's (section 5). The partition's shape is our choice, made by looking
+at the paper (section 4's distribution of whole patches, Tables 1 and 4 up to R = 64), and is
+counted as such in analysis/model_choices.json."""
 
 # The paper's scene table: name -> (patches, elements).
 TARGETS = {
