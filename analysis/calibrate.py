@@ -5,7 +5,9 @@ The simulated seconds per iteration of the calibration cells are (nearly) affine
 flops parameters, so a few Newton steps with a finite-difference Jacobian solve
 simulated(cell) = paper(cell) for all cells at once. The result is written into
 platforms/cost_model.json (value and a "source" saying how it was obtained) and into
-analysis/calibration-fit.json. This is the only way figures of the paper reach the simulator.
+analysis/calibration-fit.json. Besides these fitted parameters, figures of the paper reach the
+simulator only through the choices listed in analysis/model_choices.json (made after comparing
+runs with the paper; the report lists both).
 
 usage: analysis/calibrate.py [--dry-run] [--set OPTION=VALUE ...]
 """

@@ -5,12 +5,14 @@ figure, not a test; docs/performance.md shows its output).
   bench/speed_report.py [--old OLD_BUILD_DIR] [--repeat N] [--scale] [--converge]
   bench/speed_report.py --converge-only [--old OLD_BUILD_DIR] [--repeat N] [--threads N]
   bench/speed_report.py --scale-only [--repeat N]
+  bench/speed_report.py --plot-only
 
 OLD_BUILD_DIR holds an older build's simulate (e.g. main at c39b79f built in a worktree:
 git worktree add /tmp/speed-old c39b79f && cmake -S /tmp/speed-old -B /tmp/speed-old/build
 && cmake --build /tmp/speed-old/build). Host seconds per iteration are the difference of
 runs with more and fewer iterations (set-up not counted), the minimum over --repeat runs
-(the host may be shared). Writes bench/measured/*.json; --scale also docs/performance_scale.png.
+(the host may be shared). Writes bench/measured/*.json; --scale also the plot
+docs/images/performance-scale.png, which --plot-only redraws from bench/measured/scale.json.
 The runs to convergence (--converge, --converge-only) run old and new in turn, report wall
 seconds and peak resident memory, and check that both result files agree byte for byte apart
 from host seconds, the code version and the paths of the input files.
@@ -27,6 +29,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NEW = os.path.join(ROOT, "build", "simulate")
 RESULTS = os.path.join(ROOT, "bench", "measured")
+SCALE_PLOT = os.path.join(ROOT, "docs", "images", "performance-scale.png")
 
 
 def run(binary, args, env=None, keep_text=False):
@@ -206,7 +209,14 @@ def main():
     parser.add_argument("--threads", type=int, help="--threads for --converge-only (default: all cores)")
     parser.add_argument("--scale-only", action="store_true",
                         help="only the scale table, to bench/measured/scale.json and the plot")
+    parser.add_argument("--plot-only", action="store_true",
+                        help="no runs: redraw the plot from bench/measured/scale.json")
     args = parser.parse_args()
+    if args.plot_only:
+        with open(os.path.join(RESULTS, "scale.json")) as f:
+            plot(json.load(f), SCALE_PLOT)
+        print("wrote " + os.path.relpath(SCALE_PLOT, ROOT))
+        return 0
     os.makedirs(RESULTS, exist_ok=True)
     old = os.path.join(args.old, "simulate") if args.old else None
     if args.converge_only:
@@ -227,7 +237,7 @@ def main():
         rows = scale(args.repeat)
         json.dump(rows, open(os.path.join(RESULTS, "scale.json"), "w"), indent=1)
         print(json.dumps(rows, indent=1))
-        plot(rows, os.path.join(ROOT, "docs", "performance_scale.png"))
+        plot(rows, SCALE_PLOT)
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ ncube2.json is the one source of every machine parameter: each generated file is
 with only the description and the "dimension" line replaced, so a change to ncube2.json is
 carried over by running this script again (tests/platforms_reproducible_test.sh checks that
 the committed files are exactly what it writes). The nCube2 was built with up to 8,192 nodes:
-each node has 13 hypercube channels (TOP500 1994 report; docs/model.md).
+each node has 13 hypercube channels (TOP500 1994 report; docs/ncube2-sources.md).
 """
 
 import argparse
@@ -25,7 +25,7 @@ def family_member(base_text, dimension):
     description = ("The nCube2 of Stuerzlinger & Wild (1994) scaled to a %d-dimensional "
                    "hypercube of %s nodes; every other parameter is that of ncube2.json "
                    "(written from it by platforms/generate.py). Figures and sources: "
-                   "docs/model.md and shared notes on the nCube2." % (dimension, "{:,}".format(nodes)))
+                   "docs/ncube2-sources.md and docs/model.md." % (dimension, "{:,}".format(nodes)))
     dimension_line = (
         '    "dimension": {"value": %d, "unit": "", "doc": "hypercube dimension; the machine has '
         '2^dimension nodes, node k\'s bit i is its coordinate in dimension i", "source": '

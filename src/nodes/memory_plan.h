@@ -1,6 +1,8 @@
 // What each node holds, in the modeled bytes of cost_model.json, checked against the
-// node's memory (platforms/ncube2.json). The programs allocate everything when they start
-// (there is no adaptive subdivision), so the peak is known before the first iteration.
+// node's memory (platforms/ncube2.json). The programs allocate everything when they start,
+// so without adaptive subdivision (section 4.1) and load balancing (4.2) the peak is known
+// before the first iteration; with them this plan is each node's start, and its bytes then
+// change as it cuts, gives and receives patches (docs/model.md, "Memory").
 #pragma once
 
 #include <string>

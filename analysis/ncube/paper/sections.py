@@ -85,8 +85,9 @@ def model_choices_section():
            "parameters; `analysis/model_choices.json`). How far the conclusions depend on "
            "them: `analysis/memory-sensitivity.md` (record sizes), `analysis/patch-order.md` "
            "(patch order).", ""]
-    out.append(markdown_table(["choice", "compared with", "evidence"],
-                              [[c["choice"], c["looked_at"], c["evidence"]] for c in choices]))
+    out.append(markdown_table(["choice", "compared with", "evidence", "where"],
+                              [[c["choice"], c["looked_at"], c["evidence"], c["where"]]
+                               for c in choices]))
     return out + [""]
 
 
