@@ -1,6 +1,7 @@
 #include "simulation/host_machinery.h"
 
 #include "host/fast_occluders.h"
+#include "host/fast_octree.h"
 #include "host/host_threads.h"
 #include "host/lookahead.h"
 #include "host/threaded_assist.h"
@@ -25,7 +26,8 @@ void build_host_machinery(HostMachinery& machinery, const Scene& scene,
           std::make_unique<const BruteForceOccluders>(scene, patches, options.ray_policy));
     } else if (octree) {
       machinery.occluders.push_back(std::make_unique<const ThreadedOccluders>(
-          std::make_unique<const Octree>(scene, patches), options.host_threads));
+          std::make_unique<const FastOctree>(std::make_unique<const Octree>(scene, patches)),
+          options.host_threads));
     } else {
       auto set = std::make_unique<FastOccluders>(scene, patches, options.ray_policy,
                                                  options.host_threads);

@@ -75,7 +75,7 @@ void Octree::split(int cell, std::vector<std::int32_t> patches, int depth) {
   for (int child = 0; child < 8; ++child) split(first + child, std::move(lists[child]), depth + 1);
 }
 
-inline bool Octree::segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const {
+bool Octree::segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const {
   // Slab test of the segment from + t delta, t in [0, 1], against the cell grown by pad_.
   const double* bounds = walk_bounds_.data() + 6 * std::size_t(cell);
   double t_enter = 0.0, t_exit = 1.0;

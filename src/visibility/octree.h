@@ -58,21 +58,30 @@ class Octree : public OccluderSet {
 
   const OctreeBuildCounts& build_counts() const { return build_; }
 
- private:
+  // Read-only views of the tree, for faster walks that must count as this one does
+  // (src/host/fast_octree.h).
   struct Cell {
     Vec3 lo, hi;
     std::int32_t first_child = -1;  // the 8 children are cells first_child .. first_child + 7;
                                     // child index bit 0: upper x half, bit 1: y, bit 2: z
     std::int32_t patch_begin = 0, patch_count = 0;  // a leaf's positions in references_
   };
-  void split(int cell, std::vector<std::int32_t> patches, int depth);
+  const std::vector<Cell>& cells() const { return cells_; }
+  const std::vector<double>& walk_bounds() const { return walk_bounds_; }
+  const std::vector<std::int32_t>& references() const { return references_; }
+  const std::vector<PatchCandidate>& patches() const { return patches_; }
+  // The walk's two tests: does the segment from + t delta, t in [0, 1], meet the cell (grown
+  // by the pad), and on which side of a patch's plane a point lies (+1, -1, 0).
   bool segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const;
-  bool ray_blocked(const Vec3& from, const Vec3& target, int receiver_patch, int shooter_patch,
-                   WorkCounts& counts, Scratch& scratch) const;
   int side_of(const PatchCandidate& c, const Vec3& x) const {
     const double distance = glm::dot(c.normal, x) - c.plane_offset;
     return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
   }
+
+ private:
+  void split(int cell, std::vector<std::int32_t> patches, int depth);
+  bool ray_blocked(const Vec3& from, const Vec3& target, int receiver_patch, int shooter_patch,
+                   WorkCounts& counts, Scratch& scratch) const;
 
   OctreeParameters parameters_;
   std::vector<int> patch_indices_;
