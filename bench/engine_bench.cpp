@@ -122,5 +122,9 @@ BENCHMARK_CAPTURE(iteration, scene3_all_threads, std::string("scene3"), 0)
     ->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 BENCHMARK_CAPTURE(embree_alone, scene3, std::string("scene3"))
     ->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
+// The same on two host threads at once (each its own device and scene; the rates are summed):
+// the library's rate on the threads of a run of bench/long_runs.py.
+BENCHMARK_CAPTURE(embree_alone, scene3_2threads, std::string("scene3"))
+    ->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime()->Threads(2);
 
 }  // namespace

@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""The long runs researchers wait for, with the host's limit beside each figure (a reported
+benchmark, not a test; docs/performance-log.md quotes it).
+
+  bench/long_runs.py [--old OLD_BUILD_DIR] [--iterations N] [--profile] [--runs NAME,...]
+
+For each run (by default scene3 to convergence at R=8, V=7 and at R=64, V=0, and the octree
+on scene2 R=8 V=7 for 20 iterations beside brute force) it reports the host's wall seconds,
+the peak resident memory, the rays the simulated program traced and their rate, and the ray-
+tracing library's own rate for such rays on the same two threads (Embree's rtcOccluded16 on
+scene3's rays, build/benchmarks embree_alone/scene3_2threads): the ratio of the two rates is
+the figure to drive down. With --old, an older build's simulate runs the same commands in
+turn, and the result files are compared byte for byte apart from host fields. With
+--profile, a short run of each (--iterations, default 40) is sampled by perf and its time
+split by library (the simulator, Embree, SimGrid, the C and maths libraries, malloc).
+--iterations N also caps the long runs at N iterations (quick checks of the script).
+Writes bench/measured/long_runs.json.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NEW = os.path.join(ROOT, "build", "simulate")
+OUT = os.path.join(ROOT, "bench", "measured", "long_runs.json")
+
+RUNS = {
+    "scene3_R8_V7": ["scene3.json", "--R", "8", "--V", "7"],
+    "scene3_R64_V0": ["scene3.json", "--R", "64", "--V", "0"],
+    "scene2_R8_V7_octree_20": ["scene2.json", "--R", "8", "--V", "7", "--iterations", "20",
+                               "--visibility", "octree"],
+    "scene2_R8_V7_brute_force_20": ["scene2.json", "--R", "8", "--V", "7", "--iterations", "20"],
+}
+
+
+def run(binary, args):
+    """Runs simulate to a temporary result file: (result, text, wall seconds, peak MiB)."""
+    with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as f:
+        out = f.name
+    env = dict(os.environ, NCUBE_ROOT=os.path.dirname(os.path.dirname(binary)))
+    start = time.perf_counter()
+    process = subprocess.Popen(["simulate"] + args + ["--json", out, "--quiet"], executable=binary,
+                               env=env)
+    _, status, usage = os.wait4(process.pid, 0)
+    wall = time.perf_counter() - start
+    if status != 0:
+        raise RuntimeError(f"{binary} {' '.join(args)} failed ({status})")
+    with open(out) as f:
+        text = f.read()
+    os.unlink(out)
+    return json.loads(text), text, wall, usage.ru_maxrss / 1024
+
+
+def comparable(text):
+    """The result without the host fields and the provenance (paths, versions, hashes)."""
+    result = json.loads(text)
+    result.pop("host_seconds", None)
+    result.pop("provenance", None)
+    return json.dumps(result, sort_keys=True)
+
+
+def embree_two_threads():
+    bench = os.path.join(ROOT, "build", "benchmarks")
+    out = subprocess.run([bench, "--benchmark_filter=embree_alone/scene3_2threads",
+                          "--benchmark_format=json"], check=True, capture_output=True,
+                         text=True).stdout
+    return json.loads(out)["benchmarks"][0]["rays_per_second"]
+
+
+def profile(binary, args, iterations):
+    """Share of samples per library for a short run (None without perf)."""
+    if not shutil.which("perf"):
+        return None
+    with tempfile.TemporaryDirectory() as work:
+        data = os.path.join(work, "perf.data")
+        capped = [a for a in args]
+        if "--iterations" not in capped:
+            capped += ["--iterations", str(iterations)]
+        subprocess.run(["perf", "record", "-q", "-o", data, "--", binary] + capped + ["--quiet"],
+                       check=True, capture_output=True, env=dict(os.environ, NCUBE_ROOT=os.path.dirname(os.path.dirname(binary))))
+        report = subprocess.run(["perf", "report", "-i", data, "--no-children", "--stdio",
+                                 "--sort", "dso"], check=True, capture_output=True,
+                                text=True).stdout
+    shares = {}
+    for line in report.splitlines():
+        m = re.match(r"\s+([0-9.]+)%\s+(\S+)", line)
+        if m and float(m.group(1)) >= 0.5:
+            shares[re.sub(r"\.so.*", "", m.group(2))] = float(m.group(1))
+    return shares
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--old", help="an older build directory (holding simulate)")
+    parser.add_argument("--new", default=os.path.dirname(NEW), help="the build directory to measure")
+    parser.add_argument("--iterations", type=int, help="cap every run at N iterations")
+    parser.add_argument("--profile", action="store_true", help="split a short run's time by library")
+    parser.add_argument("--runs", default=",".join(RUNS), help="which runs (comma-separated)")
+    options = parser.parse_args()
+    embree = embree_two_threads()
+    report = {"embree_alone_rays_per_second_2_threads": embree, "cores": os.cpu_count(),
+              "load_average_at_start": os.getloadavg()[0], "runs": {}}
+    print(f"Embree alone, scene3's rays, 2 threads: {embree / 1e6:.1f} M rays/s")
+    print(f"{'run':30} {'build':5} {'wall s':>8} {'peak MiB':>9} {'M rays*':>8} {'M rays/s':>9} {'of Embree':>9}")
+    for name in options.runs.split(","):
+        args = list(RUNS[name])
+        if options.iterations and "--iterations" not in args:
+            args += ["--iterations", str(options.iterations)]
+        entry = {"command": ["simulate"] + args}
+        texts = {}
+        builds = [("new", os.path.join(options.new, "simulate"))] + ([("old", os.path.join(options.old, "simulate"))] if options.old else [])
+        for label, binary in builds:
+            result, text, wall, peak = run(binary, args)
+            texts[label] = text
+            # With V > 0 each visibility processor of a group tests the same rays against its
+            # share: the simulated program counts a ray V times, the host traces it once.
+            v = result["config"].get("V", 0) or 1
+            rays = result["counts"]["rays"] / v
+            entry[label] = {"wall_seconds": wall, "peak_mib": peak, "distinct_rays": rays,
+                            "rays_per_second": rays / wall, "share_of_embree": rays / wall / embree,
+                            "iterations": result.get("iterations"), "converged": result.get("converged")}
+            print(f"{name:30} {label:5} {wall:8.1f} {peak:9.0f} {rays / 1e6:8.0f} "
+                  f"{rays / wall / 1e6:9.1f} {rays / wall / embree:9.2f}", flush=True)
+        if options.old:
+            entry["same_result"] = comparable(texts["new"]) == comparable(texts["old"])
+            print(f"{'':30} result files {'equal' if entry['same_result'] else 'DIFFER'}")
+        if options.profile:
+            entry["profile_percent_by_library"] = profile(os.path.join(options.new, "simulate"), RUNS[name], options.iterations or 40)
+            print(f"{'':30} profile: {entry['profile_percent_by_library']}")
+        report["runs"][name] = entry
+    print("* distinct rays: with V > 0 the program counts each ray once per share")
+    report["load_average_at_end"] = os.getloadavg()[0]
+    os.makedirs(os.path.dirname(OUT), exist_ok=True)
+    with open(OUT, "w") as f:
+        json.dump(report, f, indent=1)
+        f.write("\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
