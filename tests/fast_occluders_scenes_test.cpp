@@ -12,6 +12,7 @@
 #include <random>
 
 #include "receiver_sample.h"
+#include "scene_files.h"
 #include "nodes/placement.h"
 #include "host/fast_occluders.h"
 #include "visibility/brute_force_occluders.h"
@@ -19,14 +20,6 @@
 
 namespace ncube {
 namespace {
-
-std::vector<std::string> scene_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
-    if (entry.path().extension() == ".json") files.push_back(entry.path().stem().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 struct Tally {
   long rays = 0, blocked = 0, differing_points = 0;
@@ -106,11 +99,7 @@ TEST_P(FastOccludersOnScene, AnswersAndCountsEqualTheBruteForceLoopStoppingAtFir
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FastOccludersOnScene, ::testing::ValuesIn(scene_files()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         scene_test_name);
 
 }  // namespace
 }  // namespace ncube

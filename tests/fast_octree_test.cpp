@@ -13,18 +13,11 @@
 #include "nodes/placement.h"
 #include "octree_scenes.h"
 #include "receiver_sample.h"
+#include "scene_files.h"
 #include "scene/scene_loader.h"
 
 namespace ncube {
 namespace {
-
-std::vector<std::string> scene_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
-    if (entry.path().extension() == ".json") files.push_back(entry.path().stem().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // Point by point: the fast walk against the literal one; returns the cells the walks visited.
 std::uint64_t compare(const Scene& scene, const std::vector<int>& set, int shooter_patch,
@@ -116,11 +109,7 @@ TEST_P(FastOctreeOnScene, CountsAsTheWalk) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FastOctreeOnScene, ::testing::ValuesIn(scene_files()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         scene_test_name);
 
 }  // namespace
 }  // namespace ncube

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "receiver_sample.h"
+#include "scene_files.h"
 #include "octree_scenes.h"
 #include "nodes/placement.h"
 #include "host/threaded_occluders.h"
@@ -177,14 +178,6 @@ TEST(Octree, WholeSceneCountsOfScene1) {
             counts.octree_cells_visited);
 }
 
-std::vector<std::string> scene_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(NCUBE_SOURCE_DIR) + "/scenes"))
-    if (entry.path().extension() == ".json") files.push_back(entry.path().stem().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 struct Tally {
   long rays = 0, blocked = 0, differing = 0;
   std::uint64_t octree_tests = 0, brute_force_tests = 0;
@@ -250,11 +243,7 @@ TEST_P(OctreeOnScene, AnswersEqualTheBruteForceLoop) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, OctreeOnScene, ::testing::ValuesIn(scene_files()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         scene_test_name);
 
 }  // namespace
 }  // namespace ncube
