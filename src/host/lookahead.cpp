@@ -1,7 +1,6 @@
 #include "host/lookahead.h"
 
 #include <algorithm>
-#include <cstring>
 #include <pthread.h>
 
 #include "host/answer_cache.h"
@@ -287,10 +286,8 @@ bool Lookahead::answers(const FastOccluders& set, const Shooter& shooter, const 
   Block* found = nullptr;
   // The same question (question_key.h): the shooter's and the block's bits.
   const auto is_asked = [&](const Shot& s, const Block& b) {
-    if (b.count != count || !s.key_.is(shooter)) return false;
-    const PointBlock posted = PointBlock(s.points_, s.patches_).part(b.first, b.first + b.count);
-    return std::memcmp(posted.points, asked.points, count * sizeof(Vec3)) == 0 &&
-           std::memcmp(posted.patches, asked.patches, count * sizeof(int)) == 0;
+    return b.count == count && s.key_.is(shooter) &&
+           same_block(PointBlock(s.points_, s.patches_).part(b.first, b.first + b.count), asked);
   };
   {
     const std::lock_guard<std::mutex> lock(mutex_);

@@ -57,10 +57,11 @@ BlockKey::BlockKey(const PointBlock& block)
     : points(block.points, block.points + block.count),
       patches(block.patches, block.patches + block.count) {}
 
-bool BlockKey::is(const PointBlock& block) const {
-  return points.size() == block.count &&
-         same_bits(points.data(), block.points, block.count * sizeof(Vec3)) &&
-         same_bits(patches.data(), block.patches, block.count * sizeof(int));
+bool same_block(const PointBlock& a, const PointBlock& b) {
+  return a.count == b.count && same_bits(a.points, b.points, a.count * sizeof(Vec3)) &&
+         same_bits(a.patches, b.patches, a.count * sizeof(int));
 }
+
+bool BlockKey::is(const PointBlock& block) const { return same_block(view(), block); }
 
 }  // namespace ncube

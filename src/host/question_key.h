@@ -17,6 +17,8 @@ namespace ncube {
 
 std::uint64_t question_hash(const Shooter& shooter);  // of its patch and targets
 std::uint64_t question_hash(const PointBlock& block);  // of its points and patches
+// The same points on the same patches, bit for bit.
+bool same_block(const PointBlock& a, const PointBlock& b);
 
 // A shooter as a cache keeps it.
 struct ShooterKey {
