@@ -110,18 +110,20 @@ def tables():
             "sizes": sizes_table(parameters)}
 
 
-def rewritten(text, generated):
+def rewritten(text, generated, tag="model-tables", document="docs/model.md"):
+    """`text` with the rows of each generated table between its marker comments
+    (docs/options_table.py uses it too, with its own tag and document)."""
     for name, rows in generated.items():
-        begin = re.compile(r"<!-- model-tables:%s begin[^>]*-->\n" % name)
-        end = "<!-- model-tables:%s end -->" % name
+        begin = re.compile(r"<!-- %s:%s begin[^>]*-->\n" % (tag, name))
+        end = "<!-- %s:%s end -->" % (tag, name)
         found = list(begin.finditer(text))
         if len(found) != 1 or text.count(end) != 1:
-            raise Problem("docs/model.md needs exactly one '<!-- model-tables:%s begin -->' "
-                          "and one '%s'" % (name, end))
+            raise Problem("%s needs exactly one '<!-- %s:%s begin -->' and one '%s'"
+                          % (document, tag, name, end))
         start = found[0].end()
         stop = text.index(end, start) if end in text[start:] else -1
         if stop < 0:
-            raise Problem("docs/model.md: '%s' comes before its begin marker" % end)
+            raise Problem("%s: '%s' comes before its begin marker" % (document, end))
         text = text[:start] + "\n".join(rows) + "\n" + text[stop:]
     return text
 

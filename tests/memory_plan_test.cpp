@@ -54,9 +54,9 @@ TEST(MemoryPlan, WithVisibilityProcessorsEachRoleHoldsItsShare) {
     const double in_flight = pipelined ? 2 : 1;
     const auto nodes = plan(scene, 2, 2, 3, pipelined);
     ASSERT_EQ(nodes.size(), 6u);
-    // Default samples: 16, so each answer is a 2-byte mask.
-    const double rp_blocks = in_flight * 3 * (c.point_bytes + 2 * 2);
-    const double vp_blocks = in_flight * 3 * (c.point_bytes + 2);
+    // Default samples: 64 (the calibrated setup), so each answer is an 8-byte mask.
+    const double rp_blocks = in_flight * 3 * (c.point_bytes + 2 * 8);
+    const double vp_blocks = in_flight * 3 * (c.point_bytes + 8);
     EXPECT_DOUBLE_EQ(nodes[0].bytes, base + 2 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +
                                          6 * c.element_bytes + rp_blocks);
     EXPECT_DOUBLE_EQ(nodes[3].bytes, base + 2 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +

@@ -1,7 +1,16 @@
 """Every ./simulate option a sweep may set (docs/cli.md): its flag, its default and the field of
-the result file that records it. The one place the ./simulate command line is assembled."""
+the result file that records it. The one place the ./simulate command line is assembled.
+
+The options, their defaults and ranges are not written here: they are read from
+simulate_options.json, which is what `./simulate --describe-options` prints (regenerate it with
+`build/simulate --describe-options > analysis/ncube/simulate_options.json`;
+tests/options_description_test.sh fails when the two differ)."""
+import json
 import math
 from dataclasses import dataclass
+from pathlib import Path
+
+DESCRIPTION = Path(__file__).resolve().parent / "simulate_options.json"
 
 
 @dataclass(frozen=True)
@@ -14,67 +23,63 @@ class Option:
     doc: str = ""
 
 
-def _at_least(low):
-    return lambda v: None if v >= low else f"must be at least {low}"
+def _show(value):
+    return f"{value:g}" if isinstance(value, float) else str(value)
 
 
-def _samples(v):
-    root = math.isqrt(v) if v > 0 else 0
-    return None if 1 <= v <= 64 and root * root == v else "must be a perfect square from 1 to 64"
+def _range_check(described):
+    """The range of a described option as a check: the same ends, included or not, as the
+    parser of ./simulate (src/tools/option_table.cpp)."""
+    low, high = described["low"], described["high"]
+    low_in, high_in = described["low_included"], described["high_included"]
+    words = (("from " if low_in else "above ") + _show(low) +
+             (" to " if high_in else " and below ") + _show(high))
+
+    def check(value):
+        above = value >= low if low_in else value > low
+        below = value <= high if high_in else value < high
+        return None if above and below else "must be " + words
+    return check
 
 
-def _fraction(v):
-    return None if 0 < v < 1 and math.isfinite(v) else "must be between 0 and 1 (exclusive)"
+def _square_check(value):
+    root = math.isqrt(value) if value > 0 else 0
+    return None if root * root == value else "must be a perfect square"
 
 
-def _one_of(*values):
+def _both(first, second):
+    return lambda value: first(value) or second(value)
+
+
+def _choice_check(values):
     return lambda v: None if v in values else "must be " + " or ".join(values)
 
 
-def _ray_test(v):
-    return None if v in ("all", "first-blocker") else "must be all or first-blocker"
+_KINDS = {"integer": int, "number": float, "choice": str, "flag": bool}
 
 
-OPTIONS = {
-    "R": Option("--R", int, 1, "R", _at_least(1), "radiosity processors"),
-    "V": Option("--V", int, 0, "V", _at_least(0), "visibility processors per radiosity processor"),
-    "samples": Option("--samples", int, 64, "samples", _samples, "parts of the shooter"),
-    "iterations": Option("--iterations", int, -1, "max_iterations", _at_least(-1),
-                         "stop after N shots (-1: until converged)"),
-    "convergence": Option("--convergence", float, 1e-4, "convergence_fraction", _fraction,
-                          "converged below this fraction of the emitted power"),
-    "ray_test": Option("--ray-test", str, "all", "ray_test", _ray_test, "all or first-blocker"),
-    "visibility": Option("--visibility", str, "brute-force", "visibility",
-                         _one_of("brute-force", "octree"), "brute-force or octree (section 6)"),
-    "skip_facing_away": Option("--skip-facing-away", bool, False, "skip_facing_away"),
-    "block_size": Option("--block-size", int, 100, "block_size", _at_least(1),
-                         "visibility points per message"),
-    "pipelined": Option("--pipelined", bool, False, "pipelined"),
-    "unlimited_memory": Option("--unlimited-memory", bool, False, "memory_cap"),
-    # Adaptive subdivision and load balancing (sections 4.1, 4.2).
-    "subdivide": Option("--subdivide", bool, False, "subdivide"),
-    "subdivide_contrast": Option("--subdivide-contrast", float, 0.5, "subdivide_contrast",
-                                 _fraction, "cut above this corner contrast"),
-    "subdivide_max_level": Option("--subdivide-max-level", int, 3, "subdivide_max_level",
-                                  _at_least(0), "deepest element level"),
-    "subdivide_min_area": Option("--subdivide-min-area", float, 0.0, "subdivide_min_area", None,
-                                 "smallest element area"),
-    "balance": Option("--balance", bool, False, "balance"),
-    "balance_threshold": Option("--balance-threshold", float, 0.2, "balance_threshold", None,
-                                "significantly more than the mean: (1 + this) x"),
-    # The rendering phase (section 2.3).
-    "render_parallel": Option("--render-parallel", str, "off", "render_parallel",
-                              _one_of("off", "blocks", "scanlines"), "off, blocks or scanlines"),
-    "render_distribution": Option("--render-distribution", str, "hypercube",
-                                  "render_distribution", _one_of("ring", "hypercube"),
-                                  "ring or hypercube"),
-    "image_width": Option("--image-width", int, 800, "image_width", _at_least(16),
-                          "picture width (the rendering phase)"),
-    "image_height": Option("--image-height", int, 600, "image_height", _at_least(16),
-                           "picture height (the rendering phase)"),
-    "outline_elements": Option("--outline-elements", bool, False, "outline_elements", None,
-                               "draw the element edges in the picture"),
-}
+def _option(described):
+    kind = _KINDS[described["kind"]]
+    check = None
+    if "range" in described:
+        check = _range_check(described["range"])
+    if described.get("perfect_square"):
+        check = _both(check, _square_check)
+    if "values" in described:
+        check = _choice_check(described["values"])
+    default = described["default"]
+    return Option(described["flag"], kind, float(default) if kind is float else default,
+                  described["field"], check, described["help"])
+
+
+def _load():
+    """The options a sweep cell may set: those the result file's "config" records."""
+    described = json.loads(DESCRIPTION.read_text())
+    return {d["flag"][2:].replace("-", "_"): _option(d) for d in described
+            if "field" in d and d["kind"] in _KINDS}
+
+
+OPTIONS = _load()
 # Not options of a cell's configuration but of how it is run or what it writes.
 FILE_OPTIONS = ("platform", "cost_model")
 OTHER_CELL_KEYS = ("cfg", "trace")
@@ -103,6 +108,7 @@ def config_fields(options):
     fields = {}
     for name, option in OPTIONS.items():
         value = full[name]
+        # --unlimited-memory is recorded inverted, as memory_cap.
         fields[option.config_field] = (not value) if name == "unlimited_memory" else value
     return fields
 

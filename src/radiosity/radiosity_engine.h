@@ -105,7 +105,8 @@ class RadiosityEngine {
 };
 
 struct ProgressiveOptions {
-  int samples = 16;                    // M, parts of the shooter
+  int samples = 64;                    // M, parts of the shooter (the calibrated setup,
+                                       // docs/reproduce.md; simulate's default)
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
   VisibilityMethod visibility = VisibilityMethod::kBruteForce;  // --visibility (section 6)
   bool skip_facing_away = false;       // true: receivers that cannot see the shooter trace no rays

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <regex>
 
+#include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
 
@@ -24,167 +24,140 @@ std::string resolve_scene_path(const std::string& name) {
   return fs::exists(in_scenes) ? in_scenes.string() : name;
 }
 
-namespace {
-
-// Counts are written in decimal: CLI11 would read "010" as 8 (octal) and accept "0x10";
-// both are almost surely typos in a command line of this program.
-const CLI::Validator kDecimalInteger(
-    [](std::string& text) -> std::string {
-      static const std::regex decimal("-?(0|[1-9][0-9]{0,9})");
-      if (std::regex_match(text, decimal)) return "";
-      return "'" + text + "' is not a decimal integer (digits without leading zeros or prefixes)";
-    },
-    "INT");
-
-// --convergence: a finite fraction in [kMinConvergence, 1]. The run stops when the largest
-// unshot power falls below this fraction of the emitted power; each round of shots lowers
-// it by about the mean reflectance, so far smaller fractions (or 0, NaN) would not stop.
-constexpr double kMinConvergence = 1e-10;
-const CLI::Validator kConvergenceFraction(
-    [](std::string& text) -> std::string {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (!text.empty() && *end == '\0' && value >= kMinConvergence && value <= 1.0) return "";
-      return "'" + text + "' is not a number from 1e-10 to 1";
-    },
-    "FRACTION");
-
-}  // namespace
-
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   const std::string root = repository_root();
   SimulationConfig& config = options.config;
   config.platform_file = root + "/platforms/ncube2.json";
   config.cost_model_file = root + "/platforms/cost_model.json";
-  // The calibrated setup (docs/reproduce.md, "Calibration"): 64 samples per shooter.
-  config.options.samples = 64;
   std::string ray_test = "all";
   std::string visibility = "brute-force";
+  std::string render_parallel = "off", render_distribution = "hypercube";
 
   CLI::App app{"Simulates the parallel progressive radiosity of Stuerzlinger & Wild (1994) on a "
                "modeled nCube2 hypercube.",
                "simulate"};
   app.get_formatter()->column_width(34);
-  app.add_option("scene", options.scene_file,
-                 "scene file (JSON); a bare name is also looked up in scenes/")
+  // Every option once, with its range and the result-file field that records it: the parser,
+  // --describe-options, analysis/ncube/options.py and docs/cli.md's table all read this.
+  OptionTable table(app);
+  constexpr long kMaxInt = std::numeric_limits<int>::max();
+  table.positional("scene", options.scene_file,
+                   "scene file (JSON); a bare name is also looked up in scenes/")
       ->required();
-  app.add_option("--R", config.radiosity_processors, "radiosity processors")
-      ->capture_default_str()
-      ->check(kDecimalInteger);
-  app.add_option("--V", config.visibility_processors,
-                 "visibility processors per radiosity processor")
-      ->capture_default_str()
-      ->check(kDecimalInteger);
-  app.add_option("--samples", config.options.samples,
-                 "M, parts of the shooter (one ray each): a perfect square from 1 to 64")
-      ->capture_default_str()
-      ->check(kDecimalInteger);
-  app.add_option("--iterations", config.options.max_iterations,
-                 "stop after N shots (-1: until converged)")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(-1, std::numeric_limits<int>::max()));
-  app.add_option("--convergence", config.options.convergence_fraction,
-                 "converged when the largest unshot power is below this fraction of the "
-                 "emitted power (1e-10 to 1)")
-      ->capture_default_str()
-      ->check(kConvergenceFraction);
-  app.add_option("--ray-test", ray_test,
-                 "how far the brute-force loop runs per ray: all (every other patch, "
-                 "section 2.2) or first-blocker")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"all", "first-blocker"}));
-  app.add_option("--visibility", visibility,
-                 "how rays find their blockers: brute-force (every patch, sections 2.2 and 3; "
-                 "the calibrated setup) or octree (section 6: an octree over each node's "
-                 "patches, the walk stops at the first blocker; --ray-test has no effect)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"brute-force", "octree"}));
-  app.add_flag("--skip-facing-away", config.options.skip_facing_away,
-               "trace no rays from elements that cannot see the shooter's front (default: every "
-               "element traces its rays, section 2.2)");
-  app.add_option("--block-size", config.block_size,
-                 "visibility points per message to a visibility processor (section 3)")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(1, 1000000));
-  app.add_flag("--pipelined", config.pipelined,
-               "send the next block of points before using the answers of this one");
-  SubdivisionOptions& subdivision = config.options.subdivision;
-  app.add_flag("--subdivide", subdivision.enabled,
-               "adaptive subdivision (section 4.1): after each shot, cut the elements whose "
-               "corner radiosities differ too much, recursively");
-  app.add_option("--subdivide-contrast", subdivision.contrast,
-                 "cut an element when (Ymax - Ymin) / (Ymax + Ymin) of its corner luminances "
-                 "exceeds this")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--subdivide-max-level", subdivision.max_level,
-                 "deepest element level (0: the scene's grid; each level cuts in four)")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(0, kMaxCellLevel));
-  app.add_option("--subdivide-min-area", subdivision.min_area,
-                 "no element smaller than this (scene units squared)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e300));
-  app.add_flag("--balance", config.balancing.enabled,
-               "dynamic load balancing (section 4.2): move patches with their elements from "
-               "radiosity processors with significantly more elements, or short of memory");
-  app.add_option("--balance-threshold", config.balancing.threshold,
-                 "\"significantly\": more than (1 + this) x the mean element count")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e6));
+  table.integer("--R", config.radiosity_processors, 1, kMaxInt, "radiosity processors", "R");
+  table.integer("--V", config.visibility_processors, 0, kMaxInt,
+                "visibility processors per radiosity processor", "V");
+  table.square("--samples", config.options.samples, 1, 64,
+               "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
+  table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
+                "stop after N shots (-1: until converged)", "max_iterations");
+  // The run stops when the largest unshot power falls below this fraction of the emitted
+  // power; each round of shots lowers it by about the mean reflectance, so far smaller
+  // fractions (or 0) would not stop.
+  table.number("--convergence", config.options.convergence_fraction, {1e-10, 1.0},
+               "converged when the largest unshot power is below this fraction of the "
+               "emitted power (1e-10 to 1)",
+               "convergence_fraction");
+  table.choice("--ray-test", ray_test, {"all", "first-blocker"},
+               "how far the brute-force loop runs per ray: all (every other patch, "
+               "section 2.2) or first-blocker",
+               "ray_test");
+  table.choice("--visibility", visibility, {"brute-force", "octree"},
+               "how rays find their blockers: brute-force (every patch, sections 2.2 and 3; "
+               "the calibrated setup) or octree (section 6: an octree over each node's "
+               "patches, the walk stops at the first blocker; --ray-test has no effect)",
+               "visibility");
+  table.flag("--skip-facing-away", config.options.skip_facing_away,
+             "trace no rays from elements that cannot see the shooter's front (default: every "
+             "element traces its rays, section 2.2)",
+             "skip_facing_away");
+  table.integer("--block-size", config.block_size, 1, 1000000,
+                "visibility points per message to a visibility processor (section 3)",
+                "block_size");
+  table.flag("--pipelined", config.pipelined,
+             "send the next block of points before using the answers of this one", "pipelined");
   bool unlimited_memory = false;
-  app.add_flag("--unlimited-memory", unlimited_memory,
-               "report each node's memory but never stop for lack of it");
-  app.add_option("--platform", config.platform_file, "machine description")
+  // Recorded inverted, as the result file's memory_cap.
+  table.flag("--unlimited-memory", unlimited_memory,
+             "report each node's memory but never stop for lack of it", "memory_cap");
+  SubdivisionOptions& subdivision = config.options.subdivision;
+  table.flag("--subdivide", subdivision.enabled,
+             "adaptive subdivision (section 4.1): after each shot, cut the elements whose "
+             "corner radiosities differ too much, recursively",
+             "subdivide");
+  table.number("--subdivide-contrast", subdivision.contrast, {0.0, 1.0},
+               "cut an element when (Ymax - Ymin) / (Ymax + Ymin) of its corner luminances "
+               "exceeds this",
+               "subdivide_contrast");
+  table.integer("--subdivide-max-level", subdivision.max_level, 0, kMaxCellLevel,
+                "deepest element level (0: the scene's grid; each level cuts in four)",
+                "subdivide_max_level");
+  table.number("--subdivide-min-area", subdivision.min_area, {0.0, 1e300},
+               "no element smaller than this (scene units squared)", "subdivide_min_area");
+  table.flag("--balance", config.balancing.enabled,
+             "dynamic load balancing (section 4.2): move patches with their elements from "
+             "radiosity processors with significantly more elements, or short of memory",
+             "balance");
+  table.number("--balance-threshold", config.balancing.threshold, {0.0, 1e6},
+               "\"significantly\": more than (1 + this) x the mean element count",
+               "balance_threshold");
+  table.choice("--render-parallel", render_parallel, {"off", "blocks", "scanlines"},
+               "after the radiosity run, simulate rendering the picture on all nodes "
+               "(section 2.3): blocks (N bands of rows) or scanlines (every N-th row)",
+               "render_parallel");
+  table.choice("--render-distribution", render_distribution, {"ring", "hypercube"},
+               "how the elements reach every node in the rendering phase: ring or hypercube",
+               "render_distribution");
+  table.integer("--image-width", config.render.width, 16, 8192, "picture width in pixels",
+                "image_width");
+  table.integer("--image-height", config.render.height, 16, 8192, "picture height in pixels",
+                "image_height");
+  table.flag("--outline-elements", config.render.outline_elements,
+             "draw each element's edges as thin dark lines in the picture (to see the mesh)",
+             "outline_elements");
+  table.file("--platform", config.platform_file, "file", "machine description",
+             "platforms/ncube2.json")
       ->capture_default_str();
-  app.add_option("--cost-model", config.cost_model_file, "flops per counted operation")
+  table.file("--cost-model", config.cost_model_file, "file", "flops per counted operation",
+             "platforms/cost_model.json")
       ->capture_default_str();
-  // An output option given an empty file name is an error, not "no output".
-  const CLI::Validator kFileName(
-      [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : ""; },
-      "FILE");
-  app.add_option("--json", options.json_file, "write the result file here")->check(kFileName);
-  app.add_option("--image", options.image_file, "render the solution to this PNG file")
-      ->check(kFileName);
-  app.add_option("--trace", options.trace_file,
-                 "write every node's timeline as a Chrome trace-event file (Perfetto)")
-      ->check(kFileName);
-  app.add_option("--image-width", config.render.width, "picture width in pixels")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(16, 8192));
-  app.add_option("--image-height", config.render.height, "picture height in pixels")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(16, 8192));
-  std::string render_parallel = "off", render_distribution = "hypercube";
-  app.add_option("--render-parallel", render_parallel,
-                 "after the radiosity run, simulate rendering the picture on all nodes "
-                 "(section 2.3): blocks (N bands of rows) or scanlines (every N-th row)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"off", "blocks", "scanlines"}));
-  app.add_option("--render-distribution", render_distribution,
-                 "how the elements reach every node in the rendering phase: ring or hypercube")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"ring", "hypercube"}));
-  app.add_flag("--outline-elements", config.render.outline_elements,
-               "draw each element's edges as thin dark lines in the picture (to see the mesh)");
-  app.add_flag("--quiet", options.quiet, "print nothing but errors (no summary, no progress)");
+  table.file("--json", options.json_file, "output", "write the result file here");
+  table.file("--image", options.image_file, "output", "render the solution to this PNG file");
+  table.file("--trace", options.trace_file, "output",
+             "write every node's timeline as a Chrome trace-event file (Perfetto)");
+  bool quiet = false;
+  table.flag("--quiet", quiet, "print nothing but errors (no summary, no progress)", "");
   std::vector<std::string> cfg, log;
-  app.add_option("--cfg", cfg, "a SimGrid setting, name:value (e.g. network/model:LV08); "
-                 "overrides the platform's")->type_name("NAME:VALUE")->allow_extra_args(false);
-  app.add_option("--log", log, "a SimGrid log setting, e.g. ncube_messages.thresh:debug "
-                 "(categories: ncube_radiosity, ncube_visibility, ncube_render, ncube_messages)")
-      ->type_name("SETTING")->allow_extra_args(false);
+  table.setting("--cfg", cfg, "NAME:VALUE",
+                "a SimGrid setting, name:value (e.g. network/model:LV08); overrides the "
+                "platform's");
+  table.setting("--log", log, "SETTING",
+                "a SimGrid log setting, e.g. ncube_messages.thresh:debug (categories: "
+                "ncube_radiosity, ncube_visibility, ncube_render, ncube_messages)");
+  // At most 64: libgomp reserves a stack of several MB per thread and ends the process
+  // (exit 1, no message of ours) when it cannot create one, e.g. 128 threads under a 1 GB
+  // address-space limit; more threads than cores gains nothing anyway.
+  table.integer("--threads", config.options.host_threads, 0, 64,
+                "host threads for one run (0: all cores); results do not depend on it", "");
+  table.flag("--reference-visibility", config.options.reference_visibility,
+             "answer every ray with the readable definitions alone (the paper's loop, or the "
+             "octree walk), one host thread, no answer cache, no lookahead: slow, and the "
+             "same result file as without it (docs/architecture.md)",
+             "");
+  bool describe = false;
+  table.flag("--describe-options", describe,
+             "print every option (kind, default, range, choices, result-file field) as JSON",
+             "");
   app.set_version_flag("--version", [] {
     return "simulate " + code_version() + " (SimGrid " + simgrid_version() + ")";
   });
-  app.add_option("--threads", config.options.host_threads,
-                 "host threads for one run (0: all cores); results do not depend on it")
-      ->capture_default_str()
-      ->check(kDecimalInteger & CLI::Range(0, 1024));
-  app.add_flag("--reference-visibility", config.options.reference_visibility,
-               "answer every ray with the readable definitions alone (the paper's loop, or the "
-               "octree walk), one host thread, no answer cache, no lookahead: slow, and the "
-               "same result file as without it (docs/architecture.md)");
+  // The description needs no scene: answered before the parser asks for one.
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--describe-options") {
+      std::cout << table.describe().dump(1) << "\n";
+      return kExitOk;
+    }
+  }
 
   try {
     app.parse(argc, argv);
@@ -208,6 +181,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.options.visibility =
       visibility == "octree" ? VisibilityMethod::kOctree : VisibilityMethod::kBruteForce;
   options.scene_file = resolve_scene_path(options.scene_file);
+  options.quiet = quiet;
   config.render.enabled = render_parallel != "off";
   config.render.partition =
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;

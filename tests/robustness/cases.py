@@ -12,10 +12,13 @@ Every case is a dict:
   fsize     optional file-size limit in bytes for the run (a "full disk")
   same_as   optional name of an "ok" case whose patch radiosities the result must equal
   memory_mb optional address-space limit of this case, instead of the script's
+  names     optional text the error message must contain (the option's name)
 """
 import copy
 import json
+import math
 import os
+import subprocess
 from pathlib import Path
 
 # A light square at y = 2 facing down, a floor facing up and a wall: small enough that a
@@ -354,7 +357,82 @@ def machine_cases(root, work):
     return cases
 
 
-def all_cases(root, work):
+# The values every numeric option is tried with, besides its range's ends and one step past
+# them: not numbers, the infinities, a negative zero, the smallest subnormal, overflow.
+SPECIAL_VALUES = ["nan", "NaN", "inf", "-inf", "infinity", "-0", "4.9e-324", "1e999", "0x10", ""]
+# In range, but refused by the configuration check (exit 2 all the same): the room has 3
+# patches and the platform 64 nodes.
+CONFIGURATION_LIMITS = {"--R": lambda v: v <= 3, "--V": lambda v: v <= 63}
+
+
+def _accepts(option, text):
+    """Whether ./simulate must accept `text` for `option` (described by --describe-options),
+    worked out here from the description: a decimal number, finite, in the range, whole for
+    an integer option (decimal digits only), a perfect square where asked."""
+    try:
+        value = float(text)
+    except ValueError:
+        return False
+    if not math.isfinite(value) or "x" in text.lower() or "n" in text.lower():
+        return False
+    if option["kind"] == "integer":
+        digits = text[1:] if text.startswith("-") else text
+        if not digits.isdigit() or (len(digits) > 1 and digits[0] == "0"):
+            return False
+        if option.get("perfect_square") and (value < 0 or math.isqrt(int(value)) ** 2 != value):
+            return False
+    r = option["range"]
+    above = value >= r["low"] if r["low_included"] else value > r["low"]
+    below = value <= r["high"] if r["high_included"] else value < r["high"]
+    limit = CONFIGURATION_LIMITS.get(option["flag"], lambda v: True)
+    return above and below and limit(value)
+
+
+def _named(option, text):
+    """What the refusal must name: the option, or for an in-range count the configuration
+    check refuses, the count as that check names it ("R=2147483647")."""
+    limit = CONFIGURATION_LIMITS.get(option["flag"])
+    if limit and _accepts({**option, "flag": ""}, text):
+        return option["flag"][2:] + "="
+    return option["flag"]
+
+
+def _past(end, step, kind):
+    if kind == "integer":
+        return str(int(end) + step)
+    return repr(end * (1 + 1e-9 * step) if end else 1e-300 * step)
+
+
+def number_cases(simulate, work):
+    """Every numeric option that `simulate --describe-options` lists (so a new option is tried
+    without a new line here) x the special values, its range's ends and one past each end."""
+    described = json.loads(subprocess.run([str(simulate), "--describe-options"], check=True,
+                                          capture_output=True, text=True).stdout)
+    scene, out = work / "numbers.json", work / "numbers.out.json"
+    scene.write_text(json.dumps(ROOM))
+    cases = []
+    for option in described:
+        if option["kind"] not in ("integer", "number"):
+            continue
+        r = option["range"]
+        ends = [r["low"], r["high"]]
+        texts = list(SPECIAL_VALUES)
+        for end, step in ((r["low"], -1), (r["high"], 1)):
+            texts += [str(end) if option["kind"] == "integer" else repr(float(end)),
+                      _past(end, step, option["kind"])]
+        for text in dict.fromkeys(texts):
+            ok = _accepts(option, text)
+            iterations = [] if option["flag"] == "--iterations" else QUICK
+            cases.append({"group": "numbers", "name": f"{option['flag']} {text!r}",
+                          "args": [str(scene), *iterations, option["flag"], text,
+                                   "--json", str(out)],
+                          "expect": "ok" if ok else "error", "outputs": [out],
+                          "names": None if ok else _named(option, text)})
+        assert ends
+    return cases
+
+
+def all_cases(root, work, simulate):
     root, work = Path(root), Path(work)
-    return (scene_cases(root, work) + option_cases(root, work) + output_cases(root, work) +
-            machine_cases(root, work))
+    return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
+            output_cases(root, work) + machine_cases(root, work))

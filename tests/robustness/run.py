@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Tries ./simulate on malformed scenes, bad option sets, output-path cases and bad machine
+"""Tries ./simulate on malformed scenes, bad option sets, every numeric option with special
+values and its range's ends, output-path cases and bad machine
 files (tests/robustness/cases.py) and tabulates the outcomes.
 
 Usage: run.py SIMULATE [--root REPO] [--timeout S] [--memory-mb MB] [--list]
@@ -140,6 +141,8 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
     problems += [f"changed input {p}" for p, d in before.items() if digest(p) != d]
     if code != 0 and (not message.strip() or len(message.splitlines()) > 2 or len(message) > 2000):
         problems.append(f"message of {len(message.splitlines())} lines, {len(message)} bytes")
+    if code != 0 and case.get("names") and case["names"] not in message:
+        problems.append(f"the message does not name {case['names']}")
     if problems:
         return "bad output", "; ".join(problems), seconds
     return ("clean error" if case["expect"] == "error" else "clean other"), message.strip()[:200], seconds
@@ -155,7 +158,7 @@ def main():
     args = parser.parse_args()
     os.environ["NCUBE_ROOT"] = args.root
     with tempfile.TemporaryDirectory() as work:
-        cases = case_list.all_cases(args.root, work)
+        cases = case_list.all_cases(args.root, work, args.simulate)
         table, failures, results = {}, [], {}
         for case in cases:
             outcome, detail, seconds = run_case(args.simulate, case, args.timeout,

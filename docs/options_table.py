@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""Writes the option table of docs/cli.md from what ./simulate says of its options.
+
+    /usr/bin/python3 docs/options_table.py          # rewrites the table in docs/cli.md
+    /usr/bin/python3 docs/options_table.py --check  # exit 1 if docs/cli.md is not up to date
+
+The description is analysis/ncube/simulate_options.json, the output of
+`./simulate --describe-options` (src/tools/option_table.cpp registers each option once, with
+its default and range, for the parser and the description alike). The table goes between the
+marker comments `<!-- options:all begin -->` and `<!-- options:all end -->`; the rest of
+docs/cli.md is left as it is. Python 3 standard library only.
+"""
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from model_tables import Problem, cell, rewritten  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+DESCRIPTION = ROOT / "analysis" / "ncube" / "simulate_options.json"
+CLI_DOC = ROOT / "docs" / "cli.md"
+
+PLACEHOLDERS = {"integer": "N", "number": "X", "file": "FILE", "output": "FILE",
+                "setting": "SETTING"}
+
+
+def number(value):
+    return "%g" % value if isinstance(value, float) else str(value)
+
+
+def usage(option):
+    flag, kind = option["flag"], option["kind"]
+    if option.get("positional"):
+        return "`%s`" % flag.upper()
+    if kind == "flag":
+        return "`%s`" % flag
+    if kind == "choice":
+        return "`%s %s`" % (flag, "\\|".join(option["values"]))
+    if kind == "setting":
+        return "`%s=%s`" % (flag, option.get("value_name", PLACEHOLDERS[kind]))
+    return "`%s %s`" % (flag, PLACEHOLDERS[kind])
+
+
+def default(option):
+    if "default" not in option:
+        return "—"
+    value = option["default"]
+    if isinstance(value, bool):
+        return "on" if value else "off"
+    if option["kind"] == "file":
+        return "`%s`" % value
+    return number(value)
+
+
+def allowed(option):
+    if "range" in option:
+        r = option["range"]
+        text = "%s%s … %s%s" % ("[" if r["low_included"] else "(", number(r["low"]),
+                                 number(r["high"]), "]" if r["high_included"] else ")")
+        if option.get("perfect_square"):
+            text += ", a perfect square"
+        if option["kind"] == "number":
+            text += ", finite"
+        return text
+    if "values" in option:
+        return ", ".join(option["values"])
+    if option["kind"] == "setting":
+        return "repeatable"
+    if option["kind"] in ("file", "output"):
+        return "a file name, not empty"
+    return ""
+
+
+def table(options):
+    rows = ["| option | default | allowed | result file `config` | meaning |",
+            "|---|---|---|---|---|"]
+    for option in options:
+        field = "`%s`" % option["field"] if "field" in option else ""
+        rows.append("| %s | %s | %s | %s | %s |" % (usage(option), default(option),
+                                                   allowed(option), field, cell(option["help"])))
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--check", action="store_true",
+                        help="do not write: exit 1 if docs/cli.md differs from the description")
+    args = parser.parse_args()
+    try:
+        options = json.loads(DESCRIPTION.read_text(encoding="utf-8"))
+        current = CLI_DOC.read_text(encoding="utf-8")
+        wanted = rewritten(current, {"all": table(options)}, "options", "docs/cli.md")
+    except (Problem, OSError, ValueError, KeyError) as e:
+        print("docs/options_table.py: %s" % e, file=sys.stderr)
+        return 2
+    if args.check:
+        if wanted != current:
+            print("docs/cli.md: the option table differs from analysis/ncube/simulate_options.json;"
+                  " run: /usr/bin/python3 docs/options_table.py", file=sys.stderr)
+            return 1
+        print("docs/cli.md: the option table matches analysis/ncube/simulate_options.json")
+        return 0
+    if wanted != current:
+        CLI_DOC.write_text(wanted, encoding="utf-8")
+        print("wrote the option table of docs/cli.md")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,151 @@
+#include "tools/option_table.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+#include <sstream>
+
+namespace ncube {
+
+namespace {
+
+std::string show(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// "from 0 to 1", "above 0 and at most 1": the words of a range in an error message.
+std::string range_words(const ValueRange& range) {
+  const std::string low = (range.low_included ? "from " : "above ") + show(range.low);
+  const std::string high = (range.high_included ? " to " : " and below ") + show(range.high);
+  return low + high;
+}
+
+bool in_range(double value, const ValueRange& range) {
+  const bool above = range.low_included ? value >= range.low : value > range.low;
+  const bool below = range.high_included ? value <= range.high : value < range.high;
+  return above && below;
+}
+
+// Counts are written in decimal: CLI11 would read "010" as 8 (octal) and accept "0x10";
+// both are almost surely typos in a command line of this program.
+CLI::Validator decimal_integer(ValueRange range, bool square) {
+  return CLI::Validator(
+      [range, square](std::string& text) -> std::string {
+        static const std::regex decimal("-?(0|[1-9][0-9]{0,9})");
+        if (!std::regex_match(text, decimal))
+          return "'" + text + "' is not a decimal integer (digits without leading zeros or "
+                 "prefixes)";
+        const double value = std::strtod(text.c_str(), nullptr);
+        if (!in_range(value, range)) return "'" + text + "' is out of range: must be " + range_words(range);
+        const long root = std::lround(std::sqrt(value));
+        if (square && root * root != long(value))
+          return "'" + text + "' is not a perfect square";
+        return "";
+      },
+      "INT");
+}
+
+// One rule for every floating-point option: a decimal number (no hexadecimal, no "nan" or
+// "inf", no value beyond the largest double) inside the option's range. A NaN compares false
+// with every bound, so an option left to CLI11's own conversion would silently mean "never".
+CLI::Validator finite_number(ValueRange range) {
+  return CLI::Validator(
+      [range](std::string& text) -> std::string {
+        static const std::regex decimal("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
+        if (!std::regex_match(text, decimal))
+          return "'" + text + "' is not a finite decimal number";
+        const double value = std::strtod(text.c_str(), nullptr);
+        if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
+        if (!in_range(value, range)) return "'" + text + "' is out of range: must be " + range_words(range);
+        return "";
+      },
+      "NUMBER");
+}
+
+// Integer ranges are described with integer ends.
+nlohmann::json range_json(const ValueRange& range, bool integer) {
+  const auto end = [integer](double value) -> nlohmann::json {
+    if (integer) return long(value);
+    return value;
+  };
+  return {{"low", end(range.low)},
+          {"low_included", range.low_included},
+          {"high", end(range.high)},
+          {"high_included", range.high_included}};
+}
+
+}  // namespace
+
+nlohmann::json& OptionTable::entry(const std::string& flag, const std::string& kind,
+                                   const std::string& help, const std::string& field) {
+  entries_.push_back({{"flag", flag}, {"kind", kind}, {"help", help}});
+  if (!field.empty()) entries_.back()["field"] = field;
+  return entries_.back();
+}
+
+CLI::Option* OptionTable::integer(const std::string& flag, int& value, long low, long high,
+                                  const std::string& help, const std::string& field) {
+  const ValueRange range{double(low), double(high)};
+  entry(flag, "integer", help, field).update({{"default", value}, {"range", range_json(range, true)}});
+  return app_.add_option(flag, value, help)->capture_default_str()->check(
+      decimal_integer(range, false));
+}
+
+CLI::Option* OptionTable::square(const std::string& flag, int& value, long low, long high,
+                                 const std::string& help, const std::string& field) {
+  const ValueRange range{double(low), double(high)};
+  entry(flag, "integer", help, field)
+      .update({{"default", value}, {"range", range_json(range, true)}, {"perfect_square", true}});
+  return app_.add_option(flag, value, help)->capture_default_str()->check(
+      decimal_integer(range, true));
+}
+
+CLI::Option* OptionTable::number(const std::string& flag, double& value, ValueRange range,
+                                 const std::string& help, const std::string& field) {
+  entry(flag, "number", help, field)
+      .update({{"default", value}, {"range", range_json(range, false)}});
+  return app_.add_option(flag, value, help)->capture_default_str()->check(finite_number(range));
+}
+
+CLI::Option* OptionTable::choice(const std::string& flag, std::string& value,
+                                 const std::vector<std::string>& values, const std::string& help,
+                                 const std::string& field) {
+  entry(flag, "choice", help, field).update({{"default", value}, {"values", values}});
+  return app_.add_option(flag, value, help)->capture_default_str()->check(CLI::IsMember(values));
+}
+
+CLI::Option* OptionTable::flag(const std::string& flag, bool& value, const std::string& help,
+                               const std::string& field) {
+  entry(flag, "flag", help, field)["default"] = value;
+  return app_.add_flag(flag, value, help);
+}
+
+CLI::Option* OptionTable::file(const std::string& flag, std::string& value,
+                               const std::string& kind, const std::string& help,
+                               const std::string& shown_default) {
+  nlohmann::json& described = entry(flag, kind, help, "");
+  if (!shown_default.empty()) described["default"] = shown_default;
+  // An empty file name is an error, not "no file".
+  const CLI::Validator not_empty(
+      [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : ""; },
+      "FILE");
+  return app_.add_option(flag, value, help)->check(not_empty);
+}
+
+CLI::Option* OptionTable::setting(const std::string& flag, std::vector<std::string>& values,
+                                  const std::string& type_name, const std::string& help) {
+  entry(flag, "setting", help, "").update({{"repeatable", true}, {"value_name", type_name}});
+  return app_.add_option(flag, values, help)->type_name(type_name)->allow_extra_args(false);
+}
+
+CLI::Option* OptionTable::positional(const std::string& name, std::string& value,
+                                     const std::string& help) {
+  entry(name, "file", help, "")["positional"] = true;
+  return app_.add_option(name, value, help);
+}
+
+nlohmann::json OptionTable::describe() const { return entries_; }
+
+}  // namespace ncube
