@@ -2,6 +2,7 @@
 // machine/cost_model.h): every counter has its parameter, loaded, charged and reported.
 #include "machine/cost_model.h"
 
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <unistd.h>
@@ -29,12 +30,14 @@ std::string error_without(const std::string& parameter) {
   const std::string path = ::testing::TempDir() + "cost-without-" + parameter + "-" +
                            std::to_string(::getpid()) + ".json";
   std::ofstream(path) << file.dump();
+  std::string error;
   try {
     load_cost_model(path);
   } catch (const InputError& e) {
-    return e.what();
+    error = e.what();
   }
-  return "";
+  std::remove(path.c_str());  // the test leaves nothing behind in the temporary folder
+  return error;
 }
 
 // Generated from the lists: every counter's flops parameter (and every data size) must be in
