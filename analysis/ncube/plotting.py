@@ -1,15 +1,20 @@
 """The plots of any sweep (ncube.summary). One line per scene and V (and other options when
 they vary), deterministic output (no dates in the PNGs)."""
+import io
+
 import matplotlib
+
+from . import output_file
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
 def save(fig, path):
-    fig.savefig(path, dpi=100, bbox_inches="tight", metadata={"Software": None})
+    picture = io.BytesIO()
+    fig.savefig(picture, format="png", dpi=100, bbox_inches="tight", metadata={"Software": None})
     plt.close(fig)
-    return path
+    return output_file.write(path, picture.getvalue())
 
 
 def _series(table, y):

@@ -8,13 +8,12 @@ file that could be taken as done. The simulation dies with this job (it is told 
 kernel, prctl PR_SET_PDEATHSIG), so a killed sweep leaves no simulation running."""
 import ctypes
 import json
-import os
 import signal
 import subprocess
 import sys
 from pathlib import Path
 
-from . import paths, results
+from . import output_file, paths, results
 from .sweep import Cell
 
 PR_SET_PDEATHSIG = 1
@@ -65,10 +64,10 @@ def run(cell, results_dir="."):
         sys.stderr.write(f"run_cell: {cell.file}: the result does not belong to the cell: {problem}\n")
         return 1
     if cell.trace and trace_temporary.exists():
-        os.replace(trace_temporary, trace_final)
+        output_file.move(trace_temporary, trace_final)
     elif cell.trace:   # out of memory: no timeline; an empty one marks the cell done
-        trace_final.write_text('{"traceEvents": []}\n')
-    os.replace(temporary, final)
+        output_file.write(trace_final, '{"traceEvents": []}\n')
+    output_file.move(temporary, final)
     return 0
 
 

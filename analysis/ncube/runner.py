@@ -19,7 +19,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import paths, results
+from . import output_file, paths, results
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -29,9 +29,7 @@ SNAKEMAKE = "/usr/bin/snakemake"
 def write_plan(sweeps, results_dir):
     plan = results_dir / "plan.json"
     text = json.dumps({"sweeps": [s.to_dict() for s in sweeps]}, indent=1) + "\n"
-    temporary = plan.with_name("plan.json.partial")
-    temporary.write_text(text)
-    os.replace(temporary, plan)
+    output_file.write(plan, text)
     return plan
 
 

@@ -7,13 +7,14 @@ Speedup and efficiency are relative to the cell with the fewest nodes of the sam
 the same other options: speedup = t(reference) / t, efficiency = speedup x nodes(reference)
 / nodes."""
 import csv
+import io
 import json
 import os
 import sys
 from pathlib import Path
 
 from . import options as opts
-from . import results
+from . import output_file, results
 from .sweep import Sweep
 
 COLUMNS = (["sweep", "cell", "scene", "R", "V", "nodes"] +
@@ -69,11 +70,12 @@ def rows(sweep, results_dir="."):
 
 
 def write_csv(table, path):
-    with open(path, "w", newline="") as out:
-        writer = csv.DictWriter(out, COLUMNS)
-        writer.writeheader()
-        for row in table:
-            writer.writerow({k: ("" if row.get(k) is None else row.get(k)) for k in COLUMNS})
+    out = io.StringIO(newline="")
+    writer = csv.DictWriter(out, COLUMNS)
+    writer.writeheader()
+    for row in table:
+        writer.writerow({k: ("" if row.get(k) is None else row.get(k)) for k in COLUMNS})
+    output_file.write(path, out.getvalue())
 
 
 def plots(sweep, table, loaded, folder):

@@ -21,34 +21,35 @@
 
 namespace {
 
-void print_summary(const ncube::Scene& scene, const ncube::SimulationConfig& config,
+// `out`: stdout, or stderr when an output file is standard output.
+void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::SimulationConfig& config,
                    const ncube::SimulationResult& r) {
-  std::printf("scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
+  std::fprintf(out, "scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
               scene.patches.size(), std::size_t(scene.element_total()));
-  std::printf("configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
+  std::fprintf(out, "configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
               config.radiosity_processors, config.visibility_processors, config.node_count(),
               config.options.samples);
-  std::printf("status                %s\n", ncube::status_name(r.status));
+  std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
   if (r.status == ncube::RunStatus::kOutOfMemory)
-    std::printf("                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
+    std::fprintf(out, "                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
                 r.out_of_memory.node, ncube::role_name(r.out_of_memory.role), r.out_of_memory.needed_bytes,
                 r.out_of_memory.available_bytes);
-  std::printf("iterations            %d (%s)\n", r.iterations,
+  std::fprintf(out, "iterations            %d (%s)\n", r.iterations,
               r.converged ? "converged" : "not converged");
-  std::printf("simulated seconds     %.3f in all\n", r.simulated_seconds);
+  std::fprintf(out, "simulated seconds     %.3f in all\n", r.simulated_seconds);
   if (const std::optional<double> per_iteration = ncube::seconds_per_iteration(r.iteration_seconds))
-    std::printf("seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,
+    std::fprintf(out, "seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,
                 ncube::iterations_measured(r.iteration_seconds),
                 r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
-  std::printf("ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
+  std::fprintf(out, "ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
               (unsigned long long)r.counts.ray_patch_tests,
               (unsigned long long)r.counts.plane_crossings);
   if (r.render.ran)
-    std::printf("rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
+    std::fprintf(out, "rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
                 ncube::row_partition_name(config.render.partition),
                 ncube::render_distribution_name(config.render.distribution),
                 r.render.simulated_seconds, r.render.imbalance);
-  std::printf("host seconds          %.3f\n", r.host_seconds);
+  std::fprintf(out, "host seconds          %.3f\n", r.host_seconds);
 }
 
 // One run; returns the exit code or throws (main turns exceptions into exit codes).
@@ -85,7 +86,8 @@ int simulate(int argc, char** argv) {
       {options.command_line, options.scene_file, options.config.platform_file,
        options.config.cost_model_file},
       scene, platform, costs, result);
-  if (!options.quiet) print_summary(scene, options.config, result);
+  if (!options.quiet)
+    print_summary(outputs.uses_standard_output() ? stderr : stdout, scene, options.config, result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
   if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result));
   if (!options.image_file.empty() && result.status == ncube::RunStatus::kOk)  // the simulated phase's picture if it ran

@@ -13,11 +13,17 @@ Every case is a dict:
   same_as   optional name of an "ok" case whose patch radiosities the result must equal
   memory_mb optional address-space limit of this case, instead of the script's
   names     optional text the error message must contain (the option's name)
+  kinds     optional {path: kind} each path must still be after the run ("link", "char",
+            "fifo", "socket", "folder", "file"): nothing that is not a regular file is replaced
+  written   optional paths that must hold new content after an "ok" run (a link's target)
+  reader    optional FIFO that a reader drains while the case runs
 """
 import copy
 import json
 import math
 import os
+import socket
+import stat
 import subprocess
 from pathlib import Path
 
@@ -277,7 +283,7 @@ def output_cases(root, work):
         ("--trace in a missing folder", ["--json", str(j), "--trace", str(work / "nowhere" / "t.json")],
          "error", [j]),
         ("--image under a file", ["--json", str(j), "--image", str(work / "a-file" / "o.png")], "error", [j]),
-        ("--json is a folder", ["--json", str(work)], "error", []),
+        ("--json is a folder", ["--json", str(work)], "write", []),
         ("--json ends with /", ["--json", str(work / "o.json") + "/"], "error", []),
         ("--json is the scene", ["--json", str(scene)], "error", []),
         ("--image is the scene", ["--image", str(scene)], "error", []),
@@ -432,7 +438,76 @@ def number_cases(simulate, work):
     return cases
 
 
+def _make_kind(path, kind):
+    """Makes a path of `kind` in the test's own folder (never the machine's /dev); False when
+    this machine does not allow it (character devices need root)."""
+    if kind in ("file", "link"):
+        target = path.with_name(path.name + ".target") if kind == "link" else path
+        target.write_text("old")
+        if kind == "link":
+            path.symlink_to(target.name)
+    elif kind == "dangling link":
+        path.symlink_to(path.name + ".made")
+    elif kind == "fifo":
+        os.mkfifo(path)
+    elif kind in ("null device", "full device"):
+        try:
+            os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(1, 3 if kind == "null device" else 7))
+        except PermissionError:
+            return False
+    elif kind == "standard output link":
+        path.symlink_to("/proc/self/fd/1")
+    elif kind == "folder":
+        path.mkdir()
+    elif kind == "socket":
+        with socket.socket(socket.AF_UNIX) as s:
+            s.bind(str(path))
+    return True
+
+
+# Every kind of output path: what the run must end with, what the path must still be after it
+# and which file must hold the output (docs/cli.md, "Output files").
+PATH_KINDS = {
+    "new": ("ok", None, ""),
+    "file": ("ok", "file", ""),
+    "link": ("ok", "link", ".target"),
+    "dangling link": ("ok", "link", ".made"),
+    "fifo": ("ok", "fifo", None),
+    "null device": ("ok", "char", None),
+    "full device": ("write", "char", None),
+    "standard output link": ("ok", "link", None),
+    "folder": ("write", "folder", None),
+    "socket": ("write", "socket", None),
+}
+
+
+def path_kind_cases(work):
+    """Every output option x every kind of path, each made afresh in a folder of its own."""
+    scene = work / "kinds-scene.json"
+    scene.write_text(json.dumps(ROOM))
+    cases = []
+    for option in ("--json", "--trace", "--image"):
+        folder = work / ("kinds" + option)
+        folder.mkdir()
+        for kind, (expect, after, written) in PATH_KINDS.items():
+            path = folder / kind.replace(" ", "-")
+            if not _make_kind(path, kind):
+                print(f"skipped {option} x {kind}: mknod needs root")
+                continue
+            cases.append({"group": "path kinds", "name": f"{option} x {kind}",
+                          "args": [str(scene), *QUICK, option, str(path)], "expect": expect,
+                          "kinds": {str(path): after} if after else {},
+                          "written": [str(path) + written] if written is not None else [],
+                          "reader": str(path) if kind == "fifo" else None,
+                          "outputs": [] if after else [path]})
+    cases.append({"group": "path kinds", "name": "--json and --trace both -", "expect": "error",
+                  "args": [str(scene), *QUICK, "--json", "-", "--trace", "-"]})
+    cases.append({"group": "path kinds", "name": "- with the summary", "expect": "ok",
+                  "args": [str(scene), *QUICK, "--json", "-"], "kinds": {}})
+    return cases
+
+
 def all_cases(root, work, simulate):
     root, work = Path(root), Path(work)
     return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
-            output_cases(root, work) + machine_cases(root, work))
+            output_cases(root, work) + path_kind_cases(work) + machine_cases(root, work))

@@ -26,9 +26,11 @@ import math
 import os
 import resource
 import signal
+import stat
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -68,7 +70,7 @@ def check_result(case, results):
         missing = [f"missing {p}" for p in outputs if not Path(p).exists()]
         if missing:
             return missing
-    if not json_out:
+    if not json_out or case.get("kinds") is not None:
         return []
     try:
         result = json.loads(Path(json_out).read_text())
@@ -96,6 +98,29 @@ def check_result(case, results):
     return problems
 
 
+KIND_TESTS = {"link": os.path.islink, "char": lambda p: stat.S_ISCHR(os.lstat(p).st_mode),
+              "fifo": lambda p: stat.S_ISFIFO(os.lstat(p).st_mode),
+              "socket": lambda p: stat.S_ISSOCK(os.lstat(p).st_mode),
+              "folder": lambda p: os.path.isdir(p) and not os.path.islink(p),
+              "file": lambda p: os.path.isfile(p) and not os.path.islink(p)}
+
+
+def kind_problems(case, code):
+    """A path replaced by something else, or an output missing from where it should be."""
+    problems = [f"{p} is no longer a {kind}" for p, kind in case.get("kinds", {}).items()
+                if not (os.path.lexists(p) and KIND_TESTS[kind](p))]
+    if code == 0:
+        for p in case.get("written", []):
+            if not os.path.isfile(p) or Path(p).read_bytes() in (b"", b"old"):
+                problems.append(f"{p} was not written")
+    return problems
+
+
+def drain(path, received):
+    with open(path, "rb") as f:
+        received.append(len(f.read()))
+
+
 def run_case(simulate, case, timeout, memory_bytes, results, work):
     for p in case.get("outputs", []):
         if Path(p).is_file():
@@ -115,6 +140,10 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
             signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # writes fail with EFBIG instead
         os.setsid()
 
+    received, reader = [], None
+    if case.get("reader"):
+        reader = threading.Thread(target=drain, args=(case["reader"], received), daemon=True)
+        reader.start()
     start = time.monotonic()
     process = subprocess.Popen([simulate, *case["args"]], stdout=subprocess.DEVNULL,
                                stderr=subprocess.PIPE, preexec_fn=limits)
@@ -126,6 +155,10 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
         return "hang/timeout", f"still running after {timeout} s", time.monotonic() - start
     seconds = time.monotonic() - start
     code = process.returncode
+    if reader:
+        reader.join(timeout=5)
+        if code == 0 and not received:
+            return "bad output", "nothing reached the FIFO's reader", seconds
     message = stderr.decode(errors="replace")
     if code < 0:
         return "crash/signal", f"signal {-code}: {message[:200]!r}", seconds
@@ -133,7 +166,7 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
         left = [str(p) for p in case.get("outputs", []) if Path(p).exists()]
         return ("wrong exit", f"exit {code}, expected {EXIT[case['expect']]}: {message[:200]!r}" +
                 (f" (left {', '.join(left)})" if code != 0 and left else ""), seconds)
-    problems = check_result(case, results)
+    problems = check_result(case, results) + kind_problems(case, code)
     stray = [str(p) for p in Path(work).rglob("*.partial*")]
     for p in stray:
         Path(p).unlink()
@@ -166,7 +199,7 @@ def main():
             row = table.setdefault(case["group"], dict.fromkeys(COLUMNS, 0))
             row[outcome] += 1
             if args.list:
-                print(f"{case['group']:8} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} {detail[:150]}")
+                print(f"{case['group']:10} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} {detail[:150]}")
             if outcome not in ("clean error", "clean other"):
                 failures.append((case, outcome, detail))
     print("| inputs | tried | " + " | ".join(COLUMNS) + " |")

@@ -1,0 +1,79 @@
+"""Every file the sweep tool writes follows ./simulate's rule per kind of path (docs/cli.md,
+"Output files"): a new path or a regular file is written to a temporary file in its folder and
+renamed onto it (atomic replacement is for files); a symbolic link is followed and its target
+written that way (the link stays); a character device or a FIFO is written where it points;
+anything else (a folder, a socket, a block device) is refused. Nothing that is not a regular
+file is ever replaced."""
+import os
+import stat
+import tempfile
+from pathlib import Path
+
+MAX_LINKS = 40   # as ./simulate (src/tools/output_files.cpp) and Linux
+
+
+class OutputPathError(OSError):
+    """A path that names something that cannot be written as a file."""
+
+
+def target(path):
+    """`path` with the symbolic links of its last component followed (a dangling link gives its
+    missing target)."""
+    current = Path(path)
+    for _ in range(MAX_LINKS + 1):
+        if not current.is_symlink():
+            return current
+        link = Path(os.readlink(current))
+        current = link if link.is_absolute() else current.parent / link
+    raise OutputPathError(f"{path}: more than {MAX_LINKS} symbolic links")
+
+
+def write(path, data):
+    """Writes `data` (str or bytes) to `path` by the rule above; returns `path`."""
+    data = data.encode() if isinstance(data, str) else bytes(data)
+    final = target(path)
+    try:
+        mode = os.stat(final).st_mode
+    except FileNotFoundError:
+        mode = None
+    if mode is not None and (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+        with open(final, "wb") as stream:
+            stream.write(data)
+        return path
+    if mode is not None and not stat.S_ISREG(mode):
+        kind = "a folder" if stat.S_ISDIR(mode) else "a socket" if stat.S_ISSOCK(mode) else \
+            "a block device" if stat.S_ISBLK(mode) else "not a file"
+        raise OutputPathError(f"{path}: cannot be written: it is {kind}")
+    descriptor, temporary = tempfile.mkstemp(prefix=final.name + ".partial-", dir=final.parent)
+    try:
+        with os.fdopen(descriptor, "wb") as out:
+            out.write(data)
+        os.chmod(temporary, 0o666 & ~_umask())
+        os.replace(temporary, final)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def move(written, path):
+    """Puts the finished file `written` (a temporary file in the same folder) at `path` by the
+    rule above: renamed onto a file in its folder, else copied (a link's target elsewhere, a
+    device or a FIFO)."""
+    final = target(path)
+    try:
+        mode = os.stat(final).st_mode
+    except FileNotFoundError:
+        mode = None
+    if (mode is None or stat.S_ISREG(mode)) and final.parent.resolve() == Path(written).parent.resolve():
+        os.replace(written, final)
+        return path
+    write(path, Path(written).read_bytes())
+    Path(written).unlink()
+    return path
+
+
+def _umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
