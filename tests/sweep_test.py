@@ -53,6 +53,10 @@ def test_validation(work):
         "bad value (samples 20)": ({"samples": 20}, "'samples'"),
         "R not a whole number": ({"R": 2.5}, "'R'"),
         "unknown scene": ({"scene": "nowhere"}, "'scene'"),
+        # SimGrid settings are asked of ./simulate --check-settings before anything runs.
+        "unknown SimGrid setting": ({"cfg": {"bogus/name": "1"}}, "Bad config key: bogus/name"),
+        "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "Valid models are"),
+        "empty SimGrid value": ({"cfg": {"network/model": ""}}, "NAME:VALUE"),
     }
     for what, (change, expected) in cases.items():
         document = json.loads(json.dumps(good))

@@ -6,10 +6,13 @@ A cell's identity is its complete configuration: every option (defaults written 
 SimGrid settings, whether it is traced, and the content hashes of its scene, platform and
 cost-model files. Its result file is named after the identity, so a changed option or input
 file can never reuse a stale result."""
+import functools
 import hashlib
 import itertools
 import json
+import os
 import re
+import subprocess
 import xml.etree.ElementTree as ElementTree
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -27,6 +30,26 @@ SWEEP_KEYS = {
     "cells": "a list of cells",
     "paper_table": "the paper table the sweep reproduces (for analysis/report.py)",
 }
+@functools.lru_cache(maxsize=None)
+def _settings_problem(arguments):
+    simulate = paths.simulate_binary()
+    if not os.access(simulate, os.X_OK):
+        return None   # no simulator to ask yet: the cell's own run would say it
+    checked = subprocess.run([simulate, "--check-settings", *arguments], capture_output=True,
+                             text=True, env=paths.simulate_environment())
+    if checked.returncode == 0:
+        return None
+    return checked.stderr.strip().removeprefix("simulate: ") or f"exit {checked.returncode}"
+
+
+def simgrid_settings_problem(cfg):
+    """What SimGrid says against a cell's settings, asked of ./simulate --check-settings before
+    anything runs (SimGrid would end a cell's run with an abort); None when it takes them."""
+    if not cfg:
+        return None
+    return _settings_problem(tuple(f"--cfg={k}:{v}" for k, v in sorted(cfg.items())))
+
+
 CELL_KEYS = dict({name: option.doc or name for name, option in opts.OPTIONS.items()},
                  scene="a scene file: a path (relative to the sweep file) or a name in scenes/",
                  platform="a platform file (JSON or SimGrid XML): a path or a name in platforms/",
@@ -229,6 +252,9 @@ def _cell(spec, label, sweep_name, base, where):
     if not isinstance(cfg, dict) or any(":" in str(k) or not isinstance(v, (str, int, float))
                                         for k, v in cfg.items()):
         fail("cfg", "expected a mapping {SimGrid setting: value}, e.g. {network/model: LV08}")
+    problem = simgrid_settings_problem(cfg)
+    if problem:
+        fail("cfg", problem)
     trace = spec.get("trace", False)
     if not isinstance(trace, bool):
         fail("trace", f"{trace!r} must be true or false")

@@ -7,6 +7,7 @@
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "machine/simgrid_settings.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
@@ -57,6 +58,9 @@ int simulate(int argc, char** argv) {
   ncube::SimulateOptions options;
   const int parse_status = ncube::parse_simulate_options(argc, argv, options);
   if (parse_status >= 0) return parse_status;
+  // SimGrid ends the process on a setting it refuses: each is tried in a child first.
+  ncube::check_simgrid_settings(options.config.simgrid_arguments);
+  if (options.check_settings) return ncube::kExitOk;
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
   ncube::Scene scene = ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);

@@ -41,9 +41,9 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   // --describe-options, analysis/ncube/options.py and docs/cli.md's table all read this.
   OptionTable table(app);
   constexpr long kMaxInt = std::numeric_limits<int>::max();
+  // Required, but for --check-settings (checked after parsing).
   table.positional("scene", options.scene_file,
-                   "scene file (JSON); a bare name is also looked up in scenes/")
-      ->required();
+                   "scene file (JSON); a bare name is also looked up in scenes/");
   table.integer("--R", config.radiosity_processors, 1, kMaxInt, "radiosity processors", "R");
   table.integer("--V", config.visibility_processors, 0, kMaxInt,
                 "visibility processors per radiosity processor", "V");
@@ -144,6 +144,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "octree walk), one host thread, no answer cache, no lookahead: slow, and the "
              "same result file as without it (docs/architecture.md)",
              "");
+  table.flag("--check-settings", options.check_settings,
+             "check the SimGrid settings given (--cfg, --log) as a run would, then stop: exit "
+             "0, or 2 with the setting SimGrid refuses (no scene needed)",
+             "");
   bool describe = false;
   table.flag("--describe-options", describe,
              "print every option (kind, default, range, choices, result-file field) as JSON",
@@ -169,6 +173,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     return kExitOk;
   } catch (const CLI::ParseError& e) {
     std::cerr << "simulate: " << e.what() << "\n(see simulate --help)\n";
+    return kExitBadInput;
+  }
+  if (options.scene_file.empty() && !options.check_settings) {
+    std::cerr << "simulate: scene is required\n(see simulate --help)\n";
     return kExitBadInput;
   }
   for (const std::string& setting : cfg) config.simgrid_arguments.push_back("--cfg=" + setting);

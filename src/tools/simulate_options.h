@@ -15,6 +15,7 @@ struct SimulateOptions {
   std::string image_file;  // empty: no picture
   std::string trace_file;  // empty: no timeline
   bool quiet = false;
+  bool check_settings = false;  // --check-settings: check the SimGrid settings and stop
   std::vector<std::string> command_line;  // argv, for the result file's provenance
 };
 

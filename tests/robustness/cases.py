@@ -507,7 +507,44 @@ def path_kind_cases(work):
     return cases
 
 
+def settings_cases(root, work):
+    """Every pass-through SimGrid setting (--cfg, --log, a platform file's simgrid_config) x an
+    unknown name, an unknown value and a missing value: exit 2 and one line naming the setting,
+    never SimGrid's abort."""
+    scene, out = work / "settings.json", work / "settings.out.json"
+    scene.write_text(json.dumps(ROOM))
+    base = [str(scene), *QUICK, "--json", str(out)]
+    bad = {"--cfg": {"unknown name": "bogus/name:1", "unknown value": "network/model:bogus",
+                     "missing value": "network/model", "empty value": "network/model:",
+                     "missing name": ":CM02"},
+           "--log": {"unknown name": "ncube_messages.bogus:debug",
+                     "unknown value": "ncube_messages.thresh:loud",
+                     "missing value": "ncube_messages.thresh:", "malformed": ":::"}}
+    cases = []
+    for flag, settings in bad.items():
+        for what, setting in settings.items():
+            argument = f"{flag}={setting}"
+            cases.append({"group": "settings", "name": f"{flag} {what}", "expect": "error",
+                          "args": base + [argument], "outputs": [out], "names": argument})
+    platform = json.loads((root / "platforms" / "ncube2.json").read_text())
+    for what, (name, value) in {"unknown name": ("bogus/name", "1"),
+                                "unknown value": ("network/model", "bogus"),
+                                "missing value": ("network/model", "")}.items():
+        changed = copy.deepcopy(platform)
+        changed["simgrid_config"][name] = value
+        path = work / f"platform-{what.replace(' ', '-')}.json"
+        path.write_text(json.dumps(changed))
+        cases.append({"group": "settings", "name": f"platform simgrid_config {what}",
+                      "expect": "error", "args": base + ["--platform", str(path)],
+                      "outputs": [out], "names": f'"{name}"'})
+    for flag, setting in (("--cfg", "network/model:CM02"), ("--log", "ncube_messages.thresh:info")):
+        cases.append({"group": "settings", "name": f"{flag} good", "expect": "ok",
+                      "args": base + [f"{flag}={setting}"], "outputs": [out]})
+    return cases
+
+
 def all_cases(root, work, simulate):
     root, work = Path(root), Path(work)
     return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
-            output_cases(root, work) + path_kind_cases(work) + machine_cases(root, work))
+            output_cases(root, work) + path_kind_cases(work) + settings_cases(root, work) +
+            machine_cases(root, work))

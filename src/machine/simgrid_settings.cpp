@@ -1,0 +1,114 @@
+#include "machine/simgrid_settings.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <simgrid/s4u/Engine.hpp>
+#include <simgrid/s4u/Host.hpp>
+#include <simgrid/s4u/NetZone.hpp>
+#include <xbt/log.h>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+// The form SimGrid needs before it is asked: NAME:VALUE with both parts, a non-empty control.
+std::string syntax_problem(const std::string& argument) {
+  const std::string cfg = "--cfg=", log = "--log=";
+  if (argument.rfind(cfg, 0) == 0) {
+    const std::string setting = argument.substr(cfg.size());
+    const std::size_t colon = setting.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == setting.size())
+      return "a SimGrid setting is NAME:VALUE, e.g. --cfg=network/model:CM02";
+    return "";
+  }
+  if (argument.rfind(log, 0) == 0)
+    return argument.size() == log.size() ? "an empty log setting" : "";
+  return "not a SimGrid setting (--cfg=NAME:VALUE or --log=CONTROL)";
+}
+
+// In the child: SimGrid with this one setting, up to the network model's creation, which is
+// when a model name is checked. Never returns.
+[[noreturn]] void try_in_child(const std::string& argument, int error_pipe) {
+  dup2(error_pipe, STDERR_FILENO);
+  dup2(error_pipe, STDOUT_FILENO);  // --cfg=help and the like print their text here
+  std::vector<std::string> storage{"simulate", argument};
+  std::vector<char*> argv{storage[0].data(), storage[1].data(), nullptr};
+  int argc = 2;
+  try {
+    xbt_log_control_set("root.thresh:critical");
+    simgrid::s4u::Engine engine(&argc, argv.data());
+    auto* zone = simgrid::s4u::create_full_zone("check");
+    zone->create_host("check", 1e6);
+    zone->seal();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    std::fflush(stderr);
+    _exit(3);
+  }
+  _exit(argc == 1 ? 0 : 4);  // SimGrid consumes the arguments it understood
+}
+
+// The one line to show of what SimGrid said: its CRITICAL message, or the exception's first line.
+std::string first_message_line(const std::string& said) {
+  std::size_t start = said.find("CRITICAL] ");
+  start = start == std::string::npos ? 0 : start + 10;
+  const std::size_t end = said.find('\n', start);
+  return said.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+// What SimGrid says of one setting: "" when it takes it.
+std::string simgrid_refusal(const std::string& argument) {
+  // A process has one Engine: once it exists (a test that ran a simulation, a platform file
+  // read through SimGrid), a child cannot make its own, and the settings are SimGrid's already.
+  if (simgrid::s4u::Engine::is_initialized()) return "";
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) return "";  // cannot check: the run itself will tell
+  std::fflush(nullptr);
+  const pid_t child = fork();
+  if (child < 0) {
+    close(pipe_ends[0]);
+    close(pipe_ends[1]);
+    return "";
+  }
+  if (child == 0) {
+    close(pipe_ends[0]);
+    try_in_child(argument, pipe_ends[1]);
+  }
+  close(pipe_ends[1]);
+  std::string said;
+  char buffer[4096];
+  for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) != 0;) {
+    if (n < 0) break;
+    if (said.size() < 65536) said.append(buffer, std::size_t(n));
+  }
+  close(pipe_ends[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 4)
+    return "SimGrid does not take this argument";
+  const std::string line = first_message_line(said);
+  if (line.rfind("Bad config key", 0) == 0)
+    return line + " (SimGrid's settings: https://simgrid.org/doc/3.32/Configuring_SimGrid.html)";
+  return line.empty() ? "SimGrid refuses it" : line;
+}
+
+}  // namespace
+
+std::string simgrid_setting_problem(const std::string& argument) {
+  const std::string problem = syntax_problem(argument);
+  return problem.empty() ? simgrid_refusal(argument) : problem;
+}
+
+void check_simgrid_settings(const std::vector<std::string>& arguments) {
+  for (const std::string& argument : arguments)
+    if (const std::string problem = simgrid_setting_problem(argument); !problem.empty())
+      throw InputError(argument + ": " + problem);
+}
+
+}  // namespace ncube

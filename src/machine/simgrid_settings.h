@@ -1,0 +1,21 @@
+// SimGrid's own command-line settings (--cfg=NAME:VALUE, --log=CONTROL), checked before the
+// run's Engine sees them. SimGrid ends the process on a bad one (an abort with a backtrace,
+// exit 134, or an exception listing every key), so each setting is first tried in a child
+// process that creates an Engine with it and builds a one-host platform; what SimGrid says
+// there becomes one InputError line (exit 2) naming the setting.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ncube {
+
+// Throws InputError for the first argument SimGrid refuses: "--cfg=network/model:bogus: Model
+// 'bogus' is invalid! Valid models are: LV08, Constant, SMPI, IB, CM02, ns-3." Arguments are
+// as the Engine gets them ("--cfg=...", "--log=...").
+void check_simgrid_settings(const std::vector<std::string>& arguments);
+
+// What SimGrid (or the NAME:VALUE form) says against one argument; "" when it is taken.
+std::string simgrid_setting_problem(const std::string& argument);
+
+}  // namespace ncube

@@ -1,0 +1,55 @@
+// SimGrid's settings are checked before the run's Engine sees them: what SimGrid would answer
+// with an abort (exit 134) or an exception listing every key becomes one line naming the
+// setting. Each test runs in its own process (ctest), with no Engine yet.
+#include "machine/simgrid_settings.h"
+
+#include <gtest/gtest.h>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+std::string refusal(const std::string& argument) {
+  try {
+    check_simgrid_settings({argument});
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "more than one line: " << message;
+    EXPECT_EQ(message.rfind(argument + ": ", 0), 0u) << "does not name the setting: " << message;
+    return message;
+  }
+  return "";
+}
+
+TEST(SimgridSettings, AnUnknownNameIsNamed) {
+  EXPECT_NE(refusal("--cfg=bogus/name:1").find("Bad config key: bogus/name"), std::string::npos);
+}
+
+TEST(SimgridSettings, AnUnknownValueListsTheValidOnes) {
+  const std::string model = refusal("--cfg=network/model:bogus");
+  EXPECT_NE(model.find("Valid models are: LV08"), std::string::npos) << model;
+  EXPECT_NE(model.find("CM02"), std::string::npos) << model;
+  EXPECT_NE(refusal("--cfg=network/solver:bogus").find("fairbottleneck"), std::string::npos);
+  EXPECT_NE(refusal("--cfg=network/crosstraffic:maybe").find("boolean"), std::string::npos);
+  EXPECT_NE(refusal("--log=ncube_messages.thresh:loud").find("debug"), std::string::npos);
+}
+
+TEST(SimgridSettings, AMissingValueIsRefusedBeforeSimgridSeesIt) {
+  for (const char* bad : {"--cfg=network/model", "--cfg=network/model:", "--cfg=:CM02"})
+    EXPECT_NE(refusal(bad).find("NAME:VALUE"), std::string::npos) << bad;
+}
+
+TEST(SimgridSettings, AMalformedLogControlIsRefused) {
+  EXPECT_NE(refusal("--log=:::").find("Invalid control string"), std::string::npos);
+  EXPECT_NE(refusal("--log=ncube_messages.bogus:debug").find("bogus"), std::string::npos);
+}
+
+TEST(SimgridSettings, GoodSettingsPass) {
+  EXPECT_NO_THROW(check_simgrid_settings({"--cfg=network/model:CM02", "--cfg=network/crosstraffic:0",
+                                          "--cfg=network/solver:fairbottleneck",
+                                          "--log=ncube_messages.thresh:debug"}));
+}
+
+}  // namespace
+}  // namespace ncube
