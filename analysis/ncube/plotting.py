@@ -1,9 +1,12 @@
-"""The plots of any sweep (ncube.summary). One line per scene and V (and other options when
-they vary), deterministic output (no dates in the PNGs)."""
+"""The plots of any sweep (ncube.summary). One line per configuration: scene, V and every other
+option that varies in the sweep (named in the legend); deterministic output (no dates in the
+PNGs)."""
 import io
+import json
 
 import matplotlib
 
+from . import options as opts
 from . import output_file
 
 matplotlib.use("Agg")
@@ -17,24 +20,33 @@ def save(fig, path):
     return output_file.write(path, picture.getvalue())
 
 
+# What makes a cell's configuration, beside R: a line joins only cells equal in all of these.
+CONFIGURATION = (["scene", "V"] + [name for name in opts.OPTIONS if name not in ("R", "V")] +
+                 ["platform", "cost_model", "cfg"])
+
+
+def _hashable(value):
+    return json.dumps(value, sort_keys=True) if isinstance(value, (dict, list)) else value
+
+
 def _series(table, y):
-    """{(scene, V, other options): [(R, nodes, y)]} over the cells with a value."""
+    """{configuration: [(R, nodes, y)]} over the cells with a value: one series per value of
+    every configuration key (scene, V and every option), so that no line joins cells that
+    differ in anything but R."""
     groups = {}
     for row in table:
         if row.get(y) is None:
             continue
-        others = tuple((k, row[k]) for k in ("samples", "iterations", "ray_test", "visibility", "block_size",
-                                              "platform", "cost_model", "cfg") if row.get(k) is not None)
-        groups.setdefault((row["scene"], row["V"], others), []).append((row["R"], row["nodes"], row[y]))
+        key = tuple((k, _hashable(row.get(k))) for k in CONFIGURATION)
+        groups.setdefault(key, []).append((row["R"], row["nodes"], row[y]))
     return groups
 
 
 def _label(key, all_keys):
-    scene, V, others = key
-    varying = [k for k, (name, value) in enumerate(others)
-               if len({dict(o[2]).get(name) for o in all_keys}) > 1]
-    extra = "".join(f", {others[k][0]}={others[k][1]}" for k in varying)
-    return f"{scene} V={V}{extra}"
+    """The scene and V, then every other key whose value differs between the series."""
+    values = dict(key)
+    varying = [k for k in CONFIGURATION[2:] if len({dict(o).get(k) for o in all_keys}) > 1]
+    return f"{values['scene']} V={values['V']}" + "".join(f", {k}={values[k]}" for k in varying)
 
 
 def time_vs_R(table, ylabel, path):
