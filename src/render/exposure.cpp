@@ -1,6 +1,7 @@
 #include "render/exposure.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace ncube {
@@ -11,6 +12,10 @@ constexpr double kPercentileValue = 0.9;  // ... maps to this linear value (befo
 
 }  // namespace
 
+
+double srgb_encode(double c) {
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
 
 std::uint64_t percentile_rank(std::uint64_t count) {
   return count == 0 ? 0 : std::uint64_t(kPercentile * double(count - 1));

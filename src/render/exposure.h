@@ -13,6 +13,10 @@
 namespace ncube {
 
 
+// The sRGB encoding of a linear value in [0, 1] (the picture's, and the solution mesh's
+// vertex colours).
+double srgb_encode(double linear);
+
 // The order statistic the exposure uses, over one set of luminances.
 struct LuminanceSelection {
   std::uint64_t count = 0;  // values in the set

@@ -1,5 +1,7 @@
 #include "render/frame_share.h"
 
+#include "render/exposure.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -43,10 +45,6 @@ namespace {
 
 double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-}
-
-double srgb_encode(double c) {
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
 // Outlines: a sample within half a sample of its element's edge (a line one sample wide, in

@@ -26,16 +26,34 @@ double frame_exposure(const FrameShare& frame) {
   return exposure_scale(select_locally(lum[0]), select_locally(lum[1]));
 }
 
+namespace {
+
+// The scene's elements drawn into one frame that holds the whole picture.
+void draw_all(const Scene& scene, const std::vector<PatchSolution>& solution, FrameShare& frame,
+              RenderCounts& counts) {
+  std::vector<int> all_patches(scene.patches.size());
+  std::iota(all_patches.begin(), all_patches.end(), 0);
+  for (const RenderElement& element : render_elements(scene, solution, all_patches))
+    frame.draw(element, counts);
+}
+
+}  // namespace
+
 Image render_solution(const Scene& scene, const Camera& camera,
                       const std::vector<PatchSolution>& solution, int width, int height,
                       bool outline_elements) {
-  std::vector<int> all_patches(scene.patches.size());
-  std::iota(all_patches.begin(), all_patches.end(), 0);
-  const std::vector<RenderElement> elements = render_elements(scene, solution, all_patches);
   FrameShare frame(scene, camera, width, height, RowShare::whole(height), outline_elements);
   RenderCounts counts;
-  for (const RenderElement& element : elements) frame.draw(element, counts);
+  draw_all(scene, solution, frame, counts);
   return frame.resolve(frame_exposure(frame), counts);
+}
+
+double solution_exposure(const Scene& scene, const Camera& camera,
+                         const std::vector<PatchSolution>& solution, int width, int height) {
+  FrameShare frame(scene, camera, width, height, RowShare::whole(height), false);
+  RenderCounts counts;
+  draw_all(scene, solution, frame, counts);
+  return frame_exposure(frame);
 }
 
 }  // namespace ncube

@@ -34,6 +34,11 @@ Image render_solution(const Scene& scene, const Camera& camera,
                       const std::vector<PatchSolution>& solution, int width, int height,
                       bool outline_elements = false);
 
+// The exposure scale of that picture (render_solution's tone mapping), for colouring the
+// solution mesh as the picture is coloured.
+double solution_exposure(const Scene& scene, const Camera& camera,
+                         const std::vector<PatchSolution>& solution, int width, int height);
+
 // The exposure scale of a frame that holds the whole picture (the tone mapping above).
 double frame_exposure(const FrameShare& frame);
 

@@ -8,6 +8,7 @@
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "machine/simgrid_settings.h"
+#include "models/solution_mesh.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
@@ -70,7 +71,8 @@ int simulate(int argc, char** argv) {
   ncube::check_configuration(scene, options.config, platform);
   ncube::OutputFiles outputs({{"--json", options.json_file},
                               {"--trace", options.trace_file},
-                              {"--image", options.image_file}},
+                              {"--image", options.image_file},
+                              {"--mesh", options.mesh_file}},
                              {options.scene_file, options.config.platform_file,
                               options.config.cost_model_file});
   if (!options.config.memory_cap ||
@@ -100,6 +102,12 @@ int simulate(int argc, char** argv) {
                                  scene, scene.camera, result.solution,
                                  options.config.render.width, options.config.render.height,
                                  options.config.render.outline_elements)));
+  if (!options.mesh_file.empty() && result.status == ncube::RunStatus::kOk)
+    outputs.write("--mesh", ncube::solution_mesh_ply(
+                                scene, result.solution,
+                                ncube::solution_exposure(scene, scene.camera, result.solution,
+                                                         options.config.render.width,
+                                                         options.config.render.height)));
   outputs.commit();
   if (result.status == ncube::RunStatus::kOutOfMemory) {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",

@@ -123,6 +123,9 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       ->capture_default_str();
   table.file("--json", options.json_file, "output", "write the result file here");
   table.file("--image", options.image_file, "output", "render the solution to this PNG file");
+  table.file("--mesh", options.mesh_file, "output",
+             "write the solution as a mesh (PLY): every element a polygon, vertex colours "
+             "tone-mapped as the picture, raw radiosity as doubles");
   table.file("--trace", options.trace_file, "output",
              "write every node's timeline as a Chrome trace-event file (Perfetto)");
   bool quiet = false;

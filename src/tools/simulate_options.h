@@ -14,6 +14,7 @@ struct SimulateOptions {
   std::string json_file;   // empty: no result file
   std::string image_file;  // empty: no picture
   std::string trace_file;  // empty: no timeline
+  std::string mesh_file;   // empty: no solution mesh
   bool quiet = false;
   bool check_settings = false;  // --check-settings: check the SimGrid settings and stop
   std::vector<std::string> command_line;  // argv, for the result file's provenance
