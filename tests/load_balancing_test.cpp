@@ -115,6 +115,7 @@ void expect_memory_follows_the_elements(int R, int V, bool balance, int iteratio
   config.radiosity_processors = R;
   config.visibility_processors = V;
   config.options.max_iterations = iterations;
+  config.options.samples = 16;  // M = 16, as when it was the default
   config.options.subdivision.enabled = true;
   config.balancing.enabled = balance;
   const SimulationResult r =

@@ -12,6 +12,14 @@ namespace {
 
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
 
+// M = 16 (the paper's smaller M): the bytes below were counted with it, when it was the
+// default of ProgressiveOptions.
+ProgressiveOptions sixteen_samples() {
+  ProgressiveOptions options;
+  options.samples = 16;
+  return options;
+}
+
 ProgramOptions program_options(const ProgressiveOptions& algorithm, int block_size, bool pipelined) {
   ProgramOptions options;
   options.options = algorithm;
@@ -21,7 +29,7 @@ ProgramOptions program_options(const ProgressiveOptions& algorithm, int block_si
 }
 
 std::vector<NodeMemory> plan(const Scene& scene, int R, int V, int block_size, bool pipelined) {
-  const ProgramSetup setup{scene, Placement{R, V}, program_options({}, block_size, pipelined), 1.0};
+  const ProgramSetup setup{scene, Placement{R, V}, program_options(sixteen_samples(), block_size, pipelined), 1.0};
   return plan_memory(setup, partition_patches_by_elements(scene, R),
                      load_cost_model(repo("platforms/cost_model.json")));
 }
@@ -54,9 +62,9 @@ TEST(MemoryPlan, WithVisibilityProcessorsEachRoleHoldsItsShare) {
     const double in_flight = pipelined ? 2 : 1;
     const auto nodes = plan(scene, 2, 2, 3, pipelined);
     ASSERT_EQ(nodes.size(), 6u);
-    // Default samples: 64 (the calibrated setup), so each answer is an 8-byte mask.
-    const double rp_blocks = in_flight * 3 * (c.point_bytes + 2 * 8);
-    const double vp_blocks = in_flight * 3 * (c.point_bytes + 8);
+    // 16 samples (sixteen_samples()), so each answer is a 2-byte mask.
+    const double rp_blocks = in_flight * 3 * (c.point_bytes + 2 * 2);
+    const double vp_blocks = in_flight * 3 * (c.point_bytes + 2);
     EXPECT_DOUBLE_EQ(nodes[0].bytes, base + 2 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +
                                          6 * c.element_bytes + rp_blocks);
     EXPECT_DOUBLE_EQ(nodes[3].bytes, base + 2 * c.patch_geometry_bytes + 2 * c.patch_radiosity_bytes +
@@ -78,11 +86,11 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
   EXPECT_DOUBLE_EQ(c.octree_cell_bytes, 64);  // 6 floats, 8 pointers, list pointer and count
   EXPECT_DOUBLE_EQ(c.octree_reference_bytes, 4);
   const Scene scene = hand_counted_scene();
-  ProgressiveOptions octree;
+  ProgressiveOptions octree = sixteen_samples();
   octree.visibility = VisibilityMethod::kOctree;
   for (const int V : {0, 2}) {
     const auto partition = partition_patches_by_elements(scene, 2);
-    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options({}, 3, false), 1.0},
+    const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options(sixteen_samples(), 3, false), 1.0},
                                    partition, c);
     const auto with = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options(octree, 3, false), 1.0}, partition, c);
     ASSERT_EQ(brute.size(), with.size());

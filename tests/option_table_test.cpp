@@ -45,6 +45,12 @@ TEST(OptionTable, NegativeZeroReadsAsZero) {
   const auto closed = [&](OptionTable& t) { t.number("--x", value, {0.0, 1.0}, "", "x"); };
   ASSERT_TRUE(accepts(closed, "-0"));
   EXPECT_EQ(value, 0.0);
+  EXPECT_FALSE(std::signbit(value));  // -0.0 == 0.0: the sign is what the result file shows
+  for (const char* zero : {"-0.0", "-0e5", "-1e-400"}) {
+    value = 1;
+    ASSERT_TRUE(accepts(closed, zero)) << zero;
+    EXPECT_FALSE(std::signbit(value)) << zero;
+  }
 }
 
 TEST(OptionTable, IntegersAreDecimalAndSquaresSquare) {

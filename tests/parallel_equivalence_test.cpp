@@ -24,6 +24,7 @@ void expect_same_as_sequential(const std::string& scene_name, int R, int V, int 
                                bool subdivide = false, bool balance = false) {
   const Scene scene = load_scene(repo("scenes/" + scene_name));
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.max_iterations = iterations;
   options.subdivision.enabled = subdivide;
 

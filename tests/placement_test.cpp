@@ -80,7 +80,9 @@ TEST(Partition, VisibilitySharesSplitAllPatchesEvenly) {
 bool fits(const Scene& scene, int R, int V) {
   const PlatformConfig platform = load_platform_config(repo("platforms/ncube2.json"));
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
-  const ProgramSetup setup{scene, Placement{R, V}, ProgramOptions{}, 1.0};
+  ProgramOptions options;
+  options.options.samples = 16;  // M = 16, as when it was the default
+  const ProgramSetup setup{scene, Placement{R, V}, options, 1.0};
   const auto memory = plan_memory(setup, partition_patches_by_elements(scene, R), costs);
   return std::all_of(memory.begin(), memory.end(),
                      [&](const NodeMemory& m) { return m.bytes <= platform.node_memory; });

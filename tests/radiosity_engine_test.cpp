@@ -45,6 +45,7 @@ TEST(RadiosityEngine, WhiteFurnaceConvergesToEmissionOverOneMinusReflectance) {
   RadiosityEngine engine(box, all_patches(box));
   const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.convergence_fraction = 1e-6;
   const ProgressiveRun run = run_progressive(engine, occluders, options);
   ASSERT_TRUE(run.converged);
@@ -60,6 +61,7 @@ TEST(RadiosityEngine, OneShotInAClosedBoxDeliversAllTheShootersPower) {
   RadiosityEngine engine(box, all_patches(box));
   const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.max_iterations = 1;
   run_progressive(engine, occluders, options);
   double received = 0.0;
@@ -76,6 +78,7 @@ TEST(RadiosityEngine, TotalPowerNeverExceedsTheGeometricSeriesBound) {
   RadiosityEngine engine(box, all_patches(box));
   const FastOccluders occluders(box, all_patches(box), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.convergence_fraction = 1e-4;
   run_progressive(engine, occluders, options);
   double power = 0.0;
@@ -98,6 +101,7 @@ TEST(RadiosityEngine, ABlockerCastsAShadow) {
   RadiosityEngine engine(s, all_patches(s));
   const FastOccluders occluders(s, all_patches(s), RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.max_iterations = 1;
   const ProgressiveRun run = run_progressive(engine, occluders, options);
   ASSERT_EQ(run.shooters, std::vector<int>{0});
@@ -133,6 +137,7 @@ TEST(RadiosityEngine, TracingFromReceiversThatCannotSeeTheShooterChangesWorkNotL
   s.patches.push_back(light);
   s.build_elements();
   ProgressiveOptions skip, trace_all;
+  skip.samples = trace_all.samples = 16;  // M = 16, as when it was the default
   skip.max_iterations = trace_all.max_iterations = 1;  // the light shoots
   skip.skip_facing_away = true;
   trace_all.skip_facing_away = false;  // the default

@@ -170,6 +170,7 @@ TEST(SimulationFailure, NodeCountIsComputedWithoutOverflow) {
   // R x (V + 1) with V = 2^31 - 1 overflows an int; the check must still refuse it.
   const Scene scene = hand_counted_scene();
   SimulationConfig config;
+  config.options.samples = 16;  // M = 16, as when it was the default
   config.radiosity_processors = 2;
   config.visibility_processors = INT_MAX;
   EXPECT_THROW(check_configuration(scene, config, load_platform_config(repo("platforms/ncube2.json"))),
@@ -199,6 +200,7 @@ TEST(SimulationFailure, OutOfMemoryNeedsNoElements) {
   scene.elements.clear();
   scene.derive_patch_fields();
   SimulationConfig config;
+  config.options.samples = 16;  // M = 16, as when it was the default
   const PlatformConfig platform = load_platform_config(repo("platforms/ncube2.json"));
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));
   const OutOfMemory first = first_node_out_of_memory(scene, config, platform, costs);

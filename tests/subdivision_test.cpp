@@ -68,6 +68,7 @@ TEST(Subdivision, OneShotCutsRecursivelyAtTheShadowEdgeOnly) {
   RadiosityEngine engine(s, all);
   const FastOccluders occluders(s, all, RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.max_iterations = 1;
   options.subdivision.enabled = true;
   options.subdivision.contrast = 0.5;
@@ -108,6 +109,7 @@ TEST(Subdivision, OffByDefaultAndBoundedByTheRoomGiven) {
   RadiosityEngine engine(s, all);
   const FastOccluders occluders(s, all, RayTestPolicy::kTestAllPatches);
   ProgressiveOptions options;
+  options.samples = 16;  // M = 16 (the paper's smaller M), as when it was the default
   options.max_iterations = 1;
   run_progressive(engine, occluders, options);
   EXPECT_EQ(engine.store().element_count(), s.element_total());

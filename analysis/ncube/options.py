@@ -80,6 +80,10 @@ def _load():
 
 
 OPTIONS = _load()
+# --threads is no part of a cell's configuration (results do not depend on it), but the command
+# line still has to hold a value ./simulate takes: the same range, from the same description.
+_THREADS_CHECK = _range_check(next(d for d in json.loads(DESCRIPTION.read_text())
+                                   if d["flag"] == "--threads")["range"])
 # Not options of a cell's configuration but of how it is run or what it writes.
 FILE_OPTIONS = ("platform", "cost_model")
 OTHER_CELL_KEYS = ("cfg", "trace")
@@ -118,6 +122,10 @@ def command(simulate, scene, options, platform=None, cost_model=None, cfg=None, 
     """The ./simulate command line: every option written out, defaults included, so that the
     command says the whole configuration. `threads`: host threads of the run (not part of the
     configuration: results do not depend on it); 1 for sweeps, which run a cell per core."""
+    error = (None if isinstance(threads, int) and not isinstance(threads, bool)
+             else "must be a whole number") or _THREADS_CHECK(threads)
+    if error:
+        raise ValueError(f"threads: {threads!r} {error}")
     args = [str(simulate), str(scene)]
     for name, value in complete(options).items():
         option = OPTIONS[name]

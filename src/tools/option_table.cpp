@@ -59,6 +59,8 @@ CLI::Validator finite_number(ValueRange range) {
         const double value = std::strtod(text.c_str(), nullptr);
         if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
         if (!in_range(value, range)) return "'" + text + "' is out of range: must be " + range_words(range);
+        // -0 is 0: CLI11 would store -0.0, and the result file would record "-0.0".
+        if (value == 0.0) text = "0";
         return "";
       },
       "NUMBER");
@@ -106,7 +108,10 @@ CLI::Option* OptionTable::number(const std::string& flag, double& value, ValueRa
                                  const std::string& help, const std::string& field) {
   entry(flag, "number", help, field)
       .update({{"default", value}, {"range", range_json(range, false)}});
-  return app_.add_option(flag, value, help)->capture_default_str()->check(finite_number(range));
+  // transform, not check: a check's changes to the text are discarded (CLI11), and -0 has to
+  // become 0 before CLI11 converts it.
+  return app_.add_option(flag, value, help)->capture_default_str()->transform(
+      finite_number(range));
 }
 
 CLI::Option* OptionTable::choice(const std::string& flag, std::string& value,
