@@ -151,6 +151,12 @@ CLI::Option* OptionTable::positional(const std::string& name, std::string& value
   return app_.add_option(name, value, help);
 }
 
+void OptionTable::annotate(const std::string& flag, const std::string& key,
+                           const nlohmann::json& value) {
+  for (nlohmann::json& entry : entries_)
+    if (entry["flag"] == flag) entry[key] = value;
+}
+
 nlohmann::json OptionTable::describe() const { return entries_; }
 
 }  // namespace ncube

@@ -49,6 +49,9 @@ class OptionTable {
   // A positional argument.
   CLI::Option* positional(const std::string& name, std::string& value, const std::string& help);
 
+  // Adds `key: value` to the description of `flag` (e.g. "applies_to": "model files").
+  void annotate(const std::string& flag, const std::string& key, const nlohmann::json& value);
+
   // Every option registered, in order, as JSON (docs/cli.md, "Describing the options").
   nlohmann::json describe() const;
 

@@ -8,6 +8,7 @@
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "machine/simgrid_settings.h"
+#include "models/model_import.h"
 #include "models/solution_mesh.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
@@ -64,7 +65,20 @@ int simulate(int argc, char** argv) {
   if (options.check_settings) return ncube::kExitOk;
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
-  ncube::Scene scene = ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
+  // A model file is imported into the project's scene JSON, then loaded (and checked) as a
+  // scene file would be.
+  const bool model = ncube::is_model_file(options.scene_file);
+  if (!model && (options.import_options_given || !options.export_scene_file.empty()))
+    throw ncube::InputError(options.scene_file + ": --scale, --element-size, --element-budget, "
+                            "--flip-faces, --light and --export-scene apply to model files "
+                            "(.obj, .ply, .gltf, .glb) only");
+  ncube::ImportSummary imported;
+  const nlohmann::json imported_scene =
+      model ? ncube::import_model(options.scene_file, options.import, imported) : nlohmann::json();
+  ncube::Scene scene =
+      model ? ncube::parse_scene(imported_scene.dump(1), options.scene_file,
+                                 ncube::SceneElements::kLater)
+            : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
   const ncube::PlatformConfig platform =
       ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
@@ -72,7 +86,8 @@ int simulate(int argc, char** argv) {
   ncube::OutputFiles outputs({{"--json", options.json_file},
                               {"--trace", options.trace_file},
                               {"--image", options.image_file},
-                              {"--mesh", options.mesh_file}},
+                              {"--mesh", options.mesh_file},
+                              {"--export-scene", options.export_scene_file}},
                              {options.scene_file, options.config.platform_file,
                               options.config.cost_model_file});
   if (!options.config.memory_cap ||
@@ -92,6 +107,12 @@ int simulate(int argc, char** argv) {
       {options.command_line, options.scene_file, options.config.platform_file,
        options.config.cost_model_file},
       scene, platform, costs, result);
+  if (!options.quiet && model)
+    std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
+                 "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "
+                 "degenerate dropped, %ld pairs merged), %zu files read\n",
+                 imported.faces, imported.patches, imported.split, imported.degenerate,
+                 imported.merged, imported.files.size());
   if (!options.quiet)
     print_summary(outputs.uses_standard_output() ? stderr : stdout, scene, options.config, result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
@@ -102,6 +123,8 @@ int simulate(int argc, char** argv) {
                                  scene, scene.camera, result.solution,
                                  options.config.render.width, options.config.render.height,
                                  options.config.render.outline_elements)));
+  if (!options.export_scene_file.empty())
+    outputs.write("--export-scene", imported_scene.dump(1) + "\n");
   if (!options.mesh_file.empty() && result.status == ncube::RunStatus::kOk)
     outputs.write("--mesh", ncube::solution_mesh_ply(
                                 scene, result.solution,

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <limits>
 
+#include "scene/scene_loader.h"
 #include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
@@ -115,6 +116,35 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.flag("--outline-elements", config.render.outline_elements,
              "draw each element's edges as thin dark lines in the picture (to see the mesh)",
              "outline_elements");
+  // A model file (OBJ, PLY, glTF) instead of a scene: docs/scene-format.md, "Importing models".
+  ImportOptions& import = options.import;
+  std::vector<CLI::Option*> import_options = {
+      // Within [1e-100, 1e100] a model's squared lengths stay far from overflow and
+      // underflow, as the scene loader's own scaling keeps them (docs/scene-format.md).
+      table.number("--scale", import.scale, {1e-100, 1e100},
+                   "model files: multiply every coordinate by this", ""),
+      table.number("--element-size", import.element_size, {0.0, 1e300},
+                   "model files: cut patches into elements about this long on a side (0: by "
+                   "--element-budget)",
+                   ""),
+      table.integer("--element-budget", import.element_budget, 0, int(kMaxElementsPerScene),
+                    "model files: elements over the whole scene, spread over the patches by "
+                    "area (0: 16 per patch)",
+                    ""),
+      table.flag("--flip-faces", import.flip_faces,
+                 "model files: turn every face around (normals that point inward)", ""),
+      table.flag("--merge-coplanar", import.merge_coplanar,
+                 "model files: merge two triangles of one material that make a planar convex "
+                 "quadrilateral into one patch",
+                 ""),
+      table.setting("--light", import.lights, "NAME[=R,G,B]",
+                    "model files: the material or mesh NAME emits R,G,B (default 1,1,1); "
+                    "repeatable")};
+  table.file("--export-scene", options.export_scene_file, "output",
+             "model files: write the imported scene as the project's JSON");
+  for (const char* flag : {"--scale", "--element-size", "--element-budget", "--flip-faces",
+                           "--merge-coplanar", "--light", "--export-scene"})
+    table.annotate(flag, "applies_to", "model files");
   table.file("--platform", config.platform_file, "file", "machine description",
              "platforms/ncube2.json")
       ->capture_default_str();
@@ -178,6 +208,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     std::cerr << "simulate: " << e.what() << "\n(see simulate --help)\n";
     return kExitBadInput;
   }
+  for (CLI::Option* option : import_options)
+    options.import_options_given = options.import_options_given || option->count() > 0;
   if (options.scene_file.empty() && !options.check_settings) {
     std::cerr << "simulate: scene is required\n(see simulate --help)\n";
     return kExitBadInput;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "models/model_import.h"
 #include "simulation/simulation.h"
 
 namespace ncube {
@@ -15,6 +16,9 @@ struct SimulateOptions {
   std::string image_file;  // empty: no picture
   std::string trace_file;  // empty: no timeline
   std::string mesh_file;   // empty: no solution mesh
+  std::string export_scene_file;  // empty: the imported model is not written as JSON
+  ImportOptions import;    // how a model file becomes a scene (docs/scene-format.md)
+  bool import_options_given = false;
   bool quiet = false;
   bool check_settings = false;  // --check-settings: check the SimGrid settings and stop
   std::vector<std::string> command_line;  // argv, for the result file's provenance

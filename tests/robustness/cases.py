@@ -409,6 +409,12 @@ def _past(end, step, kind):
     return repr(end * (1 + 1e-9 * step) if end else 1e-300 * step)
 
 
+# Model-file options run on tests/models/room.obj: what they must end with beyond the range
+# (a grid so fine that the elements do not fit a 4 MB node is out of memory, exit 3).
+MODEL_OUTCOMES = {"--element-size": lambda v: "ok" if v == 0 or v >= 0.05 else "oom",
+                  "--element-budget": lambda v: "ok" if v <= 10000 else "oom"}
+
+
 def number_cases(simulate, work):
     """Every numeric option that `simulate --describe-options` lists (so a new option is tried
     without a new line here) x the special values, its range's ends and one past each end."""
@@ -416,6 +422,10 @@ def number_cases(simulate, work):
                                           capture_output=True, text=True).stdout)
     scene, out = work / "numbers.json", work / "numbers.out.json"
     scene.write_text(json.dumps(ROOM))
+    models = Path(__file__).resolve().parents[1] / "models"
+    model_scene = work / "numbers-room.obj"
+    model_scene.write_bytes((models / "room.obj").read_bytes())
+    (work / "room.mtl").write_bytes((models / "room.mtl").read_bytes())
     cases = []
     for option in described:
         if option["kind"] not in ("integer", "number"):
@@ -426,13 +436,17 @@ def number_cases(simulate, work):
         for end, step in ((r["low"], -1), (r["high"], 1)):
             texts += [str(end) if option["kind"] == "integer" else repr(float(end)),
                       _past(end, step, option["kind"])]
+        model = option.get("applies_to") == "model files"
         for text in dict.fromkeys(texts):
             ok = _accepts(option, text)
+            expect = "ok" if ok else "error"
+            if ok and option["flag"] in MODEL_OUTCOMES:
+                expect = MODEL_OUTCOMES[option["flag"]](float(text))
             iterations = [] if option["flag"] == "--iterations" else QUICK
             cases.append({"group": "numbers", "name": f"{option['flag']} {text!r}",
-                          "args": [str(scene), *iterations, option["flag"], text,
-                                   "--json", str(out)],
-                          "expect": "ok" if ok else "error", "outputs": [out],
+                          "args": [str(model_scene if model else scene), *iterations,
+                                   option["flag"], text, "--json", str(out)],
+                          "expect": expect, "outputs": [out],
                           "names": None if ok else _named(option, text)})
         assert ends
     return cases

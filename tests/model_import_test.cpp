@@ -1,0 +1,248 @@
+// Models in (src/models/model_import.h): a hand-written OBJ + MTL whose patches, areas,
+// reflectances and emission were worked out by hand (tests/models/room.obj), the Cornell box
+// written as OBJ from the published data against scenes/cornell-box.json, the same model as
+// glTF, and bad files, each refused with one message.
+#include "models/model_import.h"
+
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "util/input_error.h"
+
+namespace ncube {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string model(const std::string& name) {
+  return std::string(NCUBE_SOURCE_DIR) + "/tests/models/" + name;
+}
+
+double area(const nlohmann::json& patch) {
+  const auto v = [&patch](std::size_t k, int c) { return patch["vertices"][k][std::size_t(c)].get<double>(); };
+  double n[3] = {0, 0, 0};
+  const std::size_t count = patch["vertices"].size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t j = (i + 1) % count;
+    n[0] += (v(i, 1) - v(j, 1)) * (v(i, 2) + v(j, 2));
+    n[1] += (v(i, 2) - v(j, 2)) * (v(i, 0) + v(j, 0));
+    n[2] += (v(i, 0) - v(j, 0)) * (v(i, 1) + v(j, 1));
+  }
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+TEST(ModelImport, ReadsTheHandWrittenRoom) {
+  ImportSummary summary;
+  const nlohmann::json scene = import_model(model("room.obj"), {}, summary);
+  // 7 faces: 4 quads kept (light, floor, wall; the quad with a repeated corner is a triangle),
+  // the bent quad cut in 2, the pentagon in 3, the flat triangle dropped.
+  EXPECT_EQ(summary.faces, 7);
+  EXPECT_EQ(summary.split, 2);
+  EXPECT_EQ(summary.degenerate, 1);
+  ASSERT_EQ(summary.patches, 9);
+  const nlohmann::json& p = scene["patches"];
+  ASSERT_EQ(p.size(), 9u);
+  const double areas[] = {1, 1, 2, 0, 0, 0.5, 0.5, 0.25, 0.5};
+  for (std::size_t k : {0u, 1u, 2u, 5u, 6u, 7u, 8u}) EXPECT_NEAR(area(p[k]), areas[k], 1e-12) << k;
+  // The bent quad's halves: cut along its diagonal from corner 0 (1,0,0)-(1.1,2,1).
+  EXPECT_EQ(p[3]["vertices"], nlohmann::json::parse("[[1,0,0],[1,0,1],[1.1,2,1]]"));
+  EXPECT_EQ(p[4]["vertices"], nlohmann::json::parse("[[1.1,2,1],[1,2,0],[1,0,0]]"));
+  // Kd and Ke as the MTL writes them (0.6 exactly, not the float 0.60000002).
+  EXPECT_EQ(p[0]["emission"], nlohmann::json::parse("[10,8,6]"));
+  EXPECT_EQ(p[0]["reflectance"], nlohmann::json::parse("[0.5,0.5,0.5]"));
+  EXPECT_EQ(p[1]["reflectance"], nlohmann::json::parse("[0.6,0.5,0.4]"));
+  EXPECT_EQ(p[2]["reflectance"], nlohmann::json::parse("[0.7,0.7,0.7]"));
+  for (std::size_t k = 1; k < p.size(); ++k) EXPECT_FALSE(p[k].contains("emission")) << k;
+  EXPECT_EQ(scene["name"], "room");
+  EXPECT_EQ(summary.files.size(), 2u);  // the OBJ and its MTL
+}
+
+TEST(ModelImport, ElementsFollowTheBudgetOrTheSize) {
+  ImportSummary summary;
+  ImportOptions options;
+  long total = 0;
+  const nlohmann::json scene = import_model(model("room.obj"), options, summary);
+  for (const nlohmann::json& patch : scene["patches"])
+    total += patch["elements"][0].get<long>() * patch["elements"][1].get<long>();
+  // 16 per patch by default, spread by area: about 9 x 16 in all (rounding per patch).
+  EXPECT_GT(total, 9 * 12);
+  EXPECT_LT(total, 9 * 20);
+  options.element_size = 0.25;  // the 1 x 2 wall: 4 x 8 cells
+  const nlohmann::json sized = import_model(model("room.obj"), options, summary);
+  EXPECT_EQ(sized["patches"][2]["elements"], nlohmann::json::parse("[4,8]"));
+  options.scale = 2.0;          // twice as large: 8 x 16 cells of 0.25
+  const nlohmann::json scaled = import_model(model("room.obj"), options, summary);
+  EXPECT_EQ(scaled["patches"][2]["elements"], nlohmann::json::parse("[8,16]"));
+  EXPECT_EQ(scaled["patches"][2]["vertices"][2], nlohmann::json::parse("[2,4,0]"));
+}
+
+TEST(ModelImport, FlipsFacesAndMarksLights) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.flip_faces = true;
+  options.lights = {"wall=1,2,3"};
+  const nlohmann::json scene = import_model(model("room.obj"), options, summary);
+  EXPECT_EQ(scene["patches"][1]["vertices"][1], nlohmann::json::parse("[1,0,1]"));  // reversed
+  EXPECT_EQ(scene["patches"][2]["emission"], nlohmann::json::parse("[1,2,3]"));
+  options.lights = {"wall=1,2"};
+  EXPECT_THROW(import_model(model("room.obj"), options, summary), InputError);
+}
+
+// The Cornell box as OBJ gives scenes/cornell-box.json's patches exactly: the same corners,
+// reflectances and emission, in the same order (the bent right wall cut as the generator cuts it).
+TEST(ModelImport, TheCornellBoxObjIsTheCornellBoxScene) {
+  ImportSummary summary;
+  const nlohmann::json imported = import_model(model("cornell-box.obj"), {}, summary);
+  std::ifstream in(std::string(NCUBE_SOURCE_DIR) + "/scenes/cornell-box.json");
+  const nlohmann::json reference = nlohmann::json::parse(in);
+  ASSERT_EQ(imported["patches"].size(), reference["patches"].size());
+  for (std::size_t k = 0; k < reference["patches"].size(); ++k) {
+    const nlohmann::json& a = imported["patches"][k];
+    const nlohmann::json& b = reference["patches"][k];
+    EXPECT_EQ(a["vertices"], b["vertices"]) << k;
+    EXPECT_EQ(a["reflectance"], b["reflectance"]) << k;
+    EXPECT_EQ(a.value("emission", nlohmann::json()), b.value("emission", nlohmann::json())) << k;
+  }
+}
+
+// A model through Assimp's glTF exporter: glTF holds triangles only, so each quad comes back as
+// two, and --merge-coplanar makes them one patch again: the same scene document, so the same
+// run. Through Assimp's PLY exporter the same patches come back (PLY has no materials).
+TEST(ModelImport, GltfAndPlyOfAModelAreTheSameScene) {
+  Assimp::Importer importer;
+  const aiScene* quads = importer.ReadFile(model("quads.obj"), 0);
+  ASSERT_NE(quads, nullptr);
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_formats";
+  fs::create_directories(dir);
+  Assimp::Exporter exporter;
+  ASSERT_EQ(exporter.Export(quads, "gltf2", (dir / "quads.gltf").string()), aiReturn_SUCCESS)
+      << exporter.GetErrorString();
+  ASSERT_EQ(exporter.Export(quads, "ply", (dir / "quads.ply").string()), aiReturn_SUCCESS)
+      << exporter.GetErrorString();
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  nlohmann::json gltf, ply;
+  const nlohmann::json obj = import_model(model("quads.obj"), options, summary);
+  EXPECT_EQ(summary.merged, 0);
+  try {
+    gltf = import_model((dir / "quads.gltf").string(), options, summary);
+    EXPECT_EQ(summary.merged, 3);  // the three quads' halves
+    options.lights = {"quads"};    // a PLY names no material: its file name marks it a light
+    ply = import_model((dir / "quads.ply").string(), options, summary);
+  } catch (const InputError& e) {
+    FAIL() << e.what();
+  }
+  fs::remove_all(dir);
+  EXPECT_EQ(gltf["patches"], obj["patches"]);
+  ASSERT_EQ(ply["patches"].size(), obj["patches"].size());
+  for (std::size_t k = 0; k < obj["patches"].size(); ++k)
+    EXPECT_EQ(ply["patches"][k]["vertices"], obj["patches"][k]["vertices"]) << k;
+}
+
+struct BadModel : testing::Test {
+  fs::path dir;
+  void SetUp() override {
+    dir = fs::path(testing::TempDir()) /
+          ("bad_model_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  // The message of importing a file with `text`, or "" if it was accepted.
+  std::string refusal(const std::string& name, const std::string& text, ImportOptions options = {}) {
+    const fs::path path = dir / name;
+    std::ofstream(path, std::ios::binary) << text;
+    ImportSummary summary;
+    try {
+      import_model(path.string(), options, summary);
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      return message;
+    }
+    return "";
+  }
+};
+
+const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+TEST_F(BadModel, OutOfRangeIndex) {
+  EXPECT_NE(refusal("a.obj", std::string(kTriangle) + "f 1 2 9\n").find("out of range"), std::string::npos);
+}
+
+TEST_F(BadModel, NanCoordinate) {
+  EXPECT_NE(refusal("a.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("not a finite point"),
+            std::string::npos);
+}
+
+TEST_F(BadModel, MissingMaterialLibrary) {
+  EXPECT_NE(refusal("a.obj", std::string("mtllib gone.mtl\n") + kTriangle + "usemtl x\nf 1 2 3\n")
+                .find("gone.mtl, which cannot be opened"),
+            std::string::npos);
+}
+
+TEST_F(BadModel, FacesWithOneOrTwoCorners) {
+  EXPECT_NE(refusal("a.obj", std::string(kTriangle) + "f 1 2\n").find("2 corners"), std::string::npos);
+  EXPECT_NE(refusal("b.obj", std::string(kTriangle) + "f 1\n").find("1 corner"), std::string::npos);
+}
+
+TEST_F(BadModel, ReflectanceOfOneOrMore) {
+  std::ofstream(dir / "a.mtl") << "newmtl white\nKd 1 1 1\nKe 1 1 1\n";
+  EXPECT_NE(refusal("a.obj", std::string("mtllib a.mtl\n") + kTriangle + "usemtl white\nf 1 2 3\n")
+                .find("material \"white\": reflectance"),
+            std::string::npos);
+}
+
+TEST_F(BadModel, NoLight) {
+  EXPECT_NE(refusal("a.obj", std::string(kTriangle) + "f 1 2 3\n").find("--light"), std::string::npos);
+}
+
+TEST_F(BadModel, GltfWithABrokenBuffer) {
+  const std::string gltf =
+      R"({"asset":{"version":"2.0"},"buffers":[{"uri":"gone.bin","byteLength":36}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,)"
+      R"("componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],)"
+      R"("scenes":[{"nodes":[0]}],"scene":0})";
+  EXPECT_NE(refusal("a.gltf", gltf).find("gone.bin"), std::string::npos);
+  std::ofstream(dir / "short.bin", std::ios::binary) << std::string(12, '\0');  // 12 of 36 bytes
+  std::string short_buffer = gltf;
+  short_buffer.replace(short_buffer.find("gone.bin"), 8, "short.bin");
+  EXPECT_NE(refusal("b.gltf", short_buffer), "");
+}
+
+TEST_F(BadModel, PlyThatLiesAboutItsLength) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 100\nproperty float x\n"
+                             "property float y\nproperty float z\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n";
+  EXPECT_NE(refusal("a.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").find("declares 100 vertex"),
+            std::string::npos);
+  const std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                             "property float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_NE(refusal("b.ply", binary + std::string(20, '\0')).find("bytes of data"), std::string::npos);
+}
+
+TEST_F(BadModel, TooLargeIsRefusedBeforeReading) {
+  const fs::path path = dir / "huge.obj";
+  std::ofstream(path) << "v 0 0 0\n";
+  fs::resize_file(path, (std::uintmax_t(256) << 20) + 1);  // sparse: no disk used
+  ImportSummary summary;
+  try {
+    import_model(path.string(), {}, summary);
+    FAIL() << "a model over 256 MiB was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ncube
