@@ -82,6 +82,22 @@ def test_validation(work):
         check(False, "the same cell twice is refused")
     except sweep.SweepError as e:
         check("same configuration" in str(e), "the same cell twice is refused")
+    # A model file as a cell's scene: imported by ./simulate, its MTL part of the identity.
+    models = Path(__file__).resolve().parent / "models"
+    for name in ("cornell-box.obj", "cornell-box.mtl"):
+        (work / name).write_bytes((models / name).read_bytes())
+    (work / "m.yaml").write_text("grid: {scene: [cornell-box.obj], R: [1, 4]}\n")
+    before = [c.id for c in sweep.load(work / "m.yaml").cells]
+    check(len(before) == 2, "a sweep over a model file has its cells")
+    (work / "cornell-box.mtl").write_text((models / "cornell-box.mtl").read_text().replace("0.725", "0.7"))
+    after = [c.id for c in sweep.load(work / "m.yaml").cells]
+    check(not set(before) & set(after), "editing the model's MTL makes other cells")
+    (work / "m2.yaml").write_text("grid: {scene: [cornell-box.obj], R: [18]}\n")
+    try:
+        sweep.load(work / "m2.yaml")
+        check(False, "R above a model's patches refused")
+    except sweep.SweepError as e:
+        check("17 patches" in str(e), f"R above a model's patches refused ({e})")
     # The defaults the identity writes out are simulate's own.
     result = simulate.run("scene0", {"iterations": 0})
     check(result["config"] == dict(options.config_fields({"iterations": 0}), nodes=1),

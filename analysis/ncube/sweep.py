@@ -51,7 +51,7 @@ def simgrid_settings_problem(cfg):
 
 
 CELL_KEYS = dict({name: option.doc or name for name, option in opts.OPTIONS.items()},
-                 scene="a scene file: a path (relative to the sweep file) or a name in scenes/",
+                 scene="a scene or model file (.obj, .ply, .gltf, .glb): a path (relative to the sweep file) or a name in scenes/",
                  platform="a platform file (JSON or SimGrid XML): a path or a name in platforms/",
                  cost_model="a cost-model file: a path or a name in platforms/",
                  cfg="SimGrid settings, {name: value} (./simulate --cfg=name:value)",
@@ -82,6 +82,7 @@ class Cell:
     cfg: dict = field(default_factory=dict)
     trace: bool = False
     paper_row: dict = None
+    scene_parts_sha256: str = ""  # a model's MTL and buffers (parts_sha256)
     nodes: int = 0              # the platform's
 
     @property
@@ -93,9 +94,12 @@ class Cell:
         return self.options["V"]
 
     def identity(self):
-        return {"scene_sha256": self.scene_sha256, "platform_sha256": self.platform_sha256,
-                "cost_model_sha256": self.cost_model_sha256, "options": self.options,
-                "cfg": {k: str(v) for k, v in sorted(self.cfg.items())}, "trace": self.trace}
+        identity = {"scene_sha256": self.scene_sha256, "platform_sha256": self.platform_sha256,
+                    "cost_model_sha256": self.cost_model_sha256, "options": self.options,
+                    "cfg": {k: str(v) for k, v in sorted(self.cfg.items())}, "trace": self.trace}
+        if self.scene_parts_sha256:   # only models have parts: scene files keep their ids
+            identity["scene_parts_sha256"] = self.scene_parts_sha256
+        return identity
 
     @property
     def id(self):
@@ -181,10 +185,59 @@ def platform_nodes(path):
     return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
 
 
+MODEL_SUFFIXES = (".obj", ".ply", ".gltf", ".glb")   # models ./simulate imports
+
+
+def is_model(path):
+    return Path(path).suffix.lower() in MODEL_SUFFIXES
+
+
+@functools.lru_cache(maxsize=None)
+def _imported(path):
+    """A model as ./simulate imports it (its scene JSON, written to stdout)."""
+    run = subprocess.run([paths.simulate_binary(), path, "--iterations", "0", "--quiet",
+                          "--export-scene", "-"], capture_output=True, text=True,
+                         env=paths.simulate_environment())
+    if run.returncode != 0:
+        raise ValueError(run.stderr.strip().removeprefix("simulate: "))
+    return json.loads(run.stdout)
+
+
 def scene_summary(path):
-    """(name, patches) of a scene file."""
-    scene = json.loads(Path(path).read_text())
+    """(name, patches) of a scene file, or of a model as imported."""
+    scene = _imported(str(path)) if is_model(path) else json.loads(Path(path).read_text())
     return scene.get("name", Path(path).stem), len(scene.get("patches", []))
+
+
+def model_parts(path):
+    """The files a model reads besides itself: an OBJ's material libraries, a glTF's buffers
+    and images (relative URIs; a data: URI is inside the file)."""
+    path = Path(path)
+    parts = []
+    if path.suffix.lower() == ".obj":
+        for line in path.read_text(errors="replace").splitlines():
+            words = line.split()
+            if words and words[0] == "mtllib":
+                parts += [path.parent / name for name in words[1:]]
+    elif path.suffix.lower() == ".gltf":
+        document = json.loads(path.read_text())
+        for item in document.get("buffers", []) + document.get("images", []):
+            uri = item.get("uri", "")
+            if uri and not uri.startswith("data:"):
+                parts.append(path.parent / uri)
+    return parts
+
+
+def parts_sha256(path):
+    """One digest of every file a model reads besides itself ("" for a scene file or a model
+    that reads nothing else): part of the cell's identity, so editing an MTL makes new cells."""
+    parts = model_parts(path) if is_model(path) else []
+    if not parts:
+        return ""
+    digest = hashlib.sha256()
+    for part in parts:
+        digest.update(f"{part.name}\0{file_sha256(part)}\0".encode())
+    return "sha256:" + digest.hexdigest()
 
 
 def _expand(document, where):
@@ -263,7 +316,8 @@ def _cell(spec, label, sweep_name, base, where):
         fail("paper_row", "expected {R: ..., V: ...}")
     try:
         scene_name, patches = scene_summary(files["scene"])
-    except (ValueError, AttributeError) as e:
+        scene_parts = parts_sha256(files["scene"])
+    except (ValueError, AttributeError, OSError) as e:
         fail("scene", f"{files['scene']}: not a scene file ({e})")
     try:
         nodes = platform_nodes(files["platform"])
@@ -281,7 +335,7 @@ def _cell(spec, label, sweep_name, base, where):
                 cost_model_file=str(files["cost_model"]),
                 cost_model_sha256=file_sha256(files["cost_model"]), options=options,
                 cfg={str(k): v for k, v in cfg.items()}, trace=trace, paper_row=paper_row,
-                nodes=nodes)
+                nodes=nodes, scene_parts_sha256=scene_parts)
 
 
 def load(path):
