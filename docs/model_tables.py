@@ -128,28 +128,38 @@ def rewritten(text, generated, tag="model-tables", document="docs/model.md"):
     return text
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def generate(script, document, what, source, rewrite):
+    """The command line of a table generator: `rewrite()` gives the document's current and
+    wanted text; --check compares them (exit 1 when they differ), else the document is
+    rewritten. docs/options_table.py uses it too."""
+    parser = argparse.ArgumentParser(description="Writes %s of %s from %s." % (what, document, source))
     parser.add_argument("--check", action="store_true",
-                        help="do not write: exit 1 if docs/model.md differs from the JSON")
+                        help="do not write: exit 1 if %s differs from %s" % (document, source))
     args = parser.parse_args()
     try:
-        current = MODEL_DOC.read_text(encoding="utf-8")
-        wanted = rewritten(current, tables())
+        current, wanted = rewrite()
     except (Problem, OSError, ValueError, KeyError) as e:
-        print("docs/model_tables.py: %s" % e, file=sys.stderr)
+        print("%s: %s" % (script, e), file=sys.stderr)
         return 2
     if args.check:
         if wanted != current:
-            print("docs/model.md: the cost-model tables differ from platforms/cost_model.json; "
-                  "run: /usr/bin/python3 docs/model_tables.py", file=sys.stderr)
+            print("%s: %s disagree with %s; run: /usr/bin/python3 %s" % (document, what, source, script),
+                  file=sys.stderr)
             return 1
-        print("docs/model.md: cost-model tables match platforms/cost_model.json")
+        print("%s: %s agree with %s" % (document, what, source))
         return 0
     if wanted != current:
-        MODEL_DOC.write_text(wanted, encoding="utf-8")
-        print("wrote the cost-model tables of docs/model.md")
+        (ROOT / document).write_text(wanted, encoding="utf-8")
+        print("wrote %s of %s" % (what, document))
     return 0
+
+
+def main():
+    def rewrite():
+        current = MODEL_DOC.read_text(encoding="utf-8")
+        return current, rewritten(current, tables())
+    return generate("docs/model_tables.py", "docs/model.md", "the cost-model tables",
+                    "platforms/cost_model.json", rewrite)
 
 
 if __name__ == "__main__":

@@ -11,13 +11,12 @@ marker comments `<!-- options:all begin -->` and `<!-- options:all end -->`; the
 docs/cli.md is left as it is. Python 3 standard library only.
 """
 
-import argparse
 import json
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from model_tables import Problem, cell, rewritten  # noqa: E402
+from model_tables import cell, generate, rewritten  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 DESCRIPTION = ROOT / "analysis" / "ncube" / "simulate_options.json"
@@ -85,28 +84,12 @@ def table(options):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--check", action="store_true",
-                        help="do not write: exit 1 if docs/cli.md differs from the description")
-    args = parser.parse_args()
-    try:
+    def rewrite():
         options = json.loads(DESCRIPTION.read_text(encoding="utf-8"))
         current = CLI_DOC.read_text(encoding="utf-8")
-        wanted = rewritten(current, {"all": table(options)}, "options", "docs/cli.md")
-    except (Problem, OSError, ValueError, KeyError) as e:
-        print("docs/options_table.py: %s" % e, file=sys.stderr)
-        return 2
-    if args.check:
-        if wanted != current:
-            print("docs/cli.md: the option table differs from analysis/ncube/simulate_options.json;"
-                  " run: /usr/bin/python3 docs/options_table.py", file=sys.stderr)
-            return 1
-        print("docs/cli.md: the option table matches analysis/ncube/simulate_options.json")
-        return 0
-    if wanted != current:
-        CLI_DOC.write_text(wanted, encoding="utf-8")
-        print("wrote the option table of docs/cli.md")
-    return 0
+        return current, rewritten(current, {"all": table(options)}, "options", "docs/cli.md")
+    return generate("docs/options_table.py", "docs/cli.md", "the option table",
+                    "analysis/ncube/simulate_options.json", rewrite)
 
 
 if __name__ == "__main__":
