@@ -148,6 +148,25 @@ TEST(ModelImport, GltfAndPlyOfAModelAreTheSameScene) {
     EXPECT_EQ(ply["patches"][k]["vertices"], obj["patches"][k]["vertices"]) << k;
 }
 
+// tests/models/lamp.gltf, written by hand: a camera node at (0.5, 1, 3) with yfov 0.75 rad
+// looking down its -z, a light of emissive (1, 0.8, 0.6) x KHR_materials_emissive_strength 10,
+// and a floor quad as two triangles.
+TEST(ModelImport, ReadsTheGltfCameraAndEmissiveStrength) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  const nlohmann::json scene = import_model(model("lamp.gltf"), options, summary);
+  EXPECT_EQ(scene["camera"]["eye"], nlohmann::json::parse("[0.5,1,3]"));
+  EXPECT_EQ(scene["camera"]["look_at"], nlohmann::json::parse("[0.5,1,2]"));
+  EXPECT_EQ(scene["camera"]["up"], nlohmann::json::parse("[0,1,0]"));
+  EXPECT_NEAR(scene["camera"]["fov_deg"].get<double>(), 0.75 * 180 / M_PI, 1e-4);
+  ASSERT_EQ(scene["patches"].size(), 2u);
+  EXPECT_EQ(scene["patches"][0]["emission"], nlohmann::json::parse("[10,8,6]"));
+  EXPECT_EQ(scene["patches"][1]["reflectance"], nlohmann::json::parse("[0.25,0.5,0.75]"));
+  EXPECT_EQ(scene["patches"][1]["vertices"].size(), 4u);  // the floor's two triangles, merged
+  EXPECT_EQ(summary.merged, 1);
+}
+
 struct BadModel : testing::Test {
   fs::path dir;
   void SetUp() override {

@@ -12,6 +12,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -210,9 +213,6 @@ Material read_material(const aiMaterial& m, const std::string& where) {
   aiColor3D emissive;
   if (m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == aiReturn_SUCCESS)
     result.emission = as_written(emissive.r, emissive.g, emissive.b);
-  float strength = 1.0f;
-  if (m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) == aiReturn_SUCCESS)
-    result.emission *= as_written(strength);
   for (int c = 0; c < 3; ++c) {
     if (!(result.reflectance[c] >= 0.0 && result.reflectance[c] < 1.0))
       throw InputError(where + ": reflectance (Kd, base colour) " + show(result.reflectance) +
@@ -327,6 +327,35 @@ void check_ply_length(const std::string& path) {
   }
 }
 
+// KHR_materials_emissive_strength of each glTF material, in the file's order (Assimp 5.2 does
+// not read it; its materials keep the file's order). 1 where a material has none.
+std::vector<double> gltf_emissive_strengths(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (lower_extension(path) == ".glb") {  // 12-byte header, then the JSON chunk
+    if (text.size() < 20) return {};
+    std::uint32_t length = 0;
+    std::memcpy(&length, text.data() + 12, 4);
+    text = text.substr(20, std::min<std::size_t>(length, text.size() - 20));
+  }
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+  std::vector<double> strengths;
+  if (!document.is_object() || !document.contains("materials") || !document["materials"].is_array())
+    return strengths;
+  for (const nlohmann::json& material : document["materials"]) {
+    double strength = 1.0;
+    const nlohmann::json* extensions = material.is_object() && material.contains("extensions")
+                                           ? &material["extensions"] : nullptr;
+    if (extensions && extensions->is_object() && extensions->contains("KHR_materials_emissive_strength")) {
+      const nlohmann::json& e = (*extensions)["KHR_materials_emissive_strength"];
+      if (e.is_object() && e.contains("emissiveStrength") && e["emissiveStrength"].is_number())
+        strength = e["emissiveStrength"].get<double>();
+    }
+    strengths.push_back(strength);
+  }
+  return strengths;
+}
+
 struct ImportedPatch {
   std::vector<Point> corners;
   Material material;
@@ -425,6 +454,8 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   }
 
   const bool vertex_colours = lower_extension(path) == ".ply";
+  const bool gltf = lower_extension(path) == ".gltf" || lower_extension(path) == ".glb";
+  const std::vector<double> strengths = gltf ? gltf_emissive_strengths(path) : std::vector<double>();
   std::vector<ImportedPatch> patches;
   // The meshes in the order of the file's nodes (an OBJ's groups as written), each through
   // its node's transformation (glTF node hierarchies).
@@ -446,6 +477,13 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     // PLY has no materials (Assimp invents a white one): its reflectance is its vertex colours,
     // else the default.
     Material material = vertex_colours ? Material{} : read_material(ai_material, where);
+    if (mesh.mMaterialIndex < strengths.size()) {
+      const double strength = strengths[mesh.mMaterialIndex];
+      if (!(strength >= 0.0) || !std::isfinite(strength))
+        throw InputError(where + ": KHR_materials_emissive_strength " + std::to_string(strength) +
+                         ": must be finite and not negative");
+      material.emission *= strength;
+    }
     // A PLY has no material names: --light names its file (all of it emits).
     light_for(options.lights, mesh_name, material.emission) ||
         light_for(options.lights, material_name, material.emission) ||
@@ -516,20 +554,22 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
                                    : double(kDefaultElementsPerPatch) * double(patches.size()));
   nlohmann::json scene = {{"name", fs::path(path).stem().string()}};
   if (model->mNumCameras > 0) {
+    // Assimp 5.2's glTF reader, the only one here with cameras, stores the node's
+    // translation in the camera's own position as well (so the node's transformation alone
+    // places it) and yfov x aspect in mHorizontalFOV (so yfov is that over the aspect).
     const aiCamera& camera = *model->mCameras[0];
     aiMatrix4x4 transform;
     for (const aiNode* node = model->mRootNode->FindNode(camera.mName); node; node = node->mParent)
       transform = node->mTransformation * transform;
-    const aiVector3D eye = transform * camera.mPosition;
-    const aiVector3D look = transform * (camera.mPosition + camera.mLookAt);
+    const aiVector3D eye = transform * aiVector3D(0, 0, 0);
+    const aiVector3D look = transform * camera.mLookAt;
     const aiVector3D up = aiMatrix3x3(transform) * camera.mUp;
-    const double half = double(camera.mHorizontalFOV);
-    const double vertical = camera.mAspect > 0 ? 2 * std::atan(std::tan(half) / camera.mAspect)
-                                               : 2 * half;
+    const double vertical = camera.mAspect > 0 ? camera.mHorizontalFOV / camera.mAspect
+                                               : camera.mHorizontalFOV;
     scene["camera"] = {{"eye", point(as_written(eye.x, eye.y, eye.z) * options.scale)},
                        {"look_at", point(as_written(look.x, look.y, look.z) * options.scale)},
                        {"up", point(as_written(up.x, up.y, up.z))},
-                       {"fov_deg", vertical * 180.0 / M_PI}};
+                       {"fov_deg", as_written(float(vertical * 180.0 / M_PI))}};
   }
   nlohmann::json list = nlohmann::json::array();
   for (const ImportedPatch& p : patches) {
