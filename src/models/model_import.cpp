@@ -571,6 +571,7 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
                        {"up", point(as_written(up.x, up.y, up.z))},
                        {"fov_deg", as_written(float(vertical * 180.0 / M_PI))}};
   }
+  importer.FreeScene();  // the faces are patches now: a large model is not held twice
   nlohmann::json list = nlohmann::json::array();
   for (const ImportedPatch& p : patches) {
     const double area = 0.5 * norm(newell(p.corners));

@@ -73,12 +73,17 @@ int simulate(int argc, char** argv) {
                             "--flip-faces, --light and --export-scene apply to model files "
                             "(.obj, .ply, .gltf, .glb) only");
   ncube::ImportSummary imported;
-  const nlohmann::json imported_scene =
-      model ? ncube::import_model(options.scene_file, options.import, imported) : nlohmann::json();
+  std::string imported_text;  // the imported scene's JSON, kept for --export-scene only
+  const auto import = [&options, &imported, &imported_text] {
+    // The document lives only until it is text, the text only until it is a scene: a large
+    // model is not held three times during the run.
+    std::string text = ncube::import_model(options.scene_file, options.import, imported).dump(1);
+    ncube::Scene loaded = ncube::parse_scene(text, options.scene_file, ncube::SceneElements::kLater);
+    if (!options.export_scene_file.empty()) imported_text = std::move(text) + "\n";
+    return loaded;
+  };
   ncube::Scene scene =
-      model ? ncube::parse_scene(imported_scene.dump(1), options.scene_file,
-                                 ncube::SceneElements::kLater)
-            : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
+      model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
   const ncube::PlatformConfig platform =
       ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
@@ -124,7 +129,7 @@ int simulate(int argc, char** argv) {
                                  options.config.render.width, options.config.render.height,
                                  options.config.render.outline_elements)));
   if (!options.export_scene_file.empty())
-    outputs.write("--export-scene", imported_scene.dump(1) + "\n");
+    outputs.write("--export-scene", imported_text);
   if (!options.mesh_file.empty() && result.status == ncube::RunStatus::kOk)
     outputs.write("--mesh", ncube::solution_mesh_ply(
                                 scene, result.solution,
