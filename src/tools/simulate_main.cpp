@@ -1,6 +1,9 @@
 // ./simulate [options] SCENE.json — one simulated run of the paper's radiosity program on
 // the modeled nCube2; prints a summary, optionally writes the result file and a picture.
+#include <strings.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <new>
@@ -72,6 +75,11 @@ int simulate(int argc, char** argv) {
     throw ncube::InputError(options.scene_file + ": --scale, --element-size, --element-budget, "
                             "--flip-faces, --light and --export-scene apply to model files "
                             "(.obj, .ply, .gltf, .glb) only");
+  // The mesh is PLY whatever the name; a name promising another format is refused.
+  const std::string mesh_extension = std::filesystem::path(options.mesh_file).extension().string();
+  for (const char* other : {".obj", ".gltf", ".glb", ".stl", ".fbx", ".dae", ".off", ".x3d"})
+    if (strcasecmp(mesh_extension.c_str(), other) == 0)
+      throw ncube::InputError("--mesh " + options.mesh_file + ": only PLY is written (name it .ply)");
   ncube::ImportSummary imported;
   std::string imported_text;  // the imported scene's JSON, kept for --export-scene only
   const auto import = [&options, &imported, &imported_text] {

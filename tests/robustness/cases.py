@@ -244,12 +244,14 @@ def option_cases(root, work):
         (["--platform", str(work / "none.json")], "error"),
         (["--cost-model", str(work / "none.json")], "error"),
         (["scene1.json"], "error"),  # a second scene
+        (["--mesh", str(work / "m.obj")], "error"),  # the mesh is PLY, not what the name says
+        (["--mesh", str(work / "m.ply")], "ok"),
         (["--R", "4", "--V", "3"], "ok"), (["--R", "5", "--V", "2", "--pipelined", "--block-size", "7"], "ok"),
         (["--iterations", "0"], "ok"), (["--convergence", "1"], "ok"),
     ]
     cases = [{"group": "options", "name": " ".join(a) or "(none)",
               "args": [scene, *([] if "--iterations" in a else QUICK), *a, "--json", str(out)],
-              "expect": expect, "outputs": [out] + [Path(x) for x in a if x.endswith(".png")]}
+              "expect": expect, "outputs": [out] + [Path(x) for x in a if x.endswith((".png", ".ply", ".obj"))]}
              for a, expect in sets]
     cases.append({"group": "options", "name": "no scene", "args": ["--R", "2"], "expect": "error"})
     cases.append({"group": "options", "name": "--help", "args": ["--help"], "expect": "help"})
