@@ -493,7 +493,10 @@ void bring_to_working_units(Scene& scene, bool has_camera, const std::string& pa
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& path, SceneElements elements) {
-  const json root = parse_json(text, path);
+  return scene_from_document(parse_json(text, path), path, elements);
+}
+
+Scene scene_from_document(const json& root, const std::string& path, SceneElements elements) {
   const Where top{path + ": "};
   if (!root.is_object()) top.fail("the scene must be a JSON object, got " + type_of(root));
   reject_unknown_keys(root, {"name", "camera", "patches"}, top);

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.h"
 
 namespace ncube {
@@ -42,5 +44,11 @@ Scene load_scene(const std::string& path, SceneElements elements = SceneElements
 // The same from text already read; `path` is used in messages only.
 Scene parse_scene(const std::string& text, const std::string& path,
                   SceneElements elements = SceneElements::kBuild);
+
+// The same from a JSON document already parsed (an imported model's, src/models): every check
+// but the text's own (syntax, duplicate keys, nesting), which a document built in memory
+// cannot fail.
+Scene scene_from_document(const nlohmann::json& document, const std::string& path,
+                          SceneElements elements = SceneElements::kBuild);
 
 }  // namespace ncube

@@ -83,12 +83,11 @@ int simulate(int argc, char** argv) {
   ncube::ImportSummary imported;
   std::string imported_text;  // the imported scene's JSON, kept for --export-scene only
   const auto import = [&options, &imported, &imported_text] {
-    // The document lives only until it is text, the text only until it is a scene: a large
-    // model is not held three times during the run.
-    std::string text = ncube::import_model(options.scene_file, options.import, imported).dump(1);
-    ncube::Scene loaded = ncube::parse_scene(text, options.scene_file, ncube::SceneElements::kLater);
-    if (!options.export_scene_file.empty()) imported_text = std::move(text) + "\n";
-    return loaded;
+    // The document is checked as it is, not written out and read again, and lives only until
+    // it is a scene: a large model is not held twice during the run.
+    const nlohmann::json document = ncube::import_model(options.scene_file, options.import, imported);
+    if (!options.export_scene_file.empty()) imported_text = document.dump(1) + "\n";
+    return ncube::scene_from_document(document, options.scene_file, ncube::SceneElements::kLater);
   };
   ncube::Scene scene =
       model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
