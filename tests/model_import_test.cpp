@@ -9,7 +9,10 @@
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -148,6 +151,64 @@ TEST(ModelImport, GltfAndPlyOfAModelAreTheSameScene) {
     EXPECT_EQ(ply["patches"][k]["vertices"], obj["patches"][k]["vertices"]) << k;
 }
 
+// One small scene written by hand twice: tests/models/two-quads.gltf (two materials, each quad
+// as two triangles, glTF having no quads) and tests/models/two-quads.ply (the same quads, each
+// with its face colour: 51 102 153 is 0.2 0.4 0.6 exactly as 51/255 rounds to 0.2's double).
+// Imported, they are the same scene document, so the same run (model_import_runs_test.sh).
+TEST(ModelImport, PlyFaceColoursAndGltfOfOneSceneAreTheSameScene) {
+  ImportSummary summary;
+  ImportOptions gltf_options, ply_options;
+  gltf_options.merge_coplanar = true;
+  ply_options.lights = {"two-quads"};  // the glTF's materials emit 1, 1, 1: so does the PLY
+  const nlohmann::json gltf = import_model(model("two-quads.gltf"), gltf_options, summary);
+  EXPECT_EQ(summary.merged, 2);
+  const nlohmann::json ply = import_model(model("two-quads.ply"), ply_options, summary);
+  ASSERT_EQ(ply["patches"].size(), 2u);
+  EXPECT_EQ(ply["patches"][0]["reflectance"], nlohmann::json::parse("[0.2,0.4,0.6]"));
+  EXPECT_EQ(ply["patches"][1]["reflectance"], nlohmann::json::parse("[0.8,0.4,0]"));
+  EXPECT_EQ(ply["patches"][1]["vertices"], nlohmann::json::parse("[[0,1,0],[1,1,0],[1,1,1],[0,1,1]]"));
+  EXPECT_EQ(gltf, ply);
+}
+
+// Face colours in a binary big-endian PLY, as floats, between properties that are read past
+// (a vertex's confidence, a face's flags after its colour).
+TEST(ModelImport, BinaryPlyFaceColours) {
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_binary_ply";
+  fs::create_directories(dir);
+  std::string body;
+  const auto put = [&body](const void* value, int bytes) {  // big-endian, whatever the host
+    unsigned char raw[4];
+    std::memcpy(raw, value, std::size_t(bytes));
+    const std::uint16_t probe = 1;
+    if (*reinterpret_cast<const unsigned char*>(&probe) == 1) std::reverse(raw, raw + bytes);
+    body.append(reinterpret_cast<const char*>(raw), std::size_t(bytes));
+  };
+  const float corners[4][3] = {{0, 0, 0}, {2, 0, 0}, {2, 0, -1}, {0, 0, -1}};
+  for (const auto& c : corners) {
+    for (float x : c) put(&x, 4);
+    const float confidence = 7;
+    put(&confidence, 4);
+  }
+  body += char(4);
+  for (std::int32_t k : {0, 1, 2, 3}) put(&k, 4);
+  for (float channel : {0.25f, 0.5f, 0.75f}) put(&channel, 4);
+  body += char(9);  // flags
+  const std::string header =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float confidence\nelement face 1\n"
+      "property list uchar int vertex_indices\nproperty float red\nproperty float green\n"
+      "property float blue\nproperty uchar flags\nend_header\n";
+  std::ofstream(dir / "floor.ply", std::ios::binary) << header << body;
+  ImportSummary summary;
+  ImportOptions options;
+  options.lights = {"floor"};
+  const nlohmann::json scene = import_model((dir / "floor.ply").string(), options, summary);
+  fs::remove_all(dir);
+  ASSERT_EQ(scene["patches"].size(), 1u);
+  EXPECT_EQ(scene["patches"][0]["reflectance"], nlohmann::json::parse("[0.25,0.5,0.75]"));
+  EXPECT_EQ(scene["patches"][0]["vertices"], nlohmann::json::parse("[[0,0,0],[2,0,0],[2,0,-1],[0,0,-1]]"));
+}
+
 // tests/models/lamp.gltf, written by hand: a camera node at (0.5, 1, 3) with yfov 0.75 rad
 // looking down its -z, a light of emissive (1, 0.8, 0.6) x KHR_materials_emissive_strength 10,
 // and a floor quad as two triangles.
@@ -248,6 +309,25 @@ TEST_F(BadModel, PlyThatLiesAboutItsLength) {
                              "property float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   EXPECT_NE(refusal("b.ply", binary + std::string(20, '\0')).find("bytes of data"), std::string::npos);
+}
+
+// A face colour of 255 is 1, a reflectance that never loses energy; two of three channels is
+// no colour. Both refused, not clamped or ignored.
+TEST_F(BadModel, PlyFaceColours) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                             "property float y\nproperty float z\nelement face 1\n"
+                             "property list uchar int vertex_indices\n";
+  const std::string corners = "0 0 0\n1 0 0\n0 1 0\n";
+  ImportOptions light;
+  light.lights = {"a", "b"};
+  EXPECT_NE(refusal("a.ply", header + "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                             "end_header\n" + corners + "3 0 1 2 255 0 0\n", light)
+                .find("face 0: face colour 1 0 0: each channel must be in [0, 1)"),
+            std::string::npos);
+  EXPECT_NE(refusal("b.ply", header + "property uchar red\nproperty uchar green\nend_header\n" +
+                                 corners + "3 0 1 2 9 9\n", light)
+                .find("2 of the three colour properties"),
+            std::string::npos);
 }
 
 TEST_F(BadModel, TooLargeIsRefusedBeforeReading) {

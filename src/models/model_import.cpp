@@ -22,6 +22,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "models/ply_file.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 
@@ -266,67 +267,6 @@ nlohmann::json point(const Point& p) { return {p.x, p.y, p.z}; }
 
 
 
-// A PLY header's promise checked against the file: Assimp's reader takes a file shorter than
-// its header says without a word (it reads what is there). Throws InputError when the body
-// is too short for the records the header declares (for a binary file, at least the bytes of
-// every fixed-size property and list count; for an ASCII file, one line per record).
-void check_ply_length(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format;
-  std::vector<std::pair<std::string, long long>> elements;  // name, records
-  std::vector<long long> record_bytes;
-  const std::map<std::string, int> sizes = {
-      {"char", 1},   {"uchar", 1},  {"int8", 1},   {"uint8", 1},  {"short", 2},   {"ushort", 2},
-      {"int16", 2},  {"uint16", 2}, {"int", 4},    {"uint", 4},   {"int32", 4},   {"uint32", 4},
-      {"float", 4},  {"double", 8}, {"float32", 4}, {"float64", 8}};
-  std::size_t header_bytes = 0;
-  while (std::getline(in, line) && header_bytes < (1u << 16)) {
-    header_bytes += line.size() + 1;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream words(line);
-    std::string word, type;
-    words >> word;
-    if (word == "end_header") break;
-    if (word == "format") words >> format;
-    if (word == "element") {
-      long long count = 0;
-      words >> type >> count;
-      elements.emplace_back(type, count);
-      record_bytes.push_back(0);
-    }
-    if (word == "property" && !record_bytes.empty()) {
-      words >> type;
-      if (type == "list") words >> type;  // the count's type: a list holds at least its count
-      const auto size = sizes.find(type);
-      record_bytes.back() += size == sizes.end() ? 0 : size->second;
-    }
-  }
-  long long records = 0, least_bytes = 0;
-  for (std::size_t k = 0; k < elements.size(); ++k) {
-    records += elements[k].second;
-    least_bytes += elements[k].second * record_bytes[k];
-  }
-  std::string declared;
-  for (const auto& [name, count] : elements)
-    declared += (declared.empty() ? "" : ", ") + std::to_string(count) + " " + name;
-  if (format == "ascii") {
-    long long lines = 0;
-    while (std::getline(in, line))
-      if (line.find_first_not_of(" \t\r") != std::string::npos) ++lines;
-    if (lines < records)
-      throw InputError(path + ": the PLY header declares " + declared + " records, the file holds " +
-                       std::to_string(lines) + " lines of data");
-  } else {
-    in.clear();
-    in.seekg(0, std::ios::end);
-    const long long body = (long long)in.tellg() - (long long)header_bytes;
-    if (body < least_bytes)
-      throw InputError(path + ": the PLY header declares " + declared + " records (at least " +
-                       std::to_string(least_bytes) + " bytes), the file holds " +
-                       std::to_string(body) + " bytes of data");
-  }
-}
-
 // KHR_materials_emissive_strength of each glTF material, in the file's order (Assimp 5.2 does
 // not read it; its materials keep the file's order). 1 where a material has none.
 std::vector<double> gltf_emissive_strengths(const std::string& path) {
@@ -454,6 +394,13 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   }
 
   const bool vertex_colours = lower_extension(path) == ".ply";
+  // A PLY's faces may carry their own colour, which Assimp drops: read here, in the file's
+  // face order, which is Assimp's when the file is one mesh (no material_index splitting it).
+  const std::vector<Point> face_colours = vertex_colours ? ply_face_colours(path) : std::vector<Point>();
+  if (!face_colours.empty() &&
+      (model->mNumMeshes != 1 || model->mMeshes[0]->mNumFaces != face_colours.size()))
+    throw InputError(path + ": face colours with faces split over " + std::to_string(model->mNumMeshes) +
+                     " meshes (material_index) are not read");
   const bool gltf = lower_extension(path) == ".gltf" || lower_extension(path) == ".glb";
   const std::vector<double> strengths = gltf ? gltf_emissive_strengths(path) : std::vector<double>();
   std::vector<ImportedPatch> patches;
@@ -511,11 +458,14 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
         }
       }
       Material this_face = material;
-      if (vertex_colours && mesh.HasVertexColors(0)) {
+      // A face's own colour is what the file says of the face; its corners' colours only
+      // when it has none.
+      if (!face_colours.empty()) colour = face_colours[f];
+      if (vertex_colours && (!face_colours.empty() || mesh.HasVertexColors(0))) {
         this_face.reflectance = colour;
         for (int c = 0; c < 3; ++c)
           if (!(colour[c] >= 0.0 && colour[c] < 1.0))
-            throw InputError(at + ": vertex colour " + show(colour) +
+            throw InputError(at + (face_colours.empty() ? ": vertex colour " : ": face colour ") + show(colour) +
                              ": each channel must be in [0, 1) (a white of 255 is 1)");
       }
       if (options.flip_faces) std::reverse(corners.begin(), corners.end());

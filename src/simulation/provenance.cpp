@@ -31,13 +31,17 @@ nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,
                                   {"format", platform.format},
                                   {"values", platform_values(platform)},
                                   {"simgrid_config", result.simgrid_config}};
+  nlohmann::json scene_json = {{"name", scene.name},
+                               {"file", inputs.scene_file},
+                               {"sha256", file_sha256(inputs.scene_file)}};
+  // Only a model has parts: a scene file's provenance stays as it was.
+  for (const std::string& part : inputs.scene_parts)
+    scene_json["parts"].push_back({{"file", part}, {"sha256", file_sha256(part)}});
   return {{"schema_version", kResultSchemaVersion},
           {"command_line", inputs.command_line},
           {"code_version", code_version()},
           {"simgrid_version", simgrid_version()},
-          {"scene", {{"name", scene.name},
-                     {"file", inputs.scene_file},
-                     {"sha256", file_sha256(inputs.scene_file)}}},
+          {"scene", scene_json},
           {"platform", platform_json},
           {"cost_model", {{"file", inputs.cost_model_file},
                           {"sha256", file_sha256(inputs.cost_model_file)},

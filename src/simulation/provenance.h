@@ -21,6 +21,9 @@ struct RunInputs {
   std::string scene_file;
   std::string platform_file;
   std::string cost_model_file;
+  // The other files a model file read (its MTL, glTF buffers), each hashed beside the model:
+  // the model's own hash alone would not change when its MTL does.
+  std::vector<std::string> scene_parts;
 };
 
 nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,

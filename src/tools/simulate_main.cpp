@@ -115,9 +115,12 @@ int simulate(int argc, char** argv) {
       ncube::run_simulation(scene, options.config, platform, costs);
   progress.reset();
   nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
+  std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
+  for (const std::string& file : imported.files)
+    if (file != options.scene_file) scene_parts.push_back(file);
   result_json["provenance"] = ncube::provenance_to_json(
       {options.command_line, options.scene_file, options.config.platform_file,
-       options.config.cost_model_file},
+       options.config.cost_model_file, scene_parts},
       scene, platform, costs, result);
   if (!options.quiet && model)
     std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
