@@ -281,6 +281,17 @@ TEST_F(BadModel, ReflectanceOfOneOrMore) {
             std::string::npos);
 }
 
+// A --light that names no material or mesh (a typing error) is refused, not ignored, and the
+// message lists the names there are.
+TEST_F(BadModel, LightNamingNothing) {
+  std::ofstream(dir / "a.mtl") << "newmtl lamp\nKe 1 1 1\n";
+  ImportOptions options;
+  options.lights = {"lamb=2,2,2"};
+  EXPECT_NE(refusal("a.obj", std::string("mtllib a.mtl\n") + kTriangle + "usemtl lamp\nf 1 2 3\n", options)
+                .find("--light lamb=2,2,2: " + (dir / "a.obj").string() + " has no material or mesh of that name"),
+            std::string::npos);
+}
+
 TEST_F(BadModel, NoLight) {
   EXPECT_NE(refusal("a.obj", std::string(kTriangle) + "f 1 2 3\n").find("--light"), std::string::npos);
 }

@@ -226,10 +226,15 @@ Material read_material(const aiMaterial& m, const std::string& where) {
 }
 
 // --light NAME[=R,G,B]: the emission it gives the material or mesh called NAME.
-bool light_for(const std::vector<std::string>& lights, const std::string& name, Point& emission) {
-  for (const std::string& light : lights) {
+// `used` notes each --light that named something: one that names nothing (a typing error)
+// is refused after the model is read, not ignored.
+bool light_for(const std::vector<std::string>& lights, const std::string& name, Point& emission,
+               std::vector<bool>& used) {
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    const std::string& light = lights[k];
     const std::size_t equals = light.find('=');
     if (light.substr(0, equals) != name) continue;
+    used[k] = true;
     emission = Point(1.0);
     if (equals != std::string::npos) {
       std::istringstream values(light.substr(equals + 1));
@@ -413,6 +418,8 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     for (unsigned k = 0; k < node->mNumChildren; ++k) self(node->mChildren[k], transform, self);
   };
   walk(model->mRootNode, aiMatrix4x4(), walk);
+  std::vector<bool> lights_used(options.lights.size(), false);
+  std::vector<std::string> names;  // the model's mesh and material names, for a --light that names none
   for (const auto& [m, transform] : placed) {
     const aiMesh& mesh = *model->mMeshes[m];
     const bool moved = !transform.IsIdentity();
@@ -432,9 +439,13 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       material.emission *= strength;
     }
     // A PLY has no material names: --light names its file (all of it emits).
-    light_for(options.lights, mesh_name, material.emission) ||
-        light_for(options.lights, material_name, material.emission) ||
-        (vertex_colours && light_for(options.lights, fs::path(path).stem().string(), material.emission));
+    light_for(options.lights, mesh_name, material.emission, lights_used) ||
+        light_for(options.lights, material_name, material.emission, lights_used) ||
+        (vertex_colours &&
+         light_for(options.lights, fs::path(path).stem().string(), material.emission, lights_used));
+    for (const std::string& name : {mesh_name, material_name})
+      if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end())
+        names.push_back(name);
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       const std::string at = where + ", face " + std::to_string(f);
@@ -488,6 +499,14 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       for (std::vector<Point>& triangle : split(distinct))
         if (!flat(triangle)) patches.push_back({triangle, this_face});
     }
+  }
+  for (std::size_t k = 0; k < options.lights.size(); ++k) {
+    if (lights_used[k]) continue;
+    std::string known;
+    for (const std::string& name : names) known += (known.empty() ? "\"" : ", \"") + name + "\"";
+    if (vertex_colours) known += (known.empty() ? "\"" : ", \"") + fs::path(path).stem().string() + "\" (the file)";
+    throw InputError("--light " + options.lights[k] + ": " + path + " has no material or mesh of that name (it has " +
+                     known + ")");
   }
   if (patches.empty()) throw InputError(path + ": no face with an area (nothing to light)");
   if (options.merge_coplanar) patches = merge_coplanar(patches, summary);

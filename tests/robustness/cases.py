@@ -559,8 +559,56 @@ def settings_cases(root, work):
     return cases
 
 
+def model_cases(root, work):
+    """Bad model files through the whole command line: exit 2 with one message, no output
+    file (tests/model_import_test.cpp checks each message), and the good ones beside them."""
+    work = work / "models"
+    work.mkdir(exist_ok=True)
+    light = "mtllib lamp.mtl\nusemtl lamp\n"
+    (work / "lamp.mtl").write_text("newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\nnewmtl white\nKd 1 1 1\n")
+    triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+    ply = ("ply\nformat ascii 1.0\nelement vertex {n}\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n{extra}"
+           "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2{colour}\n")
+    gltf = ('{"asset":{"version":"2.0"},"buffers":[{"uri":"gone.bin","byteLength":36}],'
+            '"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,'
+            '"componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],'
+            '"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],'
+            '"scenes":[{"nodes":[0]}],"scene":0}')
+    files = [  # name, file, content, expect, extra arguments
+        ("OBJ triangle with a light", "ok.obj", light + triangle + "f 1 2 3\n", "ok", []),
+        ("OBJ index out of range", "index.obj", light + triangle + "f 1 2 9\n", "error", []),
+        ("OBJ NaN coordinate", "nan.obj", light + "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "error", []),
+        ("OBJ missing MTL", "mtl.obj", "mtllib gone.mtl\nusemtl lamp\n" + triangle + "f 1 2 3\n", "error", []),
+        ("OBJ face of 2 corners", "line.obj", light + triangle + "f 1 2\n", "error", []),
+        ("OBJ face of 1 corner", "point.obj", light + triangle + "f 1\n", "error", []),
+        ("OBJ white Kd", "white.obj", light + triangle + "f 1 2 3\nusemtl white\nf 1 3 2\n", "error", []),
+        ("OBJ without a light", "dark.obj", triangle + "f 1 2 3\n", "error", []),
+        ("OBJ --light NAME", "dark2.obj", triangle + "f 1 2 3\n", "ok", ["--light", "DefaultMaterial"]),
+        ("OBJ --light naming nothing", "dark3.obj", light + triangle + "f 1 2 3\n", "error",
+         ["--light", "lamb"]),
+        ("OBJ without faces", "empty.obj", triangle, "error", []),
+        ("glTF missing buffer", "gone.gltf", gltf, "error", []),
+        ("PLY shorter than its header", "short.ply", ply.format(n=9, extra="", colour=""), "error",
+         ["--light", "short"]),
+        ("PLY face colour of 255", "bright.ply",
+         ply.format(n=3, extra="property uchar red\nproperty uchar green\nproperty uchar blue\n",
+                    colour=" 255 0 0"), "error", ["--light", "bright"]),
+        ("FBX refused by extension", "model.fbx", "; FBX 7.4.0 project file\n", "error", []),
+    ]
+    cases = []
+    for name, file, content, expect, extra in files:
+        (work / file).write_text(content)
+        out, export = work / (file + ".out.json"), work / (file + ".scene.json")
+        cases.append({"group": "model", "name": name, "expect": expect,
+                      "args": [str(work / file), *QUICK, *extra, "--json", str(out),
+                               "--export-scene", str(export)],
+                      "outputs": [out, export], "inputs": [work / file]})
+    return cases
+
+
 def all_cases(root, work, simulate):
     root, work = Path(root), Path(work)
     return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
             output_cases(root, work) + path_kind_cases(work) + settings_cases(root, work) +
-            machine_cases(root, work))
+            machine_cases(root, work) + model_cases(root, work))
