@@ -87,6 +87,51 @@ TEST(ModelImport, ElementsFollowTheBudgetOrTheSize) {
   EXPECT_EQ(scaled["patches"][2]["vertices"][2], nlohmann::json::parse("[2,4,0]"));
 }
 
+// The OBJ `text` (with a lamp material that emits) imported from a temporary file.
+nlohmann::json import_text(const std::string& name, const std::string& text, ImportOptions options,
+                           ImportSummary& summary) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("model_import_" + name);
+  fs::create_directories(dir);
+  std::ofstream(dir / "lamp.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
+  std::ofstream(dir / (name + ".obj")) << "mtllib lamp.mtl\nusemtl lamp\n" << text;
+  nlohmann::json scene = import_model((dir / (name + ".obj")).string(), options, summary);
+  fs::remove_all(dir);
+  return scene;
+}
+
+// A budget is shared by area and each share shaped after the patch's edges, worked out by
+// hand: budget 12 over a 2 x 1 rectangle (area 2) and a unit square (area 1) is 8 and 4
+// elements, 4 along the long edge (v0 -> v1) by 2, and 2 x 2.
+TEST(ModelImport, ElementGridFollowsTheEdges) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.element_budget = 12;
+  const nlohmann::json scene = import_text(
+      "grid", "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+      "f 1 2 3 4\nf 5 6 7 8\n", options, summary);
+  EXPECT_EQ(scene["patches"][0]["elements"], nlohmann::json::parse("[4,2]"));
+  EXPECT_EQ(scene["patches"][1]["elements"], nlohmann::json::parse("[2,2]"));
+}
+
+// --merge-coplanar merges only pairs that make a planar convex quad: a pair folded along its
+// shared edge (the second triangle's far corner 0.5 out of the plane) and a pair that makes a
+// concave quad (its corner (1, 0.5) turns the other way) stay two triangles each.
+TEST(ModelImport, MergesOnlyPlanarConvexPairs) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  const nlohmann::json folded = import_text(
+      "folded", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.5\nf 1 2 3\nf 1 3 4\n", options, summary);
+  EXPECT_EQ(folded["patches"].size(), 2u);
+  const nlohmann::json concave = import_text(
+      "concave", "v 0 0 0\nv 2 0 0\nv 1 0.5 0\nv 0 2 0\nf 1 2 3\nf 1 3 4\n", options, summary);
+  EXPECT_EQ(concave["patches"].size(), 2u);
+  const nlohmann::json square = import_text(
+      "square", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n", options, summary);
+  EXPECT_EQ(square["patches"].size(), 1u);
+  EXPECT_EQ(summary.merged, 1);
+}
+
 TEST(ModelImport, FlipsFacesAndMarksLights) {
   ImportSummary summary;
   ImportOptions options;

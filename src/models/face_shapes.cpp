@@ -1,0 +1,116 @@
+#include "models/face_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+namespace ncube::models {
+namespace {
+
+// Ear clipping in the face's best plane: triangles in the face's own winding, for faces that
+// are concave, bent or have more than four corners.
+std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
+  const Point normal = newell(corners);
+  const Point n = normal / norm(normal);
+  const Point u = glm::normalize(std::fabs(n.x) < 0.9 ? glm::cross(n, Point(1, 0, 0))
+                                                        : glm::cross(n, Point(0, 1, 0)));
+  const Point v = glm::cross(n, u);
+  std::vector<glm::dvec2> flat;
+  for (const Point& p : corners) flat.emplace_back(glm::dot(p, u), glm::dot(p, v));
+  const auto cross2 = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  };
+  std::vector<std::size_t> left(corners.size());
+  for (std::size_t i = 0; i < left.size(); ++i) left[i] = i;
+  std::vector<std::vector<Point>> triangles;
+  while (left.size() > 3) {
+    bool clipped = false;
+    for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
+      const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k],
+                        c = left[(k + 1) % left.size()];
+      if (cross2(flat[a], flat[b], flat[c]) <= 0) continue;  // reflex (or straight) corner
+      bool inside = false;
+      for (std::size_t p : left) {
+        if (p == a || p == b || p == c) continue;
+        if (cross2(flat[a], flat[b], flat[p]) >= 0 && cross2(flat[b], flat[c], flat[p]) >= 0 &&
+            cross2(flat[c], flat[a], flat[p]) >= 0)
+          inside = true;
+      }
+      if (inside) continue;
+      triangles.push_back({corners[a], corners[b], corners[c]});
+      left.erase(left.begin() + std::ptrdiff_t(k));
+      clipped = true;
+    }
+    if (!clipped) {  // a self-intersecting outline: a fan keeps what can be kept
+      for (std::size_t k = 1; k + 1 < left.size(); ++k)
+        triangles.push_back({corners[left[0]], corners[left[k]], corners[left[k + 1]]});
+      return triangles;
+    }
+  }
+  triangles.push_back({corners[left[0]], corners[left[1]], corners[left[2]]});
+  return triangles;
+}
+
+}  // namespace
+
+// A vector's length without underflow or overflow of its squares (a model scaled by 1e-100
+// has areas near 1e-200, whose squares a plain length would lose).
+double norm(const Point& v) {
+  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  if (m == 0.0 || !std::isfinite(m)) return m;
+  const Point u = v / m;
+  return m * std::sqrt(glm::dot(u, u));
+}
+
+double diameter(const std::vector<Point>& corners) {
+  double d = 0.0;
+  for (const Point& a : corners)
+    for (const Point& b : corners) d = std::max(d, norm(a - b));
+  return d;
+}
+
+// Newell's normal: twice the vector area of a planar polygon, the best plane of a bent one.
+Point newell(const std::vector<Point>& corners) {
+  Point n(0.0);
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Point& a = corners[i];
+    const Point& b = corners[(i + 1) % corners.size()];
+    n += Point((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  return n;
+}
+
+bool planar_convex_quad(const std::vector<Point>& q) {
+  const double d = diameter(q);
+  const Point n = glm::cross(q[1] - q[0], q[2] - q[0]);
+  if (norm(n) <= 2 * kFlat * d * d) return false;
+  const Point unit = n / norm(n);
+  if (std::fabs(glm::dot(q[3] - q[0], unit)) > kPlanarity * d) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point turn = glm::cross(q[i] - q[(i + 3) % 4], q[(i + 1) % 4] - q[i]);
+    if (glm::dot(turn, unit) <= kTurn * d * d) return false;
+  }
+  return true;
+}
+
+// A quad that is not planar (or not convex) is cut along its diagonal from corner 0 when
+// both halves face the quad's way (the usual convention, as scenes/generate cuts the Cornell
+// box's bent wall); other faces by ear clipping.
+std::vector<std::vector<Point>> split(const std::vector<Point>& corners) {
+  if (corners.size() == 4) {
+    const Point n = newell(corners);
+    const std::vector<Point> a{corners[0], corners[1], corners[2]}, b{corners[2], corners[3], corners[0]};
+    if (glm::dot(newell(a), n) > 0.0 && glm::dot(newell(b), n) > 0.0) return {a, b};
+  }
+  return triangulate(corners);
+}
+
+bool flat(const std::vector<Point>& polygon) {
+  const double d = diameter(polygon);
+  return d == 0.0 || 0.5 * norm(newell(polygon)) <= kFlat * d * d;
+}
+
+}  // namespace ncube::models

@@ -1,0 +1,38 @@
+// Which faces of a model are patches as they are and how the others are cut
+// (docs/scene-format.md, "Importing models"): planar convex quads kept, bent quads cut along
+// the diagonal from corner 0, other polygons ear-clipped, flat ones found. Tolerances are
+// relative to the face's diameter, so a model's units do not matter.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace ncube::models {
+
+using Point = glm::dvec3;
+
+// Tolerances (docs/scene-format.md, "Importing models"), relative to the face's diameter d:
+// a quad is kept when its fourth corner is within kPlanarity d of the plane of the first
+// three and every corner turns the same way by more than kTurn d^2 (slightly stricter than
+// the scene loader's 1e-6 and 1e-12, so a kept quad always loads); a face or triangle whose
+// area is at most kFlat d^2 is degenerate; corners within kSame d of each other are one.
+constexpr double kPlanarity = 1e-7;
+constexpr double kTurn = 1e-9;
+constexpr double kFlat = 1e-10;
+constexpr double kSame = 1e-12;
+
+// A vector's length without underflow or overflow of its squares.
+double norm(const Point& v);
+// The largest distance between two corners.
+double diameter(const std::vector<Point>& corners);
+// Newell's normal: twice the vector area of a planar polygon, the best plane of a bent one.
+Point newell(const std::vector<Point>& corners);
+// A quad kept as one patch: planar within kPlanarity, every corner turning the same way.
+bool planar_convex_quad(const std::vector<Point>& q);
+// Triangles, in the face's own winding, of a face that is not kept as it is.
+std::vector<std::vector<Point>> split(const std::vector<Point>& corners);
+// Whether a polygon's area is at most kFlat of its diameter squared (degenerate).
+bool flat(const std::vector<Point>& polygon);
+
+}  // namespace ncube::models

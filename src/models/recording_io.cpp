@@ -1,0 +1,23 @@
+#include "models/recording_io.h"
+
+#include <algorithm>
+
+namespace ncube::models {
+
+bool RecordingIOSystem::Exists(const char* file) const {
+  const bool exists = Assimp::DefaultIOSystem::Exists(file);
+  if (!exists) note(missing_, file);
+  return exists;
+}
+
+Assimp::IOStream* RecordingIOSystem::Open(const char* file, const char* mode) {
+  Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
+  note(stream ? files_ : missing_, file);
+  return stream;
+}
+
+void RecordingIOSystem::note(std::vector<std::string>& list, const char* file) {
+  if (std::find(list.begin(), list.end(), file) == list.end()) list.push_back(file);
+}
+
+}  // namespace ncube::models
