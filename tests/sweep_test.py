@@ -6,6 +6,7 @@ cluster takes (Snakemake's generic cluster mode with a submit command that runs 
 import json
 import os
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -98,6 +99,28 @@ def test_validation(work):
         check(False, "R above a model's patches refused")
     except sweep.SweepError as e:
         check("17 patches" in str(e), f"R above a model's patches refused ({e})")
+    # A .glb's external buffer is part of its identity too (the JSON chunk names it).
+    document = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                "nodes": [{"mesh": 0}],
+                "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+                "materials": [{"name": "lamp", "emissiveFactor": [1, 1, 1],
+                               "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}}],
+                "buffers": [{"byteLength": 4}, {"uri": "lamp.bin", "byteLength": 72}],
+                "bufferViews": [{"buffer": 1, "byteLength": 72}],
+                "accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3",
+                               "min": [0, 0, 0], "max": [1, 1, 1]}]}
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    (work / "lamp.glb").write_bytes(struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(text) + 12) +
+                                    struct.pack("<II", len(text), 0x4E4F534A) + text +
+                                    struct.pack("<II", 4, 0x004E4942) + bytes(4))
+    corners = [(0, 0, 0), (0, 0, 1), (1, 0, 1), (0, 1, 0), (1, 1, 0), (0, 1, 1)]
+    (work / "lamp.bin").write_bytes(b"".join(struct.pack("<3f", *c) for c in corners))
+    (work / "g.yaml").write_text("grid: {scene: [lamp.glb], R: [1]}\n")
+    before = [c.id for c in sweep.load(work / "g.yaml").cells]
+    (work / "lamp.bin").write_bytes(b"".join(struct.pack("<3f", *c) for c in reversed(corners)))
+    after = [c.id for c in sweep.load(work / "g.yaml").cells]
+    check(len(before) == 1 and not set(before) & set(after), "editing a .glb's external buffer makes another cell")
     # The defaults the identity writes out are simulate's own.
     result = simulate.run("scene0", {"iterations": 0})
     check(result["config"] == dict(options.config_fields({"iterations": 0}), nodes=1),

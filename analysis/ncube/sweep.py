@@ -209,9 +209,19 @@ def scene_summary(path):
     return scene.get("name", Path(path).stem), len(scene.get("patches", []))
 
 
+def _gltf_document(path):
+    """A glTF file's JSON; for a .glb the first chunk after the 12-byte header (length, type
+    "JSON", then the text), which may name external buffers beside its own binary chunk."""
+    data = Path(path).read_bytes()
+    if Path(path).suffix.lower() == ".glb":
+        length = int.from_bytes(data[12:16], "little") if len(data) >= 20 else 0
+        data = data[20:20 + length]
+    return json.loads(data.decode("utf-8", errors="replace"))
+
+
 def model_parts(path):
-    """The files a model reads besides itself: an OBJ's material libraries, a glTF's buffers
-    and images (relative URIs; a data: URI is inside the file)."""
+    """The files a model reads besides itself: an OBJ's material libraries, a glTF's or a
+    .glb's buffers and images (relative URIs; a data: URI is inside the file)."""
     path = Path(path)
     parts = []
     if path.suffix.lower() == ".obj":
@@ -219,8 +229,8 @@ def model_parts(path):
             words = line.split()
             if words and words[0] == "mtllib":
                 parts += [path.parent / name for name in words[1:]]
-    elif path.suffix.lower() == ".gltf":
-        document = json.loads(path.read_text())
+    elif path.suffix.lower() in (".gltf", ".glb"):
+        document = _gltf_document(path)
         for item in document.get("buffers", []) + document.get("images", []):
             uri = item.get("uri", "")
             if uri and not uri.startswith("data:"):

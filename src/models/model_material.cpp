@@ -44,7 +44,8 @@ Material read_material(const aiMaterial& m, const std::string& where) {
   for (int c = 0; c < 3; ++c) {
     if (!(result.reflectance[c] >= 0.0 && result.reflectance[c] < 1.0))
       throw InputError(where + ": reflectance (Kd, base colour) " + show(result.reflectance) +
-                       ": each channel must be in [0, 1) (1 would never lose energy)");
+                       ": each channel must be in [0, 1) (1 would never lose energy; a glTF "
+                       "material without baseColorFactor is white by glTF's own default)");
     if (!(result.emission[c] >= 0.0) || !std::isfinite(result.emission[c]))
       throw InputError(where + ": emission (Ke, emissive) " + show(result.emission) +
                        ": each channel must be finite and not negative");
