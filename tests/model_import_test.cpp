@@ -399,5 +399,18 @@ TEST_F(BadModel, TooLargeIsRefusedBeforeReading) {
   }
 }
 
+// A glTF whose buffer is over the limit is refused before Assimp reads the buffer.
+TEST_F(BadModel, TooLargeBufferIsRefusedBeforeReading) {
+  std::ofstream(dir / "huge.bin") << "x";
+  fs::resize_file(dir / "huge.bin", (std::uintmax_t(256) << 20) + 1);  // sparse
+  const std::string gltf =
+      R"({"asset":{"version":"2.0"},"buffers":[{"uri":"huge.bin","byteLength":36}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,)"
+      R"("componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],)"
+      R"("scenes":[{"nodes":[0]}],"scene":0})";
+  EXPECT_NE(refusal("a.gltf", gltf).find("huge.bin, which is larger than"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ncube

@@ -63,11 +63,15 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
 
   if (lower_extension(path) == ".ply") check_ply_length(path);
   Assimp::Importer importer;
-  std::vector<std::string> missing;
-  importer.SetIOHandler(new RecordingIOSystem(summary.files, missing));  // the importer owns it
+  std::vector<std::string> missing, too_large;
+  importer.SetIOHandler(new RecordingIOSystem(summary.files, missing, too_large,
+                                              kMaxSceneFileBytes));  // the importer owns it
   // No triangulation: quads stay quads, and which faces to split is decided here. The
   // validation step refuses out-of-range indices and other broken structures.
   const aiScene* model = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  for (const std::string& file : too_large)
+    throw InputError(path + ": names " + file + ", which is larger than " +
+                     std::to_string(kMaxSceneFileBytes) + " bytes (the limit; not read)");
   for (const std::string& file : missing)
     throw InputError(path + ": names " + file + ", which cannot be opened");
   if (!model || !model->mRootNode) {
@@ -77,11 +81,6 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       throw InputError(path + ": a face with " + (error.find("LINE") != std::string::npos ? "2 corners" : "1 corner") +
                        " (points and lines are not surfaces): " + error);
     throw InputError(path + ": cannot read the model: " + error);
-  }
-  for (const std::string& file : summary.files) {
-    struct stat part {};
-    if (stat(file.c_str(), &part) == 0 && std::size_t(part.st_size) > kMaxSceneFileBytes)
-      throw InputError(file + ": larger than " + std::to_string(kMaxSceneFileBytes) + " bytes");
   }
 
   const bool vertex_colours = lower_extension(path) == ".ply";

@@ -1,5 +1,7 @@
 #include "models/recording_io.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 
 namespace ncube::models {
@@ -11,6 +13,11 @@ bool RecordingIOSystem::Exists(const char* file) const {
 }
 
 Assimp::IOStream* RecordingIOSystem::Open(const char* file, const char* mode) {
+  struct stat info {};
+  if (stat(file, &info) == 0 && std::size_t(info.st_size) > largest_) {
+    note(too_large_, file);
+    return nullptr;
+  }
   Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
   note(stream ? files_ : missing_, file);
   return stream;
