@@ -273,6 +273,57 @@ TEST(ModelImport, ReadsTheGltfCameraAndEmissiveStrength) {
   EXPECT_EQ(summary.merged, 1);
 }
 
+// The same lamp as a .glb (the binary container: a JSON chunk, then the buffer as a BIN chunk),
+// written here from lamp.gltf: the camera, the strength (read from the JSON chunk) and the
+// patches are the .gltf's.
+TEST(ModelImport, GlbIsTheGltfScene) {
+  nlohmann::json document = nlohmann::json::parse(std::ifstream(model("lamp.gltf")));
+  const std::string uri = document["buffers"][0]["uri"];
+  const std::string base64 = uri.substr(uri.find(',') + 1);
+  std::string bytes;  // base64 decoded: 4 characters are 3 bytes
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  unsigned bits = 0;
+  int count = 0;
+  for (char c : base64) {
+    if (c == '=') break;
+    bits = (bits << 6) | unsigned(alphabet.find(c));
+    if ((count += 6) >= 8) bytes += char((bits >> (count -= 8)) & 0xff);
+  }
+  ASSERT_EQ(bytes.size(), document["buffers"][0]["byteLength"].get<std::size_t>());
+  document["buffers"][0].erase("uri");
+  std::string json = document.dump();
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  bytes.resize((bytes.size() + 3) / 4 * 4, '\0');
+  std::string glb;
+  const auto word = [&glb](std::uint32_t v) {  // little-endian, whatever the host
+    for (int k = 0; k < 4; ++k) glb += char((v >> (8 * k)) & 0xff);
+  };
+  word(0x46546C67);  // "glTF"
+  word(2);
+  word(std::uint32_t(12 + 8 + json.size() + 8 + bytes.size()));
+  word(std::uint32_t(json.size()));
+  word(0x4E4F534A);  // "JSON"
+  glb += json;
+  word(std::uint32_t(bytes.size()));
+  word(0x004E4942);  // "BIN"
+  glb += bytes;
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_glb";
+  fs::create_directories(dir);
+  std::ofstream(dir / "lamp.glb", std::ios::binary) << glb;
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  nlohmann::json from_glb;
+  try {
+    from_glb = import_model((dir / "lamp.glb").string(), options, summary);
+  } catch (const InputError& e) {
+    FAIL() << e.what();
+  }
+  fs::remove_all(dir);
+  EXPECT_EQ(from_glb["patches"][0]["emission"], nlohmann::json::parse("[10,8,6]"));
+  EXPECT_EQ(from_glb, import_model(model("lamp.gltf"), options, summary));
+}
+
 struct BadModel : testing::Test {
   fs::path dir;
   void SetUp() override {
