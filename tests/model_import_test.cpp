@@ -437,6 +437,15 @@ TEST_F(BadModel, PlyFaceColours) {
             std::string::npos);
 }
 
+// A PLY cut inside its header: Assimp 5.2 reads it forever (found by mutating
+// tests/models/two-quads.ply at random); refused before Assimp sees it.
+TEST_F(BadModel, PlyCutInItsHeader) {
+  EXPECT_NE(refusal("a.ply", "ply\nformat ascii 1.0\ncomment cut here").find("no end_header"),
+            std::string::npos);
+  EXPECT_NE(refusal("b.ply", "ply\nformat text 1.0\nend_header\n").find("PLY format \"text\""),
+            std::string::npos);
+}
+
 TEST_F(BadModel, TooLargeIsRefusedBeforeReading) {
   const fs::path path = dir / "huge.obj";
   std::ofstream(path) << "v 0 0 0\n";

@@ -27,6 +27,7 @@ struct Element {
 struct Header {
   std::string format;  // ascii, binary_little_endian, binary_big_endian
   std::size_t bytes = 0;
+  bool ended = false;  // end_header was found
   std::vector<Element> elements;
 };
 
@@ -50,7 +51,10 @@ Header read_header(std::istream& in) {
     std::istringstream words(line);
     std::string word;
     words >> word;
-    if (word == "end_header") break;
+    if (word == "end_header") {
+      header.ended = true;
+      break;
+    }
     if (word == "format") words >> header.format;
     if (word == "element") {
       header.elements.emplace_back();
@@ -118,6 +122,17 @@ bool read_value(std::istream& in, const Header& header, const std::string& type,
 void check_ply_length(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const Header header = read_header(in);
+  // Assimp 5.2 reads a header without end_header forever (a file cut in its header).
+  if (!header.ended)
+    throw InputError(path + ": the PLY header has no end_header line (within its first 64 KiB)");
+  if (header.format != "ascii" && header.format != "binary_little_endian" &&
+      header.format != "binary_big_endian")
+    throw InputError(path + ": the PLY format \"" + header.format +
+                     "\" is none of ascii, binary_little_endian, binary_big_endian");
+  for (const Element& element : header.elements)
+    if (element.records < 0 || element.records > (1LL << 40))  // sizes below stay far from overflow
+      throw InputError(path + ": the PLY header declares " + std::to_string(element.records) + " " +
+                       element.name + " records");
   long long records = 0, least_bytes = 0;
   std::string declared;
   for (const Element& element : header.elements) {

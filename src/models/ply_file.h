@@ -11,9 +11,10 @@
 
 namespace ncube {
 
-// Throws InputError when the body is too short for the records the header declares (for a
-// binary file, at least the bytes of every fixed-size property and list count; for an ASCII
-// file, one line per record).
+// Throws InputError when the header has no end_header (Assimp 5.2 would read on forever), an
+// unknown format or an impossible record count, or when the body is too short for the records
+// the header declares (for a binary file, at least the bytes of every fixed-size property and
+// list count; for an ASCII file, one line per record).
 void check_ply_length(const std::string& path);
 
 // The colour of each face in the file's order, from the face element's `red`, `green`, `blue`

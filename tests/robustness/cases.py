@@ -594,6 +594,8 @@ def model_cases(root, work):
         ("PLY face colour of 255", "bright.ply",
          ply.format(n=3, extra="property uchar red\nproperty uchar green\nproperty uchar blue\n",
                     colour=" 255 0 0"), "error", ["--light", "bright"]),
+        ("PLY cut in its header", "cut.ply", "ply\nformat ascii 1.0\ncomment cut", "error",
+         ["--light", "cut"]),
         ("FBX refused by extension", "model.fbx", "; FBX 7.4.0 project file\n", "error", []),
     ]
     cases = []
