@@ -132,6 +132,46 @@ TEST(ModelImport, MergesOnlyPlanarConvexPairs) {
   EXPECT_EQ(summary.merged, 1);
 }
 
+// A colour the file does not give is the documented 0.5 grey, not Assimp's stand-ins: 0.6
+// for an MTL material without Kd and for faces without usemtl, white for a glTF material
+// without baseColorFactor (which would be refused as a reflectance of 1).
+TEST(ModelImport, MissingColoursAreTheDocumentedDefault) {
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_defaults";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.mtl") << "newmtl glow\nKe 1 1 1\nnewmtl grey\nKd 0.25 0.25 0.25\n";
+  std::ofstream(dir / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                  "usemtl glow\nf 1 3 2\nusemtl grey\nf 2 3 1\n";
+  std::ofstream(dir / "b.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(dir / "a.gltf")
+      << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"data:application/octet-stream;base64,)"
+         R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}],)"
+         R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,)"
+         R"("componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],)"
+         R"("materials":[{"name":"glow","emissiveFactor":[1,1,1]}],)"
+         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],)"
+         R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+  ImportSummary summary;
+  ImportOptions options;
+  nlohmann::json obj, gltf;
+  nlohmann::json plain;
+  try {
+    obj = import_model((dir / "a.obj").string(), options, summary);
+    gltf = import_model((dir / "a.gltf").string(), {}, summary);
+    options.lights = {"DefaultMaterial"};
+    plain = import_model((dir / "b.obj").string(), options, summary);
+  } catch (const InputError& e) {
+    FAIL() << e.what();
+  }
+  fs::remove_all(dir);
+  ASSERT_EQ(obj["patches"].size(), 2u);
+  const nlohmann::json grey = nlohmann::json::parse("[0.5,0.5,0.5]");
+  EXPECT_EQ(obj["patches"][0]["reflectance"], grey);  // no Kd
+  EXPECT_EQ(obj["patches"][1]["reflectance"], nlohmann::json::parse("[0.25,0.25,0.25]"));
+  EXPECT_EQ(plain["patches"][0]["reflectance"], grey);  // no material at all
+  ASSERT_EQ(gltf["patches"].size(), 1u);
+  EXPECT_EQ(gltf["patches"][0]["reflectance"], grey);  // no baseColorFactor
+}
+
 TEST(ModelImport, FlipsFacesAndMarksLights) {
   ImportSummary summary;
   ImportOptions options;
@@ -385,6 +425,15 @@ TEST_F(BadModel, LightNamingNothing) {
   options.lights = {"lamb=2,2,2"};
   EXPECT_NE(refusal("a.obj", std::string("mtllib a.mtl\n") + kTriangle + "usemtl lamp\nf 1 2 3\n", options)
                 .find("--light lamb=2,2,2: " + (dir / "a.obj").string() + " has no material or mesh of that name"),
+            std::string::npos);
+}
+
+// Assimp gives a face after mtllib and before any usemtl the library's last material (here
+// "lamp", a light): refused instead, naming the line.
+TEST_F(BadModel, FaceBeforeUsemtl) {
+  std::ofstream(dir / "a.mtl") << "newmtl wall\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n";
+  EXPECT_NE(refusal("a.obj", std::string("mtllib a.mtl\n") + kTriangle + "f 1 2 3\nusemtl wall\nf 1 3 2\n")
+                .find("line 5: a face after mtllib and before any usemtl"),
             std::string::npos);
 }
 

@@ -6,9 +6,15 @@
 
 namespace ncube::models {
 
-// KHR_materials_emissive_strength of each material in the file's order (Assimp keeps that
-// order), 1 where a material has none; `binary` for a .glb (its JSON chunk). Empty when the
-// JSON cannot be read (Assimp has then refused the file already).
-std::vector<double> gltf_emissive_strengths(const std::string& path, bool binary);
+struct GltfMaterialExtras {
+  double emissive_strength = 1.0;  // KHR_materials_emissive_strength, 1 without it
+  bool base_colour = false;        // whether pbrMetallicRoughness.baseColorFactor is given
+};
+
+// Each material's extras in the file's order (Assimp keeps that order); `binary` for a .glb
+// (its JSON chunk). Empty when the JSON cannot be read (Assimp has then refused the file).
+// Assimp gives a material without baseColorFactor glTF's default of white, indistinguishable
+// from a white that is written: the importer needs to know which it is.
+std::vector<GltfMaterialExtras> gltf_material_extras(const std::string& path, bool binary);
 
 }  // namespace ncube::models

@@ -9,6 +9,7 @@
 #include <assimp/scene.h>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include <glm/vec3.hpp>
 
@@ -17,6 +18,7 @@
 #include "models/face_shapes.h"
 #include "models/gltf_extras.h"
 #include "models/model_material.h"
+#include "models/mtl_file.h"
 #include "models/ply_file.h"
 #include "models/recording_io.h"
 #include "scene/scene_loader.h"
@@ -92,7 +94,13 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     throw InputError(path + ": face colours with faces split over " + std::to_string(model->mNumMeshes) +
                      " meshes (material_index) are not read");
   const bool gltf = lower_extension(path) == ".gltf" || lower_extension(path) == ".glb";
-  const std::vector<double> strengths = gltf ? gltf_emissive_strengths(path, lower_extension(path) == ".glb") : std::vector<double>();
+  const std::vector<GltfMaterialExtras> extras =
+      gltf ? gltf_material_extras(path, lower_extension(path) == ".glb") : std::vector<GltfMaterialExtras>();
+  const bool obj = lower_extension(path) == ".obj";
+  const std::set<std::string> with_kd = obj ? mtl_materials_with_kd(summary.files) : std::set<std::string>();
+  if (const long line = obj ? obj_face_without_usemtl(path) : 0)
+    throw InputError(path + ": line " + std::to_string(line) + ": a face after mtllib and before any "
+                     "usemtl (Assimp would give it the library's last material): put a usemtl before it");
   std::vector<ImportedPatch> patches;
   // The meshes in the order of the file's nodes (an OBJ's groups as written), each through
   // its node's transformation (glTF node hierarchies).
@@ -115,9 +123,13 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
                               "\", material \"" + material_name + "\"";
     // PLY has no materials (Assimp invents a white one): its reflectance is its vertex colours,
     // else the default.
-    Material material = vertex_colours ? Material{} : read_material(ai_material, where);
-    if (mesh.mMaterialIndex < strengths.size()) {
-      const double strength = strengths[mesh.mMaterialIndex];
+    // A colour the file does not give is the documented default, not Assimp's stand-in (0.6
+    // for OBJ, glTF's white for a material without baseColorFactor or a primitive without one).
+    const bool colour_given = gltf ? mesh.mMaterialIndex < extras.size() && extras[mesh.mMaterialIndex].base_colour
+                                   : !obj || with_kd.count(material_name) > 0;
+    Material material = vertex_colours ? Material{} : read_material(ai_material, where, colour_given);
+    if (mesh.mMaterialIndex < extras.size()) {
+      const double strength = extras[mesh.mMaterialIndex].emissive_strength;
       if (!(strength >= 0.0) || !std::isfinite(strength))
         throw InputError(where + ": KHR_materials_emissive_strength " + std::to_string(strength) +
                          ": must be finite and not negative");

@@ -32,11 +32,11 @@ std::string show(const Point& p) {
 }
 
 // A material's reflectance and emission, checked: never a silent clamp.
-Material read_material(const aiMaterial& m, const std::string& where) {
+Material read_material(const aiMaterial& m, const std::string& where, bool colour_given) {
   Material result;
   aiColor4D colour;
-  if (m.Get(AI_MATKEY_BASE_COLOR, colour) == aiReturn_SUCCESS ||
-      m.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == aiReturn_SUCCESS)
+  if (colour_given && (m.Get(AI_MATKEY_BASE_COLOR, colour) == aiReturn_SUCCESS ||
+                       m.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == aiReturn_SUCCESS))
     result.reflectance = as_written(colour.r, colour.g, colour.b);
   aiColor3D emissive;
   if (m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == aiReturn_SUCCESS)
@@ -44,8 +44,7 @@ Material read_material(const aiMaterial& m, const std::string& where) {
   for (int c = 0; c < 3; ++c) {
     if (!(result.reflectance[c] >= 0.0 && result.reflectance[c] < 1.0))
       throw InputError(where + ": reflectance (Kd, base colour) " + show(result.reflectance) +
-                       ": each channel must be in [0, 1) (1 would never lose energy; a glTF "
-                       "material without baseColorFactor is white by glTF's own default)");
+                       ": each channel must be in [0, 1) (1 would never lose energy)");
     if (!(result.emission[c] >= 0.0) || !std::isfinite(result.emission[c]))
       throw InputError(where + ": emission (Ke, emissive) " + show(result.emission) +
                        ": each channel must be finite and not negative");

@@ -29,9 +29,10 @@ Point as_written(float x, float y, float z);
 // "x y z", for messages.
 std::string show(const Point& p);
 
-// Reflectance from the glTF base colour or the MTL Kd, emission from the emissive colour or
-// Ke. Throws InputError naming `where` and the field when a value is out of range.
-Material read_material(const aiMaterial& m, const std::string& where);
+// Reflectance from the glTF base colour or the MTL Kd (kDefaultReflectance when the file does
+// not give it: `colour_given` false), emission from the emissive colour or Ke. Throws
+// InputError naming `where` and the field when a value is out of range.
+Material read_material(const aiMaterial& m, const std::string& where, bool colour_given);
 
 // Whether one of `lights` (NAME or NAME=R,G,B) names `name`; sets `emission` (1, 1, 1 without
 // values) and marks it in `used`. Throws InputError on values that are not finite and >= 0.
