@@ -437,6 +437,17 @@ TEST_F(BadModel, FaceBeforeUsemtl) {
             std::string::npos);
 }
 
+// A usemtl naming no material of the library (a typing error) would be a default grey.
+TEST_F(BadModel, UsemtlNamingNothing) {
+  std::ofstream(dir / "a.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n";
+  EXPECT_NE(refusal("a.obj", std::string("mtllib a.mtl\n") + kTriangle + "usemtl lamp\nf 1 2 3\nusemtl gery\nf 1 3 2\n")
+                .find("line 7: usemtl gery: no material library of the model defines it"),
+            std::string::npos);
+  EXPECT_NE(refusal("b.obj", std::string(kTriangle) + "usemtl lamp\nf 1 2 3\n")
+                .find("line 4: usemtl lamp: no material library"),
+            std::string::npos);
+}
+
 TEST_F(BadModel, NoLight) {
   EXPECT_NE(refusal("a.obj", std::string(kTriangle) + "f 1 2 3\n").find("--light"), std::string::npos);
 }

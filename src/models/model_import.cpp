@@ -9,7 +9,6 @@
 #include <assimp/scene.h>
 #include <cmath>
 #include <filesystem>
-#include <set>
 
 #include <glm/vec3.hpp>
 
@@ -97,10 +96,11 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   const std::vector<GltfMaterialExtras> extras =
       gltf ? gltf_material_extras(path, lower_extension(path) == ".glb") : std::vector<GltfMaterialExtras>();
   const bool obj = lower_extension(path) == ".obj";
-  const std::set<std::string> with_kd = obj ? mtl_materials_with_kd(summary.files) : std::set<std::string>();
-  if (const long line = obj ? obj_face_without_usemtl(path) : 0)
-    throw InputError(path + ": line " + std::to_string(line) + ": a face after mtllib and before any "
-                     "usemtl (Assimp would give it the library's last material): put a usemtl before it");
+  const MtlNames mtl = obj ? mtl_names(summary.files) : MtlNames();
+  if (obj) {
+    const std::string problem = obj_material_problem(path, mtl);
+    if (!problem.empty()) throw InputError(path + ": " + problem);
+  }
   std::vector<ImportedPatch> patches;
   // The meshes in the order of the file's nodes (an OBJ's groups as written), each through
   // its node's transformation (glTF node hierarchies).
@@ -126,7 +126,7 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     // A colour the file does not give is the documented default, not Assimp's stand-in (0.6
     // for OBJ, glTF's white for a material without baseColorFactor or a primitive without one).
     const bool colour_given = gltf ? mesh.mMaterialIndex < extras.size() && extras[mesh.mMaterialIndex].base_colour
-                                   : !obj || with_kd.count(material_name) > 0;
+                                   : !obj || mtl.with_kd.count(material_name) > 0;
     Material material = vertex_colours ? Material{} : read_material(ai_material, where, colour_given);
     if (mesh.mMaterialIndex < extras.size()) {
       const double strength = extras[mesh.mMaterialIndex].emissive_strength;

@@ -1,6 +1,6 @@
 // What Assimp 5.2 does not say of an OBJ's materials: whether an MTL material gives its
-// diffuse colour, and which faces it gives a material they did not ask for. Assimp fills a missing Kd with its own 0.6 grey (and so a face without
-// `usemtl`), which looks like a colour the file gave; the importer's documented default is 0.5.
+// diffuse colour, and which faces it gives a material they did not ask for (a face before any
+// usemtl, a usemtl naming no material), each in silence.
 #pragma once
 
 #include <set>
@@ -9,13 +9,19 @@
 
 namespace ncube::models {
 
-// The names of the materials with a `Kd` line in the files among `files` that end in .mtl
-// (the material libraries an OBJ read).
-std::set<std::string> mtl_materials_with_kd(const std::vector<std::string>& files);
+struct MtlNames {
+  std::set<std::string> defined;  // every newmtl
+  std::set<std::string> with_kd;  // those with a Kd line
+};
 
-// The line number (from 1) of the first face of the OBJ at `path` that follows an `mtllib`
-// line with no `usemtl` before it, 0 if there is none. Assimp 5.2 gives such faces the last
-// material of the library, in silence: the importer refuses them instead.
-long obj_face_without_usemtl(const std::string& path);
+// The materials of the files among `files` that end in .mtl (the libraries an OBJ read).
+// Assimp fills a missing Kd with its own 0.6 grey; the importer's documented default is 0.5.
+MtlNames mtl_names(const std::vector<std::string>& files);
+
+// What is wrong with the materials the OBJ at `path` asks for, "" if nothing: "line N: ..."
+// for the first face that follows mtllib with no usemtl before it (Assimp gives it the
+// library's last material) or the first usemtl naming a material no library defines (Assimp
+// gives it a default).
+std::string obj_material_problem(const std::string& path, const MtlNames& names);
 
 }  // namespace ncube::models
