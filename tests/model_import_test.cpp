@@ -364,6 +364,37 @@ TEST(ModelImport, GlbIsTheGltfScene) {
   EXPECT_EQ(from_glb, import_model(model("lamp.gltf"), options, summary));
 }
 
+// A node scaled by -1 in x mirrors two-quads.gltf: the corners' x change sign and their order
+// is turned around, so the floor still faces up (+y) and the ceiling down (glTF's rule: a
+// negative determinant means the winding is reversed).
+TEST(ModelImport, MirroredNodeKeepsTheFrontSide) {
+  nlohmann::json document = nlohmann::json::parse(std::ifstream(model("two-quads.gltf")));
+  document["nodes"][0]["scale"] = {-1, 1, 1};
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_mirror";
+  fs::create_directories(dir);
+  std::ofstream(dir / "two-quads.gltf") << document.dump();
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  const nlohmann::json scene = import_model((dir / "two-quads.gltf").string(), options, summary);
+  fs::remove_all(dir);
+  const auto normal_y = [&scene](std::size_t k) {  // Newell's y component: 2 x area x n.y
+    const nlohmann::json& v = scene["patches"][k]["vertices"];
+    double y = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const nlohmann::json& a = v[i];
+      const nlohmann::json& b = v[(i + 1) % v.size()];
+      y += (a[2].get<double>() - b[2].get<double>()) * (a[0].get<double>() + b[0].get<double>());
+    }
+    return y;
+  };
+  ASSERT_EQ(scene["patches"].size(), 2u);
+  // The halves (2, 1, 0) and (3, 2, 0) of the mirrored floor, merged from corner 2.
+  EXPECT_EQ(scene["patches"][0]["vertices"], nlohmann::json::parse("[[-1,0,1],[0,0,1],[0,0,0],[-1,0,0]]"));
+  EXPECT_GT(normal_y(0), 0.0);  // the floor faces up
+  EXPECT_LT(normal_y(1), 0.0);  // the ceiling faces down
+}
+
 struct BadModel : testing::Test {
   fs::path dir;
   void SetUp() override {

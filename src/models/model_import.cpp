@@ -116,6 +116,9 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   for (const auto& [m, transform] : placed) {
     const aiMesh& mesh = *model->mMeshes[m];
     const bool moved = !transform.IsIdentity();
+    // A mirroring placement (a glTF node scaled by -1 on an axis) turns the corners' winding
+    // around; glTF defines the front by the winding after placement, so it is turned back.
+    const bool mirrored = moved && transform.Determinant() < 0;
     const aiMaterial& ai_material = *model->mMaterials[mesh.mMaterialIndex];
     const std::string material_name = ai_material.GetName().C_Str();
     const std::string mesh_name = mesh.mName.C_Str();
@@ -176,7 +179,7 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
             throw InputError(at + (face_colours.empty() ? ": vertex colour " : ": face colour ") + show(colour) +
                              ": each channel must be in [0, 1) (a white of 255 is 1)");
       }
-      if (options.flip_faces) std::reverse(corners.begin(), corners.end());
+      if (options.flip_faces != mirrored) std::reverse(corners.begin(), corners.end());
       // Repeated corners (consecutive, within kSame of the face's size) are one corner.
       const double d = diameter(corners);
       std::vector<Point> distinct;
