@@ -2,6 +2,7 @@
 #include "visibility/brute_force_occluders.h"
 
 #include <gtest/gtest.h>
+#include <cmath>
 #include <random>
 
 #include "panel_room.h"
@@ -172,6 +173,66 @@ TEST(FastOccluders, FindBlockersNearTheRaysEndsForTheWholeSceneAndShares) {
         EXPECT_EQ(counts, reference);
       }
     }
+}
+
+// The loader's normal of an axis-aligned rectangle is +-1 only up to rounding (normalised
+// cross product), and the fast count sorts such planes into classes by that exact value. At
+// points whose distance to the plane lies at the side tolerance, n * z and +-z round apart:
+// the crossings counted there must still be the brute-force loop's.
+TEST(FastOccluders, CountsCrossingsAtTheToleranceOfPlanesWhoseNormalIsNotExactlyOne) {
+  Scene scene;
+  scene.name = "near-one normals";
+  // Floors of different sizes at different heights until one normal's z is not exactly 1.
+  double nz = 1.0;
+  int plane = -1;
+  for (int i = 0; i < 40 && nz == 1.0; ++i) {
+    const double w = 0.1 + 0.013 * i, h = 0.07 + 0.029 * i, z = 0.05 + 0.021 * i;
+    Patch p;
+    p.polygon = Polygon::quad(Vec3(0, 0, z), Vec3(w, 0, z), Vec3(w, h, z), Vec3(0, h, z));
+    p.reflectance = Rgb(0.5);
+    p.nu = 1;
+    p.nv = 1;
+    scene.patches.push_back(p);
+    scene.build_elements();
+    nz = scene.patches.back().normal.z;
+    plane = int(scene.patches.size()) - 1;  // the one with that normal, when it is not 1
+  }
+  ASSERT_NE(nz, 1.0);
+  Patch light;  // below everything, facing up: a point above a plane is crossed by its rays
+  light.polygon = Polygon::quad(Vec3(0, 0, -1), Vec3(1, 0, -1), Vec3(1, 1, -1), Vec3(0, 1, -1));
+  light.reflectance = Rgb(0.5);
+  light.emission = Rgb(1.0);
+  light.nu = 1;
+  light.nv = 1;
+  scene.patches.push_back(light);
+  scene.build_elements();
+  const int shooter_patch = int(scene.patches.size()) - 1;
+  std::vector<int> all(scene.patches.size());
+  for (int i = 0; i < int(all.size()); ++i) all[i] = i;
+  const FastOccluders fast(scene, all, RayTestPolicy::kTestAllPatches);
+  const BruteForceOccluders brute_force(scene, all, RayTestPolicy::kTestAllPatches);
+  const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 16);
+  // Points whose height walks double by double across plane + tolerance and plane - tolerance.
+  const Patch& p = scene.patches[std::size_t(plane)];
+  const double offset = glm::dot(p.normal, p.polygon[0]);
+  const double tolerance = plane_side_tolerance(scene);
+  int rounding_apart = 0;
+  for (double edge : {offset + tolerance, offset - tolerance}) {
+    double z = edge / nz;
+    for (int s = 0; s < 40; ++s) z = std::nextafter(z, -1.0);
+    for (int step = 0; step < 80; ++step, z = std::nextafter(z, 2.0)) {
+      const double by_normal = nz * z - offset, by_one = z - offset;
+      rounding_apart += (by_normal > tolerance) != (by_one > tolerance) ||
+                        (by_normal < -tolerance) != (by_one < -tolerance);
+      const Vec3 point(0.5, 0.5, z);
+      WorkCounts a, b;
+      ASSERT_EQ(fast.unblocked_parts(point, -1, shooter, a),
+                brute_force.unblocked_parts(point, -1, shooter, b));
+      ASSERT_EQ(a, b) << "height " << z;
+    }
+  }
+  // The walk must reach heights where taking the normal as exactly 1 would count otherwise.
+  EXPECT_GT(rounding_apart, 0);
 }
 
 }  // namespace

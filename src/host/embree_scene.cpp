@@ -1,5 +1,7 @@
 #include "host/embree_scene.h"
 
+#include <emmintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -72,6 +74,23 @@ void widened_triangles(const Vec3 q[4], const Vec3& normal, double pad, float* o
         out[9 * t + 3 * k + axis] = float(cut[d][t].corners[k][axis]);
 }
 
+// Bit i set when lane i of Embree's `valid` (0 or -1 per lane) is on: four SSE2 compares for
+// the 16 lanes of rtcOccluded16, which calls the filter once per primitive met.
+std::uint64_t valid_lanes(const int* valid, unsigned n) {
+  if (n != 16) {
+    std::uint64_t lanes = 0;
+    for (unsigned i = 0; i < n; ++i) lanes |= std::uint64_t(valid[i] != 0) << i;
+    return lanes;
+  }
+  const __m128i zero = _mm_setzero_si128();
+  unsigned off = 0;
+  for (int quad = 0; quad < 4; ++quad) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(valid + 4 * quad));
+    off |= unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, zero)))) << (4 * quad);
+  }
+  return ~off & 0xffffu;
+}
+
 }  // namespace
 
 struct EmbreeScene::Query {
@@ -80,6 +99,9 @@ struct EmbreeScene::Query {
   Vec3 from;
   Vec3 delta[kMaxShooterParts];
   int excluded_a, excluded_b;
+  // Per ray, the last candidate the exact test denied it: the two overlapping triangles of a
+  // quadrilateral are often reported one after the other, and the test would deny again.
+  int denied[kMaxShooterParts];
   const EmbreeScene::RayTargets* targets;
   std::vector<std::pair<int, int>>* hits;  // null: any blocker ends a ray; else every
                                            // (ray, position) found, and no ray ends
@@ -89,7 +111,7 @@ struct EmbreeScene::Query {
 };
 
 EmbreeScene::EmbreeScene(const std::vector<PatchCandidate>& candidates, double pad)
-    : candidates_(candidates), pad_(pad), near_(candidates, kNearRadius * pad) {
+    : candidates_(candidates), exact_(candidates), pad_(pad), near_(candidates, kNearRadius * pad) {
   RTCDevice device = embree_device();
   scene_ = rtcNewScene(device);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
@@ -137,7 +159,7 @@ EmbreeScene::~EmbreeScene() {
 }
 
 void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
-  const Query& q = *reinterpret_cast<const Query*>(args->context);
+  Query& q = *reinterpret_cast<Query*>(args->context);
   // Embree calls this once per primitive met, with the lanes that met it valid (often one of
   // 16): the valid lanes first, then only those. Locals, not args->..., in the loop: the
   // stores to `valid` could otherwise alias them and force reloads.
@@ -146,16 +168,23 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
   const unsigned* ray_ids = &RTCRayN_id(args->ray, n, 0);
   const unsigned* triangles = &RTCHitN_primID(args->hit, n, 0);
   const int* position_of = q.scene->position_of_triangle_.data();
-  std::uint64_t lanes = 0;
-  for (unsigned i = 0; i < n; ++i) lanes |= std::uint64_t(valid[i] != 0) << i;
-  for (; lanes != 0; lanes &= lanes - 1) {
+  const AxisPatchTest& exact = q.scene->exact_;
+  const std::uint64_t lanes_in = valid_lanes(valid, n);
+  // The exact test, unless it denied this ray this candidate just before (same answer).
+  auto crosses = [&](unsigned ray, int position) {
+    if (q.denied[ray] == position) return false;
+    if (exact.crosses(position, q.from, q.delta[ray])) return true;
+    q.denied[ray] = position;
+    return false;
+  };
+  for (std::uint64_t lanes = lanes_in; lanes != 0; lanes &= lanes - 1) {
     const unsigned i = unsigned(__builtin_ctzll(lanes));
     const unsigned ray = ray_ids[i];
     const int position = position_of[triangles[i]];
     if (q.sets_of) {  // only hits that can tell of a set not yet known to block are tested
       const std::uint64_t sets = q.sets_of[position];
       if (position == q.excluded_a || position == q.excluded_b || (sets & ~q.ray_sets[ray]) == 0 ||
-          !segment_crosses(q.scene->candidates_[std::size_t(position)], q.from, q.delta[ray])) {
+          !crosses(ray, position)) {
         valid[i] = 0;
         continue;
       }
@@ -163,9 +192,7 @@ void EmbreeScene::exact_filter(const RTCFilterFunctionNArguments* args) {
       if (q.ray_sets[ray] != q.all_sets) valid[i] = 0;  // else accepted: the ray ends
       continue;
     }
-    const bool blocks = position != q.excluded_a && position != q.excluded_b &&
-                        segment_crosses(q.scene->candidates_[std::size_t(position)], q.from,
-                                        q.delta[ray]);
+    const bool blocks = position != q.excluded_a && position != q.excluded_b && crosses(ray, position);
     if (q.hits) {  // record and reject: the traversal goes on to the end of the segment
       if (blocks) q.hits->emplace_back(int(ray), position);
       valid[i] = 0;
@@ -219,13 +246,11 @@ void EmbreeScene::near_end_crossings(const Query& query, int count, Found&& foun
   const RayTargets& targets = *query.targets;
   near_.for_each_near(query.from, [&](int position) {
     if (position == query.excluded_a || position == query.excluded_b) return;
-    const PatchCandidate& c = candidates_[std::size_t(position)];
     for (int k = 0; k < count; ++k)
-      if (segment_crosses(c, query.from, query.delta[k])) found(k, position);
+      if (exact_.crosses(position, query.from, query.delta[k])) found(k, position);
   });
   for (const auto& [k, position] : targets.near)
-    if (position != query.excluded_a &&
-        segment_crosses(candidates_[std::size_t(position)], query.from, query.delta[k]))
+    if (position != query.excluded_a && exact_.crosses(position, query.from, query.delta[k]))
       found(k, position);
 }
 
@@ -252,6 +277,7 @@ void EmbreeScene::prepare(Query& query, const Vec3& from, int receiver,
   for (int k = 0; k < targets.count(); ++k) query.delta[k] = targets.points[std::size_t(k)] - from;
   query.excluded_a = receiver;
   query.excluded_b = targets.patch;
+  std::fill(query.denied, query.denied + kMaxShooterParts, -1);
   query.targets = &targets;
   query.hits = hits;
   query.sets_of = nullptr;

@@ -46,6 +46,7 @@
 #include <utility>
 #include <vector>
 
+#include "host/axis_patch_test.h"
 #include "host/near_patches.h"
 #include "visibility/ray_patch_test.h"
 #include "radiosity/shooter.h"
@@ -112,6 +113,7 @@ class EmbreeScene {
   PartMask trace(Query& query, int count, PartMask done) const;
 
   const std::vector<PatchCandidate>& candidates_;
+  AxisPatchTest exact_;  // segment_crosses on candidates_, fewer operations
   std::vector<int> position_of_triangle_;  // Embree's primitive -> candidate position
   double pad_;
   NearPatches near_;  // radius kNearRadius pads

@@ -53,28 +53,31 @@ FastOccluders::FastOccluders(const Scene& scene, std::vector<int> patch_indices,
   plane_members_.resize(patches_.size());
   std::vector<std::int32_t> next(plane_first_.begin(), plane_first_.end() - 1);
   for (int c = 0; c < size(); ++c) plane_members_[std::size_t(next[plane_of_[c]]++)] = c;
-  // Classes of axis-aligned planes: 2 * axis + (normal component < 0).
-  std::array<std::vector<int>, 6> classes;
+  // Classes of axis-aligned planes: one per axis and exact value of the normal's component
+  // along it (the others exactly zero). A normalised axis normal is often 1 - 2^-53 or
+  // 1 + 2^-52 rather than 1, so one axis may have a few classes.
+  std::map<std::pair<int, double>, std::vector<int>> classes;
   for (int g = 0; g < plane_count(); ++g) {
     const double n[3] = {plane_x_[g], plane_y_[g], plane_z_[g]};
     int axis = -1;
     for (int a = 0; a < 3; ++a)
-      if ((n[a] == 1.0 || n[a] == -1.0) && n[(a + 1) % 3] == 0.0 && n[(a + 2) % 3] == 0.0) axis = a;
-    if (axis < 0) {
+      if (std::fabs(n[a]) > 0.5 && n[(a + 1) % 3] == 0.0 && n[(a + 2) % 3] == 0.0) axis = a;
+    if (axis < 0 || (classes.size() == kMaxClasses && !classes.count({axis, n[axis]}))) {
       other_planes_.push_back(g);
       continue;
     }
-    classes[std::size_t(2 * axis + (n[axis] < 0.0))].push_back(g);
+    classes[{axis, n[axis]}].push_back(g);
   }
-  for (int c = 0; c < 6; ++c) {
-    std::vector<int>& members = classes[std::size_t(c)];
+  for (auto& [key, members] : classes) {
     std::sort(members.begin(), members.end(), [&](int a, int b) {
       return plane_offset_[a] < plane_offset_[b] || (plane_offset_[a] == plane_offset_[b] && a < b);
     });
-    class_begin_[std::size_t(c)] = int(axis_order_.size());
+    class_begin_.push_back(int(axis_order_.size()));
+    class_axis_.push_back(key.first);
+    class_normal_.push_back(key.second);
     axis_order_.insert(axis_order_.end(), members.begin(), members.end());
   }
-  class_begin_[6] = int(axis_order_.size());
+  class_begin_.push_back(int(axis_order_.size()));
   for (int g : axis_order_) axis_offsets_.push_back(plane_offset_[std::size_t(g)]);
   whole_scene_ = std::count(position_of_scene_patch_.begin(), position_of_scene_patch_.end(), -1) == 0;
   if (!whole_scene_ && policy_ == RayTestPolicy::kTestAllPatches)
@@ -154,18 +157,24 @@ void FastOccluders::in_plane_blockers(int g, const Vec3& point, PartMask rays, c
   }
 }
 
-std::int64_t FastOccluders::crossings_over_planes(const Vec3& point, const TargetSides& sides) const {
+std::int64_t FastOccluders::crossings_over_planes(const Vec3& point, const TargetSides& sides,
+                                                  ClassMemo& memo) const {
   // A point in front of a plane is crossed by the rays to the targets behind it, and the
   // other way round.
   std::int64_t crossings = 0;
-  for (int c = 0; c < 6; ++c) {
+  for (int c = 0; c < class_count(); ++c) {
     // Along a class (offsets ascending) the point's side only falls: +1 ... 0 ... -1. For a
-    // plane of class c (normal +-1 along axis c / 2, the other components 0) the signed
-    // distance of side_of is, bit for bit, +-coordinate - offset (the zero terms add
-    // nothing but the sign of a zero, which no comparison sees).
+    // plane of class c (normal component n along axis a, the other components 0) the signed
+    // distance of side_of is, bit for bit, n * coordinate - offset (the zero terms add
+    // nothing but the sign of a zero, which no comparison sees), and n * coordinate is the
+    // same rounded product for every plane of the class.
     const int begin = class_begin_[std::size_t(c)], end = class_begin_[std::size_t(c) + 1];
-    if (begin == end) continue;
-    const double coordinate = c % 2 == 0 ? point[c / 2] : -point[c / 2];
+    const double coordinate = class_normal_[std::size_t(c)] * point[class_axis_[std::size_t(c)]];
+    if (memo.known[std::size_t(c)] && memo.coordinate[std::size_t(c)] == coordinate) {
+      crossings += memo.crossings[std::size_t(c)];
+      continue;
+    }
+    std::int64_t in_class = 0;
     const double* offsets = axis_offsets_.data();
     const double tolerance = side_tolerance_;
     const int not_in_front = int(std::partition_point(offsets + begin, offsets + end, [&](double d) {
@@ -174,8 +183,12 @@ std::int64_t FastOccluders::crossings_over_planes(const Vec3& point, const Targe
     const int behind = int(std::partition_point(offsets + not_in_front, offsets + end, [&](double d) {
                          return !(coordinate - d < -tolerance);
                        }) - offsets);
-    crossings += sides.behind_prefix[std::size_t(not_in_front)] - sides.behind_prefix[std::size_t(begin)];
-    crossings += sides.in_front_prefix[std::size_t(end)] - sides.in_front_prefix[std::size_t(behind)];
+    in_class += sides.behind_prefix[std::size_t(not_in_front)] - sides.behind_prefix[std::size_t(begin)];
+    in_class += sides.in_front_prefix[std::size_t(end)] - sides.in_front_prefix[std::size_t(behind)];
+    memo.known[std::size_t(c)] = true;
+    memo.coordinate[std::size_t(c)] = coordinate;
+    memo.crossings[std::size_t(c)] = in_class;
+    crossings += in_class;
   }
   for (int g : other_planes_) {
     const int side = plane_side(g, point);
@@ -217,7 +230,7 @@ void FastOccluders::first_blocker_counts(const PartMask* crossing, const int* fi
 PartMask FastOccluders::answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
                            const TargetSides& sides, const SceneBlockers::Lists* lists,
                            const SceneBlockers::SetMasks* masks, std::size_t index,
-                           WorkCounts& counts) const {
+                           WorkCounts& counts, ClassMemo& memo) const {
   const int receiver_position = position_in_set(receiver_patch);
   const int shooter_position = position_in_set(shooter.patch);
   const int m = shooter.part_count;
@@ -264,7 +277,7 @@ PartMask FastOccluders::answer(const Vec3& point, int receiver_patch, const Shoo
       crossing_buffer[std::size_t(g)] = side > 0 ? sides.behind[g] : (side < 0 ? sides.in_front[g] : 0);
     }
   } else {
-    crossings = crossings_over_planes(point, sides);
+    crossings = crossings_over_planes(point, sides, memo);
   }
   if (first_blocker) {
     first_blocker_counts(crossing_buffer.data(), first, m, receiver_position, shooter_position,
@@ -341,8 +354,10 @@ void FastOccluders::answer_points(const PointBlock& block, const Shooter& shoote
   const std::size_t grain = lists || set_masks ? 64 : 8;
   parallel_chunks(threads, block.count, grain, [&](std::size_t begin, std::size_t end) {
     WorkCounts local;
+    ClassMemo memo;
     for (std::size_t k = begin; k < end; ++k)
-      masks[k] = answer(block.points[k], block.patches[k], shooter, sides, lists, set_masks, k, local);
+      masks[k] = answer(block.points[k], block.patches[k], shooter, sides, lists, set_masks, k,
+                        local, memo);
     const std::lock_guard<std::mutex> lock(merge);
     counts += local;  // integer sums: the same whatever the order
   });

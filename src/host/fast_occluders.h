@@ -88,6 +88,16 @@ class FastOccluders : public OccluderSet {
   int plane_count() const { return int(plane_size_.size()); }
 
  private:
+  static constexpr std::size_t kMaxClasses = 32;  // planes beyond go one by one
+  // The last coordinate searched in each class of axis-aligned planes and what it gave: the
+  // points of a block lie on few patches, in rows, so they often share a coordinate with the
+  // point before (the same coordinate gives the same sums: they depend on it alone). One per
+  // host thread and TargetSides.
+  struct ClassMemo {
+    std::array<double, kMaxClasses> coordinate;
+    std::array<std::int64_t, kMaxClasses> crossings;
+    std::array<bool, kMaxClasses> known{};
+  };
   // The batch call's work when the answer cache does not hold the block.
   void answer_block(const PointBlock& block, const Shooter& shooter, PartMask* masks,
                     WorkCounts& counts) const;
@@ -102,7 +112,7 @@ class FastOccluders : public OccluderSet {
   PartMask answer(const Vec3& point, int receiver_patch, const Shooter& shooter,
                   const TargetSides& sides, const SceneBlockers::Lists* lists,
                   const SceneBlockers::SetMasks* masks, std::size_t index,
-                  WorkCounts& counts) const;
+                  WorkCounts& counts, ClassMemo& memo) const;
   // Where this set's answers come from: the whole scene's Embree query (the whole scene,
   // testing all patches), its per-set masks (a registered share testing all patches), or
   // its lists of blockers (the first-blocker loop needs every blocker's position).
@@ -126,7 +136,8 @@ class FastOccluders : public OccluderSet {
                          int receiver_position, int shooter_position, PartMask& blocked,
                          int* first) const;
   // Plane crossings of the rays from `point` over all planes (none excluded).
-  std::int64_t crossings_over_planes(const Vec3& point, const TargetSides& sides) const;
+  std::int64_t crossings_over_planes(const Vec3& point, const TargetSides& sides,
+                                     ClassMemo& memo) const;
   // Tests and plane crossings of the first-blocker loop, given each ray's first blocker and
   // per plane the rays that cross it.
   void first_blocker_counts(const PartMask* crossing, const int* first, int part_count,
@@ -145,11 +156,15 @@ class FastOccluders : public OccluderSet {
   std::vector<double> plane_x_, plane_y_, plane_z_, plane_offset_;
   std::vector<std::int32_t> plane_size_;  // patches in each plane
   std::vector<std::int32_t> plane_of_;    // per position
-  // Axis-aligned planes (normal exactly +-x, +-y or +-z), by class (axis and sign) and within
-  // a class by offset: a point's side is then monotone along the class, so two binary
-  // searches per class find the planes in front of and behind it. The other planes.
+  // Axis-aligned planes (normal +-e_a up to rounding: the other components exactly 0), by
+  // class (axis and exact normal component) and within a class by offset: a point's side is
+  // then monotone along the class, so two binary searches per class find the planes in front
+  // of and behind it. The other planes.
   std::vector<int> axis_order_;
-  std::array<int, 7> class_begin_{};  // class c is axis_order_[class_begin_[c] .. class_begin_[c+1])
+  std::vector<int> class_begin_;       // class c is axis_order_[class_begin_[c] .. class_begin_[c+1])
+  std::vector<int> class_axis_;        // its axis a
+  std::vector<double> class_normal_;   // its normal's component along a
+  int class_count() const { return int(class_axis_.size()); }
   std::vector<double> axis_offsets_;  // plane_offset_ of axis_order_[i] (contiguous: searched
                                       // per point and set)
   std::vector<int> other_planes_;
