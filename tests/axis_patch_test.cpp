@@ -123,5 +123,31 @@ TEST(AxisPatchTest, LeavesOtherPatchesAndHugeScenesToTheExactTest) {
   for (int p = 0; p < int(huge.size()); ++p) EXPECT_FALSE(careful.fast(p)) << p;
 }
 
+TEST(AxisPatchTest, SidesAgreeWithTheLoopsSideTestAtTheTolerance) {
+  const std::vector<PatchCandidate> patches = rectangles();
+  const AxisPatchTest fast(patches);
+  const double tolerance = 1e-9 * 20.0;
+  long apart_from_unit_normal = 0;
+  for (int p = 0; p < int(patches.size()); ++p) {
+    const PatchCandidate& c = patches[std::size_t(p)];
+    const int axis = c.normal.x != 0.0 ? 0 : (c.normal.y != 0.0 ? 1 : 2);
+    for (double edge : {c.plane_offset + tolerance, c.plane_offset - tolerance}) {
+      Vec3 x(0.3, -0.2, 0.9);
+      x[axis] = edge / c.normal[axis];
+      for (int s = 0; s < 30; ++s) x[axis] = std::nextafter(x[axis], -1e300);
+      for (int step = 0; step < 60; ++step, x[axis] = std::nextafter(x[axis], 1e300)) {
+        const double distance = glm::dot(c.normal, x) - c.plane_offset;
+        const int expected = distance > tolerance ? 1 : (distance < -tolerance ? -1 : 0);
+        ASSERT_EQ(fast.side(p, x, tolerance), expected) << p;
+        const double unit = std::copysign(1.0, c.normal[axis]) * x[axis] - c.plane_offset;
+        apart_from_unit_normal += (unit > tolerance) != (distance > tolerance) ||
+                                  (unit < -tolerance) != (distance < -tolerance);
+      }
+    }
+  }
+  // Some heights are classed otherwise by a normal taken as exactly +-1.
+  EXPECT_GT(apart_from_unit_normal, 0);
+}
+
 }  // namespace
 }  // namespace ncube

@@ -53,6 +53,16 @@ class AxisPatchTest {
     return true;
   }
 
+  // The loops' plane side test, sign of dot(normal, x) - offset beyond +-tolerance, the same
+  // answer (the same rounded product n * x_a, the zero terms aside).
+  __attribute__((always_inline)) int side(int position, const Vec3& x, double tolerance) const {
+    const Record& r = records_[std::size_t(position)];
+    const PatchCandidate& c = candidates_[std::size_t(position)];
+    const double distance =
+        r.axis >= 0 ? r.normal * x[r.axis] - r.offset : glm::dot(c.normal, x) - c.plane_offset;
+    return distance > tolerance ? 1 : (distance < -tolerance ? -1 : 0);
+  }
+
   // Whether the candidate at `position` takes the fast form (for tests and reports).
   bool fast(int position) const { return records_[std::size_t(position)].axis >= 0; }
 

@@ -228,13 +228,15 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
       tested |= asking;
       const PatchCandidate& c = patches[std::size_t(position)];
       if (c.scene_index == packet.receiver_patch || c.scene_index == packet.shooter_patch) continue;
-      const int side_of_from = octree_->side_of(c, packet.from);
+      const double tolerance = octree_->side_tolerance();
+      const int side_of_from = exact_.side(position, packet.from, tolerance);
       for (std::uint64_t left = asking; left != 0; left &= left - 1) {
         const int ray = __builtin_ctzll(left);
         ++counts.ray_patch_tests;
-        if (side_of_from * octree_->side_of(c, packet.target[ray]) < 0) ++counts.plane_crossings;
+        if (side_of_from * exact_.side(position, packet.target[ray], tolerance) < 0)
+          ++counts.plane_crossings;
         const Vec3 delta(packet.delta[0][ray], packet.delta[1][ray], packet.delta[2][ray]);
-        if (segment_crosses(c, packet.from, delta)) {  // the first blocker ends its walk
+        if (exact_.crosses(position, packet.from, delta)) {  // the first blocker ends its walk
           blocked |= std::uint64_t(1) << ray;
           rays &= ~(std::uint64_t(1) << ray);
         }

@@ -18,6 +18,7 @@
 
 #include <memory>
 
+#include "host/axis_patch_test.h"
 #include "host/host_side.h"
 #include "visibility/octree.h"
 
@@ -25,7 +26,8 @@ namespace ncube {
 
 class FastOctree : public OccluderSet {
  public:
-  explicit FastOctree(std::unique_ptr<const Octree> octree) : octree_(std::move(octree)) {}
+  explicit FastOctree(std::unique_ptr<const Octree> octree)
+      : octree_(std::move(octree)), exact_(octree_->patches()) {}
 
   void unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
                        WorkCounts& counts) const override;
@@ -46,6 +48,7 @@ class FastOctree : public OccluderSet {
                     std::uint64_t met[8]) const;
 
   std::unique_ptr<const Octree> octree_;
+  AxisPatchTest exact_;  // the leaves' exact tests and side tests, fewer operations
 };
 
 }  // namespace ncube

@@ -73,6 +73,7 @@ class Octree : public OccluderSet {
   // The walk's two tests: does the segment from + t delta, t in [0, 1], meet the cell (grown
   // by the pad), and on which side of a patch's plane a point lies (+1, -1, 0).
   bool segment_meets_cell(int cell, const Vec3& from, const Vec3& delta) const;
+  double side_tolerance() const { return side_tolerance_; }
   int side_of(const PatchCandidate& c, const Vec3& x) const {
     const double distance = glm::dot(c.normal, x) - c.plane_offset;
     return distance > side_tolerance_ ? 1 : (distance < -side_tolerance_ ? -1 : 0);
