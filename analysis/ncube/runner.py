@@ -93,6 +93,14 @@ def run_snakemake(command):
             os.killpg(process.pid, signal.SIGKILL)
         except ProcessLookupError:
             pass
+        # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
+        # leave its lock behind, and the next run would refuse the folder. The lock is this
+        # run's own (no other instance could hold the folder while it ran), so it goes.
+        try:
+            subprocess.run(command + ["--unlock"], stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL, timeout=120, check=False)
+        except (OSError, subprocess.SubprocessError):
+            pass
         sys.exit(128 + signum)
 
     signal.signal(signal.SIGINT, stop)
