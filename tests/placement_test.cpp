@@ -56,6 +56,37 @@ TEST(Partition, BalancesElementsAndAssignsEveryPatchOnce) {
   }
 }
 
+// Section 4's rule as written: largest patches first, each to the processor with the fewest
+// elements so far, ties to the lower rank (a scan of every processor per patch).
+std::vector<std::vector<int>> greedy_by_scan(const Scene& scene, int processors) {
+  std::vector<int> by_size(scene.patches.size());
+  for (int i = 0; i < int(by_size.size()); ++i) by_size[std::size_t(i)] = i;
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int a, int b) {
+    return scene.patches[a].element_count() > scene.patches[b].element_count();
+  });
+  std::vector<std::vector<int>> owned(static_cast<std::size_t>(processors));
+  std::vector<long> load(static_cast<std::size_t>(processors), 0);
+  for (int patch : by_size) {
+    int target = 0;
+    for (int rank = 1; rank < processors; ++rank)
+      if (load[std::size_t(rank)] < load[std::size_t(target)]) target = rank;
+    owned[std::size_t(target)].push_back(patch);
+    load[std::size_t(target)] += scene.patches[patch].element_count();
+  }
+  for (auto& list : owned) std::sort(list.begin(), list.end());
+  return owned;
+}
+
+TEST(Partition, IsTheGreedyRuleWithTiesToTheLowerRank) {
+  // Many ties: scene2's patches share a few element counts, and with more processors than
+  // patches some stay empty.
+  for (const char* name : {"scenes/scene2.json", "scenes/cornell-box.json"}) {
+    const Scene scene = load_scene(repo(name));
+    for (int R : {1, 3, 8, 64, 1024})
+      EXPECT_EQ(partition_patches_by_elements(scene, R), greedy_by_scan(scene, R)) << name << " R=" << R;
+  }
+}
+
 TEST(Partition, VisibilitySharesSplitAllPatchesEvenly) {
   const Scene scene = load_scene(repo("scenes/scene1.json"));  // 288 patches
   for (int V : {1, 7, 11, 15}) {

@@ -27,9 +27,12 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   const bool octree = setup.options.visibility == VisibilityMethod::kOctree;
   const double whole_octree =
       octree && V == 0 ? octree_bytes(setup.scene, visibility_share(setup.scene, 1, 0), costs) : 0.0;
-  std::vector<double> share_octree(std::size_t(V), 0.0);
-  for (int j = 0; j < V && octree; ++j)
-    share_octree[std::size_t(j)] = octree_bytes(setup.scene, visibility_share(setup.scene, V, j), costs);
+  std::vector<double> share_octree(std::size_t(V), 0.0), share_patches(std::size_t(V), 0.0);
+  for (int j = 0; j < V; ++j) {
+    const std::vector<int> share = visibility_share(setup.scene, V, j);
+    share_patches[std::size_t(j)] = double(share.size());
+    if (octree) share_octree[std::size_t(j)] = octree_bytes(setup.scene, share, costs);
+  }
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < p.radiosity_processors; ++rank) {
     double owned_elements = 0.0;
@@ -45,7 +48,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
       rp.bytes += in_flight * block * (costs.point_bytes + V * mask_bytes);
     nodes.push_back(rp);
     for (int j = 0; j < V; ++j) {
-      const double share = double(visibility_share(setup.scene, V, j).size());
+      const double share = share_patches[std::size_t(j)];
       NodeMemory vp{p.visibility_node(rank, j), NodeRole::kVisibility, rank,
                     costs.node_reserve_bytes + records + share * costs.patch_geometry_bytes +
                         in_flight * block * (costs.point_bytes + mask_bytes) +

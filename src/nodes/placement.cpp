@@ -1,7 +1,10 @@
 #include "nodes/placement.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
+#include <queue>
+#include <utility>
 
 namespace ncube {
 
@@ -12,11 +15,16 @@ std::vector<std::vector<int>> partition_patches_by_elements(const Scene& scene, 
     return scene.patches[a].element_count() > scene.patches[b].element_count();
   });
   std::vector<std::vector<int>> owned(static_cast<std::size_t>(processors));
-  std::vector<long> load(static_cast<std::size_t>(processors), 0);
+  // The processor with the fewest elements so far, the lower rank among equals: the top of
+  // a heap of (elements, rank), so that 8,192 processors are not scanned for every patch.
+  using Load = std::pair<long, int>;
+  std::priority_queue<Load, std::vector<Load>, std::greater<Load>> fewest;
+  for (int rank = 0; rank < processors; ++rank) fewest.emplace(0, rank);
   for (int patch : by_size) {
-    const int target = int(std::min_element(load.begin(), load.end()) - load.begin());
-    owned[target].push_back(patch);
-    load[target] += scene.patches[patch].element_count();
+    const auto [elements, target] = fewest.top();
+    fewest.pop();
+    owned[std::size_t(target)].push_back(patch);
+    fewest.emplace(elements + scene.patches[patch].element_count(), target);
   }
   for (auto& list : owned) std::sort(list.begin(), list.end());
   return owned;
