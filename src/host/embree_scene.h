@@ -29,9 +29,10 @@
 //  * otherwise the crossing lies more than kNearRadius - kEndGap = 1.5 pads inside the part
 //    of the ray Embree is asked about, more than the single-precision error of Embree's hit
 //    parameter there: at most a pad (rounding of about 1e-6 of the scale over the sine of
-//    the crossing angle, above 2e-3 for every crossing left to Embree: the budget the
-//    triangles' padding covers in their plane, and the old rays' reach past both ends along the
-//    ray; docs/performance.md). Embree reports it, and the filter's exact test keeps it.
+//    the crossing angle, above SceneBlockers::kBand for every crossing left to Embree: the
+//    budget the triangles' padding covers in their plane, and the old rays' reach past both
+//    ends along the ray; docs/performance.md). Embree reports it, and the filter's exact
+//    test keeps it.
 // Rays shorter than 2 kEndGap pads are left to the near tests alone (every crossing is then
 // within kNearRadius pads of an end). Every answer is still the exact test's.
 // Contract (host side): it changes no answer and no count; it only proposes blockers, and

@@ -21,9 +21,9 @@ FastOccluders::FastOccluders(const Scene& scene, std::vector<int> patch_indices,
   // Rays with both ends within `band_` of a plane cross it at less than band_ / scale
   // radians, too flat for single precision: the exact test alone decides them against that
   // plane's patches. Every other crossing is steep enough for Embree's padded quads
-  // (scene_blockers.cpp, docs/performance.md).
+  // (scene_blockers.h, docs/performance.md).
   blockers_ = SceneBlockers::for_scene(scene);
-  band_ = 2e-3 * blockers_->scale();
+  band_ = blockers_->band();
   patches_.reserve(patch_indices.size());
   std::map<std::array<double, 4>, int> plane_index;
   for (int scene_index : patch_indices) {

@@ -59,11 +59,10 @@ SceneBlockers::SceneBlockers(const Scene& scene)
   candidates_.reserve(scene.patches.size());
   for (int p = 0; p < int(scene.patches.size()); ++p)
     candidates_.push_back(make_candidate(scene.patches[p].polygon, scene.patches[p].normal, p));
-  // Quads grow by 5e-4 of the coordinate scale: a ray crossing a plane at more than 2e-3
+  // Quads grow by kPad of the coordinate scale: a ray crossing a plane at more than kBand
   // radians (fast_occluders.cpp decides the others) then meets the grown quad wherever the exact
-  // test finds a crossing, with single-precision errors up to about 1e-6 of the scale
-  // (several units in the last place; docs/performance.md).
-  embree_ = std::make_unique<EmbreeScene>(candidates_, 5e-4 * scale_);
+  // test finds a crossing (scene_blockers.h).
+  embree_ = std::make_unique<EmbreeScene>(candidates_, kPad * scale_);
 }
 
 std::shared_ptr<const SceneBlockers::Lists> SceneBlockers::compute(const PointBlock& block,
