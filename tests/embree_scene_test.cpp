@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "host/scene_blockers.h"
 #include "panel_room.h"
 
 namespace ncube {
@@ -103,7 +104,7 @@ TEST(EmbreeScene, FindsRaysThroughTheDiagonalOfAQuad) {
   // through both. Rays aimed exactly at points of both diagonals of the grown patch, for
   // squares, long rectangles and slanted parallelograms, upright and tilted, from both
   // sides: every one must be found blocked, as the exact test finds it.
-  const double pad = 5e-4 * 10.0;
+  const double pad = SceneBlockers::kPad * 10.0;
   int rays = 0;
   std::uint64_t state = 12345;
   auto uniform = [&] {  // deterministic, in [0, 1)
