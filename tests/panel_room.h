@@ -6,17 +6,17 @@
 // (x in [0.5, 0.9], |y| <= 0.2, z = 1, facing down), the shooter. Patch 2: a thin panel
 // standing on the floor (x = 0, |y| <= 0.2, z in [0, 0.4]). Patch 3: a panel hanging from the
 // ceiling along the light's far edge (x = 0.9, |y| <= 0.2, z in [0.6, 1]). The coordinates'
-// scale S is 1 + the diagonal 3 = 4, so the pad (SceneBlockers::kPad S = 1e-4 S) is 4e-4 and
+// scale S is 1 + the diagonal 3 = 4, so the pad (SceneBlockers::kPad S = 2e-4 S) is 8e-4 and
 // Embree is asked about each ray from half a pad after its start to half a pad before its end.
 //
 // From the floor point just before the standing panel, (-1e-4, 0, 0), the rays to the light
 // points (0.6, 0, 1) and (0.7, 0.1, 1) cross the panel at t = 1e-4 / 0.6001 and
 // 1e-4 / 0.7001 (z of the same size, inside the panel): 1.95e-4 and 1.7e-4 from their start,
-// within the first half pad. The ray to (-0.6, 0, 1) leads away from both panels: unblocked.
+// a quarter of a pad. The ray to (-0.6, 0, 1) leads away from both panels: unblocked.
 //
 // From the floor point (0.98, 0, 0), the rays to the light points (0.9 - 1e-5, 0, 1) and
 // (0.9 - 1e-5, 0.1, 1) cross the hanging panel's plane x = 0.9 at 1e-5 / 0.08001 of their
-// length (about 1.3e-4, a third of a pad) before their end, at z = 1 - 1.25e-4 and
+// length (about 1.3e-4, a sixth of a pad) before their end, at z = 1 - 1.25e-4 and
 // |y| < 0.1: inside the panel. The ray to (0.7, 0, 1) crosses x = 0.9 at z = 0.29, below
 // the panel: unblocked.
 #pragma once

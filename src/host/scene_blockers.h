@@ -38,9 +38,10 @@ class SceneBlockers {
   // other crossing is steeper, and Embree's patches are grown by kPad of the scale: over a
   // sine above kBand that covers single-precision errors up to kPad * kBand = 1e-6 of the
   // scale (several units in the last place; docs/performance.md). A wider band means fewer
-  // false hits on small patches and more rays for the exact in-plane tests: 1e-2 was the
-  // fastest of the pairs with that product on scene3 (docs/performance-log.md, 2026-11-25).
-  static constexpr double kBand = 1e-2, kPad = 1e-4;
+  // false hits on small patches and more rays for the exact in-plane tests: 5e-3 was the
+  // fastest pair with that product for scene3 to convergence (docs/performance-log.md,
+  // 2026-11-25).
+  static constexpr double kBand = 5e-3, kPad = 2e-4;
   double band() const { return kBand * scale_; }
   // The Embree scene of all patches; positions are scene patch indices.
   const EmbreeScene& embree() const { return *embree_; }
