@@ -464,9 +464,10 @@ TEST(SceneLoaderLimits, ScaledScenesAreAccepted) {
       EXPECT_NEAR(glm::length(scene.patches[p].normal - original.patches[p].normal), 0.0, 1e-12);
       EXPECT_NEAR(scene.patches[p].area / original.patches[p].area, ratio * ratio, 1e-9 * ratio * ratio);
     }
-    if (factor == 0x1p250 || factor == 0x1p-250)
+    if (factor == 0x1p250 || factor == 0x1p-250) {
       for (std::size_t e = 0; e < scene.elements.size(); ++e)
         EXPECT_EQ(scene.elements[e].centre, ratio * original.elements[e].centre);
+    }
   }
 }
 
