@@ -19,11 +19,33 @@
 namespace ncube {
 namespace {
 
-// Point by point: the fast walk against the literal one; returns the cells the walks visited.
+// The variants of the slab tests this host runs.
+std::vector<octree_lanes::Isa> host_variants() {
+  std::vector<octree_lanes::Isa> variants;
+  for (const auto isa : {octree_lanes::Isa::kSse2, octree_lanes::Isa::kAvx2, octree_lanes::Isa::kAvx512})
+    if (octree_lanes::host_runs(isa)) variants.push_back(isa);
+  return variants;
+}
+
+std::uint64_t compare(const Scene& scene, const std::vector<int>& set, int shooter_patch,
+                      int points, unsigned seed, octree_lanes::Isa isa);
+
+// Point by point: the fast walk against the literal one, with each variant; returns the cells
+// the walks visited.
 std::uint64_t compare(const Scene& scene, const std::vector<int>& set, int shooter_patch,
                       int points, unsigned seed) {
+  std::uint64_t visited = 0;
+  for (const auto isa : host_variants()) {
+    SCOPED_TRACE(octree_lanes::isa_name(isa));
+    visited = compare(scene, set, shooter_patch, points, seed, isa);
+  }
+  return visited;
+}
+
+std::uint64_t compare(const Scene& scene, const std::vector<int>& set, int shooter_patch,
+                      int points, unsigned seed, octree_lanes::Isa isa) {
   const Octree literal(scene, set);
-  const FastOctree fast(std::make_unique<const Octree>(scene, set));
+  const FastOctree fast(std::make_unique<const Octree>(scene, set), isa);
   std::mt19937 random(seed);
   const Shooter shooter = make_shooter(scene, shooter_patch, Rgb(1.0), 64);
   const ReceiverSample sample = sample_receivers(scene, shooter_patch, points, random);
@@ -44,11 +66,15 @@ std::uint64_t compare(const Scene& scene, const std::vector<int>& set, int shoot
 
 // Rays that start or end exactly on a corner of a cell's grown box, or run parallel to its
 // faces (a zero component), as Octree::segment_meets_cell decides with equal parameters at
-// an end or no interval on an axis: the hand-worked octrees of octree_scenes.h.
-void compare_on_cell_corners(const Scene& scene, const OctreeParameters& parameters) {
+// an end or no interval on an axis: the hand-worked octrees of octree_scenes.h. Each ray is
+// asked 11 times in one packet, so that it takes every lane of a group of 8 (and of a group
+// left partly empty).
+void compare_on_cell_corners(const Scene& scene, const OctreeParameters& parameters,
+                             octree_lanes::Isa isa) {
+  SCOPED_TRACE(octree_lanes::isa_name(isa));
   const std::vector<int> all = every_patch(scene);
   const Octree literal(scene, all, parameters);
-  const FastOctree fast(std::make_unique<const Octree>(scene, all, parameters));
+  const FastOctree fast(std::make_unique<const Octree>(scene, all, parameters), isa);
   const std::vector<double>& bounds = literal.walk_bounds();
   std::vector<Vec3> directions;
   for (int x = -1; x <= 1; ++x)
@@ -66,9 +92,10 @@ void compare_on_cell_corners(const Scene& scene, const OctreeParameters& paramet
           for (int reverse = 0; reverse < 2; ++reverse) {
             Shooter shooter;
             shooter.patch = -1;
-            shooter.part_count = 1;
+            shooter.part_count = 11;
             const Vec3 other = point + length * direction;
-            shooter.targets[0] = reverse ? point : other;
+            for (int part = 0; part < shooter.part_count; ++part)
+              shooter.targets[std::size_t(part)] = reverse ? point : other;
             const Vec3 from = reverse ? other : point;
             WorkCounts expected, got;
             const PartMask want = literal.unblocked_parts(from, -1, shooter, expected, scratch);
@@ -86,9 +113,11 @@ void compare_on_cell_corners(const Scene& scene, const OctreeParameters& paramet
 }
 
 TEST(FastOctree, CountsAsTheWalkOnCellCornersAndFaces) {
-  compare_on_cell_corners(two_patch_scene(), OctreeParameters{1, 1});
-  compare_on_cell_corners(two_patch_scene(), OctreeParameters{3, 1});
-  compare_on_cell_corners(cluster_scene(9), OctreeParameters{});
+  for (const auto isa : host_variants()) {
+    compare_on_cell_corners(two_patch_scene(), OctreeParameters{1, 1}, isa);
+    compare_on_cell_corners(two_patch_scene(), OctreeParameters{3, 1}, isa);
+    compare_on_cell_corners(cluster_scene(9), OctreeParameters{}, isa);
+  }
 }
 
 class FastOctreeOnScene : public ::testing::TestWithParam<std::string> {};

@@ -66,7 +66,7 @@ class AxisPatchTest {
   // Whether the candidate at `position` takes the fast form (for tests and reports).
   bool fast(int position) const { return records_[std::size_t(position)].axis >= 0; }
 
- private:
+  // The fast form's terms (octree_lanes.h runs the same test for eight rays at a time).
   struct Record {
     std::int8_t axis = -1;   // a: the normal's axis, -1 for the exact test itself
     std::int8_t edges = 0;
@@ -76,6 +76,9 @@ class AxisPatchTest {
     double signed_length[4] = {0, 0, 0, 0};  // g of each edge
     double corner[4] = {0, 0, 0, 0};         // a_o of each edge
   };
+  const Record& record(int position) const { return records_[std::size_t(position)]; }
+
+ private:
   const std::vector<PatchCandidate>& candidates_;
   std::vector<Record> records_;
 };

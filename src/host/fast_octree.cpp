@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 
 namespace ncube {
 
@@ -15,11 +12,14 @@ struct FastOctree::Packet {
   int size = 0;
   int part[kMaxShooterParts];
   Vec3 target[kMaxShooterParts];
+  double target_on_axis[3][kMaxShooterParts];  // the same per axis, per ray
   double delta[3][kMaxShooterParts];  // per axis, per ray
 };
 
-struct FastOctree::Mailbox {
-  explicit Mailbox(std::size_t patches) : packet(patches, 0), tested(patches, 0) {}
+struct FastOctree::Scratch {
+  Scratch(std::size_t patches, int depth)
+      : packet(patches, 0), tested(patches, 0),
+        quotients(std::size_t(6 + 12 * (depth + 1)) * octree_lanes::kRays, 0.0) {}
   // The rays of packet `current` that have tested patch `position`.
   std::uint64_t& rays(std::size_t position) {
     if (packet[position] != current) {
@@ -34,10 +34,30 @@ struct FastOctree::Mailbox {
       current = 1;
     }
   }
+  // Per ray (kRays each): the root's quotients of its lower (end 0) and upper (end 1) bound
+  // on `axis`, and those of the four half bounds of the cell last split at `depth`
+  // (octree_lanes::ChildrenQuery::quarters). Depth-first, a cell's children are all taken
+  // before another cell of its depth is split, so its quotients are there when they are.
+  double* root(int axis, int end) { return quotients.data() + std::size_t(2 * axis + end) * octree_lanes::kRays; }
+  double* quarters(int depth, int axis) {
+    return quotients.data() + std::size_t(6 + 12 * depth + 4 * axis) * octree_lanes::kRays;
+  }
   std::vector<std::uint32_t> packet;
   std::vector<std::uint64_t> tested;
   std::uint32_t current = 0;
+  std::vector<double> quotients;
 };
+
+FastOctree::FastOctree(std::unique_ptr<const Octree> octree, octree_lanes::Isa isa)
+    : octree_(std::move(octree)), lanes_(octree_lanes::kernels(isa)), exact_(octree_->patches()) {
+  // The depth of the deepest cell: children come after their parent in cells().
+  const std::vector<Octree::Cell>& cells = octree_->cells();
+  std::vector<int> depth(cells.size(), 0);
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    if (cells[c].first_child >= 0)
+      for (int k = 0; k < 8; ++k) depth[std::size_t(cells[c].first_child + k)] = depth[c] + 1;
+  for (const int d : depth) depth_ = std::max(depth_, d);
+}
 
 namespace {
 
@@ -47,163 +67,35 @@ int direction_signs(const Vec3& delta) {
 
 }  // namespace
 
-void FastOctree::children_met(const Octree::Cell& cell, const Packet& packet, std::uint64_t rays,
-                              std::uint64_t met[8]) const {
-  // Child 0 has the lower half on every axis, child 7 the upper: their stored (grown) bounds
-  // are the halves' bounds of every child.
-  const double* lower = octree_->walk_bounds().data() + 6 * std::size_t(cell.first_child);
-  const double* upper = lower + 6 * 7;
-  double to_lo[3][2], to_hi[3][2];  // the slab test's numerators, the same for every ray
-  bool holds_from[3][2];            // the point lies within the half's slab
-  for (int axis = 0; axis < 3; ++axis)
-    for (int half = 0; half < 2; ++half) {
-      const double* bounds = half ? upper : lower;
-      const double lo = bounds[axis], hi = bounds[3 + axis];
-      to_lo[axis][half] = lo - packet.from[axis];
-      to_hi[axis][half] = hi - packet.from[axis];
-      holds_from[axis][half] = !(packet.from[axis] < lo || packet.from[axis] > hi);
-    }
-  std::fill(met, met + 8, std::uint64_t(0));
-#ifdef __SSE2__
-  // Two rays at a time. Where a ray runs parallel to an axis, the half's interval is [0, 1]
-  // if the point lies in its slab and empty ([+inf, -inf]) if not, as the walk's test (which
-  // then has no interval, only inside); elsewhere t0 and t1 are the walk's quotients, ordered
-  // as the walk orders them. No quotient is NaN where it is used, so max and min give the
-  // walk's values.
-  const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
-  const __m128d infinity = _mm_set1_pd(HUGE_VAL), minus_infinity = _mm_set1_pd(-HUGE_VAL);
-  __m128d empty_enter[3][2], empty_exit[3][2];
-  for (int axis = 0; axis < 3; ++axis)
-    for (int half = 0; half < 2; ++half) {
-      empty_enter[axis][half] = holds_from[axis][half] ? zero : infinity;
-      empty_exit[axis][half] = holds_from[axis][half] ? one : minus_infinity;
-    }
-  for (std::uint64_t left = rays; left != 0;) {
-    const int first = __builtin_ctzll(left);
-    left &= left - 1;
-    const int second = left != 0 ? __builtin_ctzll(left) : first;  // an odd ray out pairs itself
-    if (left != 0) left &= left - 1;
-    __m128d enter[3][2], exit[3][2];
-    for (int axis = 0; axis < 3; ++axis) {
-      const __m128d d = _mm_set_pd(packet.delta[axis][second], packet.delta[axis][first]);
-      const __m128d parallel = _mm_cmpeq_pd(d, zero);
-      for (int half = 0; half < 2; ++half) {
-        const __m128d t0 = _mm_div_pd(_mm_set1_pd(to_lo[axis][half]), d);
-        const __m128d t1 = _mm_div_pd(_mm_set1_pd(to_hi[axis][half]), d);
-        const __m128d swapped = _mm_cmpgt_pd(t0, t1);
-        const __m128d low = _mm_or_pd(_mm_and_pd(swapped, t1), _mm_andnot_pd(swapped, t0));
-        const __m128d high = _mm_or_pd(_mm_and_pd(swapped, t0), _mm_andnot_pd(swapped, t1));
-        enter[axis][half] = _mm_or_pd(_mm_and_pd(parallel, empty_enter[axis][half]),
-                                      _mm_andnot_pd(parallel, low));
-        exit[axis][half] = _mm_or_pd(_mm_and_pd(parallel, empty_exit[axis][half]),
-                                     _mm_andnot_pd(parallel, high));
-      }
-    }
-    const std::uint64_t first_bit = std::uint64_t(1) << first, second_bit = std::uint64_t(1) << second;
-    for (int child = 0; child < 8; ++child) {
-      const int x = child & 1, y = (child >> 1) & 1, z = (child >> 2) & 1;
-      const __m128d t_enter =
-          _mm_max_pd(_mm_max_pd(_mm_max_pd(zero, enter[0][x]), enter[1][y]), enter[2][z]);
-      const __m128d t_exit =
-          _mm_min_pd(_mm_min_pd(_mm_min_pd(one, exit[0][x]), exit[1][y]), exit[2][z]);
-      const int meets = _mm_movemask_pd(_mm_cmple_pd(t_enter, t_exit));
-      met[child] |= (meets & 1 ? first_bit : 0) | (meets & 2 ? second_bit : 0);
-    }
-  }
-#else
-  for (std::uint64_t left = rays; left != 0; left &= left - 1) {
-    const int ray = __builtin_ctzll(left);
-    bool inside[3][2];
-    double enter[3][2], exit[3][2];
-    for (int axis = 0; axis < 3; ++axis) {
-      const double d = packet.delta[axis][ray];
-      for (int half = 0; half < 2; ++half) {
-        if (d == 0.0) {  // as Octree::segment_meets_cell: no interval, only inside
-          inside[axis][half] = holds_from[axis][half];
-          enter[axis][half] = 0.0;  // neutral: the walk's interval starts at [0, 1]
-          exit[axis][half] = 1.0;
-          continue;
-        }
-        double t0 = to_lo[axis][half] / d, t1 = to_hi[axis][half] / d;
-        if (t0 > t1) std::swap(t0, t1);
-        inside[axis][half] = true;
-        enter[axis][half] = t0;
-        exit[axis][half] = t1;
-      }
-    }
-    const std::uint64_t bit = std::uint64_t(1) << ray;
-    for (int child = 0; child < 8; ++child) {
-      const int x = child & 1, y = (child >> 1) & 1, z = (child >> 2) & 1;
-      if (!inside[0][x] || !inside[1][y] || !inside[2][z]) continue;
-      const double t_enter = std::max({0.0, enter[0][x], enter[1][y], enter[2][z]});
-      const double t_exit = std::min({1.0, exit[0][x], exit[1][y], exit[2][z]});
-      if (t_enter <= t_exit) met[child] |= bit;
-    }
-  }
-#endif
-}
-
-std::uint64_t FastOctree::meets_root_cell(const Packet& packet) const {
-  std::uint64_t meets = 0;
-#ifdef __SSE2__
-  // Octree::segment_meets_cell(0, ...) for two rays at a time: the walk narrows [0, 1] axis
-  // by axis and stops once it is empty, which it is at the end if and only if it is empty
-  // at some axis (the bounds only narrow); a ray parallel to an axis meets the cell if the
-  // point lies in its slab.
-  const double* bounds = octree_->walk_bounds().data();
-  const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
-  for (int first = 0; first < packet.size; first += 2) {
-    const int second = first + 1 < packet.size ? first + 1 : first;
-    __m128d t_enter = zero, t_exit = one;
-    int outside = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double lo = bounds[axis], hi = bounds[3 + axis], from = packet.from[axis];
-      const __m128d d = _mm_set_pd(packet.delta[axis][second], packet.delta[axis][first]);
-      const __m128d parallel = _mm_cmpeq_pd(d, zero);
-      if (from < lo || from > hi) outside |= _mm_movemask_pd(parallel);
-      __m128d t0 = _mm_div_pd(_mm_set1_pd(lo - from), d);
-      __m128d t1 = _mm_div_pd(_mm_set1_pd(hi - from), d);
-      const __m128d swapped = _mm_cmpgt_pd(t0, t1);
-      const __m128d low = _mm_or_pd(_mm_and_pd(swapped, t1), _mm_andnot_pd(swapped, t0));
-      const __m128d high = _mm_or_pd(_mm_and_pd(swapped, t0), _mm_andnot_pd(swapped, t1));
-      // A parallel axis leaves the interval as it is.
-      t_enter = _mm_or_pd(_mm_and_pd(parallel, t_enter), _mm_andnot_pd(parallel, _mm_max_pd(t_enter, low)));
-      t_exit = _mm_or_pd(_mm_and_pd(parallel, t_exit), _mm_andnot_pd(parallel, _mm_min_pd(t_exit, high)));
-    }
-    const int met = _mm_movemask_pd(_mm_cmple_pd(t_enter, t_exit)) & ~outside;
-    meets |= std::uint64_t(met & 1) << first;
-    if (second != first) meets |= std::uint64_t(met >> 1 & 1) << second;
-  }
-#else
-  for (int ray = 0; ray < packet.size; ++ray) {
-    const Vec3 delta(packet.delta[0][ray], packet.delta[1][ray], packet.delta[2][ray]);
-    if (octree_->segment_meets_cell(0, packet.from, delta)) meets |= std::uint64_t(1) << ray;
-  }
-#endif
-  return meets;
-}
-
 std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& counts,
-                                         Mailbox& mailbox) const {
+                                         Scratch& scratch) const {
   const std::vector<Octree::Cell>& cells = octree_->cells();
   if (cells.empty()) return 0;
-  mailbox.next_packet();
+  scratch.next_packet();
   const std::vector<std::int32_t>& references = octree_->references();
   const std::vector<PatchCandidate>& patches = octree_->patches();
   // The root: visited by every ray, walked by those that meet it.
   counts.octree_cells_visited += std::uint64_t(packet.size);
-  const std::uint64_t meets_root = meets_root_cell(packet);
+  octree_lanes::RootQuery root{octree_->walk_bounds().data(), &packet.from.x,
+                               {packet.delta[0], packet.delta[1], packet.delta[2]}, packet.size,
+                               {scratch.root(0, 0), scratch.root(1, 0), scratch.root(2, 0)},
+                               {scratch.root(0, 1), scratch.root(1, 1), scratch.root(2, 1)}};
+  const std::uint64_t meets_root = lanes_.meets_root(root);
   if (meets_root == 0) return 0;
   // Depth-first as the walk. An entry is counted as visited, when popped, by the rays that
   // pushed it (`pushed_by`) and are still walking, as each of them counts the slab test of
   // every child it pops, met or missed; it is walked by the rays among them that meet it.
+  // A child's own quotients are among those its parent's split wrote at the parent's depth
+  // (`parent_depth`, -1 for the root: its own are scratch.root).
   struct Entry {
     std::int32_t cell;
+    std::int16_t parent_depth;
+    std::int16_t child;  // its index among its parent's children
     std::uint64_t pushed_by, met_by;
   };
   Entry stack[8 * 64 + 1];
   int top = 0;
-  stack[top++] = Entry{0, 0, meets_root};  // the root's visit is counted above
+  stack[top++] = Entry{0, -1, 0, 0, meets_root};  // the root's visit is counted above
   std::uint64_t blocked = 0;
   while (top > 0) {
     const Entry entry = stack[--top];
@@ -212,17 +104,35 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
     if (rays == 0) continue;
     const Octree::Cell& cell = cells[std::size_t(entry.cell)];
     if (cell.first_child >= 0) {
+      const int depth = entry.parent_depth + 1;
+      const double* lower = octree_->walk_bounds().data() + 6 * std::size_t(cell.first_child);
+      octree_lanes::ChildrenQuery query{lower, lower + 6 * 7, &packet.from.x,
+                                        {packet.delta[0], packet.delta[1], packet.delta[2]},
+                                        {}, {}, {}, rays};
+      for (int axis = 0; axis < 3; ++axis) {
+        if (entry.parent_depth < 0) {
+          query.own_lo[axis] = scratch.root(axis, 0);
+          query.own_hi[axis] = scratch.root(axis, 1);
+        } else {
+          const int half = entry.child >> axis & 1;
+          const double* parent = scratch.quarters(entry.parent_depth, axis);
+          query.own_lo[axis] = parent + (2 * half) * octree_lanes::kRays;
+          query.own_hi[axis] = parent + (2 * half + 1) * octree_lanes::kRays;
+        }
+        query.quarters[axis] = scratch.quarters(depth, axis);
+      }
       std::uint64_t met[8];
-      children_met(cell, packet, rays, met);
+      lanes_.children_met(query, met);
       for (int k = 7; k >= 0; --k) {
         const int child = k ^ packet.flip;
-        stack[top++] = Entry{cell.first_child + child, rays, met[child]};  // first on top
+        stack[top++] = Entry{cell.first_child + child, std::int16_t(depth), std::int16_t(child),
+                             rays, met[child]};  // first on top
       }
       continue;
     }
     for (std::int32_t i = cell.patch_begin; i < cell.patch_begin + cell.patch_count; ++i) {
       const std::int32_t position = references[std::size_t(i)];
-      std::uint64_t& tested = mailbox.rays(std::size_t(position));
+      std::uint64_t& tested = scratch.rays(std::size_t(position));
       const std::uint64_t asking = rays & ~tested;  // each ray tests a patch once
       if (asking == 0) continue;
       tested |= asking;
@@ -230,9 +140,22 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
       if (c.scene_index == packet.receiver_patch || c.scene_index == packet.shooter_patch) continue;
       const double tolerance = octree_->side_tolerance();
       const int side_of_from = exact_.side(position, packet.from, tolerance);
+      counts.ray_patch_tests += std::uint64_t(__builtin_popcountll(asking));
+      if (exact_.fast(position)) {  // eight rays at a time
+        const AxisPatchTest::Record& r = exact_.record(position);
+        const octree_lanes::LeafQuery query{
+            r.axis, r.edges, r.other, r.normal, r.offset, r.signed_length, r.corner,
+            &packet.from.x, {packet.delta[0], packet.delta[1], packet.delta[2]},
+            packet.target_on_axis[r.axis], tolerance, side_of_from, asking};
+        const octree_lanes::LeafAnswer answer = lanes_.leaf_tests(query);
+        counts.plane_crossings += std::uint64_t(__builtin_popcountll(answer.crossing));
+        blocked |= answer.blocked;  // the first blocker ends a ray's walk
+        rays &= ~answer.blocked;
+        if (rays == 0) break;
+        continue;
+      }
       for (std::uint64_t left = asking; left != 0; left &= left - 1) {
         const int ray = __builtin_ctzll(left);
-        ++counts.ray_patch_tests;
         if (side_of_from * exact_.side(position, packet.target[ray], tolerance) < 0)
           ++counts.plane_crossings;
         const Vec3 delta(packet.delta[0][ray], packet.delta[1][ray], packet.delta[2][ray]);
@@ -249,7 +172,7 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
 
 void FastOctree::unblocked_parts(const PointBlock& block, const Shooter& shooter,
                                  PartMask* masks, WorkCounts& counts) const {
-  Mailbox mailbox(octree_->patches().size());
+  Scratch scratch(octree_->patches().size(), depth_);
   Packet packet;
   packet.shooter_patch = shooter.patch;
   int signs[kMaxShooterParts];
@@ -273,10 +196,11 @@ void FastOctree::unblocked_parts(const PointBlock& block, const Shooter& shooter
         const Vec3 delta = shooter.targets[part] - packet.from;
         packet.part[ray] = part;
         packet.target[ray] = shooter.targets[part];
+        for (int axis = 0; axis < 3; ++axis) packet.target_on_axis[axis][ray] = shooter.targets[part][axis];
         for (int axis = 0; axis < 3; ++axis) packet.delta[axis][ray] = delta[axis];
         waiting &= ~(PartMask(1) << part);
       }
-      const std::uint64_t blocked = packet_blocked(packet, counts, mailbox);
+      const std::uint64_t blocked = packet_blocked(packet, counts, scratch);
       for (int ray = 0; ray < packet.size; ++ray)
         if (!(blocked >> ray & 1)) visible |= PartMask(1) << packet.part[ray];
     }

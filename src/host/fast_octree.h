@@ -7,7 +7,8 @@
 // leaf's patches are tested in list order for the rays that met the leaf, each ray's mailbox
 // is a bit per patch, and a ray leaves the packet at its first blocker. Per cell, the 8
 // children's slab intervals are found per axis and half (the children share their bounds
-// with their parent's halves) from numerators shared by the packet's rays.
+// with their parent's halves), eight rays at a time, from the quotients of the parent's own
+// bounds and two new ones per axis (octree_lanes.h).
 //
 // Contract (host side): it changes no answer and no count. A child's test combines the very
 // doubles the walk's slab test computes (the same stored bounds, the same expressions; max and
@@ -20,14 +21,17 @@
 
 #include "host/axis_patch_test.h"
 #include "host/host_side.h"
+#include "host/octree_lanes.h"
 #include "visibility/octree.h"
 
 namespace ncube {
 
 class FastOctree : public OccluderSet {
  public:
-  explicit FastOctree(std::unique_ptr<const Octree> octree)
-      : octree_(std::move(octree)), exact_(octree_->patches()) {}
+  // `isa`: which compiled variant of the slab tests runs (all give the same bits; tests
+  // choose each in turn).
+  explicit FastOctree(std::unique_ptr<const Octree> octree,
+                      octree_lanes::Isa isa = octree_lanes::best_isa());
 
   void unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
                        WorkCounts& counts) const override;
@@ -36,18 +40,15 @@ class FastOctree : public OccluderSet {
   const std::vector<int>& patch_indices() const override { return octree_->patch_indices(); }
 
   struct Packet;   // rays from one point whose directions have the same signs
-  struct Mailbox;  // per patch, the packet's rays that have tested it
+  struct Scratch;  // per patch, the packet's rays that have tested it; the rays' quotients
 
  private:
   // The packet's rays that meet a blocker (bit i: the packet's ray i).
-  std::uint64_t packet_blocked(const Packet& packet, WorkCounts& counts, Mailbox& mailbox) const;
-  // The packet's rays that meet the root cell.
-  std::uint64_t meets_root_cell(const Packet& packet) const;
-  // For each child of inner cell `cell` (by child index), which of `rays` meet it.
-  void children_met(const Octree::Cell& cell, const Packet& packet, std::uint64_t rays,
-                    std::uint64_t met[8]) const;
+  std::uint64_t packet_blocked(const Packet& packet, WorkCounts& counts, Scratch& scratch) const;
 
   std::unique_ptr<const Octree> octree_;
+  octree_lanes::Kernels lanes_;
+  int depth_ = 0;  // of the deepest cell (the root is 0)
   AxisPatchTest exact_;  // the leaves' exact tests and side tests, fewer operations
 };
 
