@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "host/lookahead.h"
+
 namespace ncube {
 
 struct FastOctree::Packet {
@@ -10,11 +12,29 @@ struct FastOctree::Packet {
   int receiver_patch = -1, shooter_patch = -1;
   int flip = 0;  // the walk's child order: bit a set where the rays run downwards on axis a
   int size = 0;
-  int part[kMaxShooterParts];
-  Vec3 target[kMaxShooterParts];
-  double target_on_axis[3][kMaxShooterParts];  // the same per axis, per ray
-  double delta[3][kMaxShooterParts];  // per axis, per ray
+  // Per ray: the shooter's part (null: ray r is part r), and per axis (kMaxShooterParts
+  // each) the target's coordinate and target - from.
+  const int* part = nullptr;
+  const double* target_on_axis[3];
+  const double* delta[3];
 };
+
+namespace {
+
+// The bits set in x. Without POPCNT in the baseline instruction set, __builtin_popcountll is a
+// call into libgcc; this is the same count in a dozen instructions inline.
+inline std::uint64_t bit_count(std::uint64_t x) {
+#ifdef __POPCNT__
+  return std::uint64_t(__builtin_popcountll(x));
+#else
+  x -= (x >> 1) & 0x5555555555555555ull;
+  x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+  x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
+  return (x * 0x0101010101010101ull) >> 56;
+#endif
+}
+
+}  // namespace
 
 struct FastOctree::Scratch {
   Scratch(std::size_t patches, int depth)
@@ -59,14 +79,6 @@ FastOctree::FastOctree(std::unique_ptr<const Octree> octree, octree_lanes::Isa i
   for (const int d : depth) depth_ = std::max(depth_, d);
 }
 
-namespace {
-
-int direction_signs(const Vec3& delta) {
-  return (delta.x < 0.0 ? 1 : 0) | (delta.y < 0.0 ? 2 : 0) | (delta.z < 0.0 ? 4 : 0);
-}
-
-}  // namespace
-
 std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& counts,
                                          Scratch& scratch) const {
   const std::vector<Octree::Cell>& cells = octree_->cells();
@@ -99,7 +111,7 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
   std::uint64_t blocked = 0;
   while (top > 0) {
     const Entry entry = stack[--top];
-    counts.octree_cells_visited += std::uint64_t(__builtin_popcountll(entry.pushed_by & ~blocked));
+    counts.octree_cells_visited += bit_count(entry.pushed_by & ~blocked);
     std::uint64_t rays = entry.met_by & ~blocked;
     if (rays == 0) continue;
     const Octree::Cell& cell = cells[std::size_t(entry.cell)];
@@ -140,7 +152,7 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
       if (c.scene_index == packet.receiver_patch || c.scene_index == packet.shooter_patch) continue;
       const double tolerance = octree_->side_tolerance();
       const int side_of_from = exact_.side(position, packet.from, tolerance);
-      counts.ray_patch_tests += std::uint64_t(__builtin_popcountll(asking));
+      counts.ray_patch_tests += bit_count(asking);
       if (exact_.fast(position)) {  // eight rays at a time
         const AxisPatchTest::Record& r = exact_.record(position);
         const octree_lanes::LeafQuery query{
@@ -148,7 +160,7 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
             &packet.from.x, {packet.delta[0], packet.delta[1], packet.delta[2]},
             packet.target_on_axis[r.axis], tolerance, side_of_from, asking};
         const octree_lanes::LeafAnswer answer = lanes_.leaf_tests(query);
-        counts.plane_crossings += std::uint64_t(__builtin_popcountll(answer.crossing));
+        counts.plane_crossings += bit_count(answer.crossing);
         blocked |= answer.blocked;  // the first blocker ends a ray's walk
         rays &= ~answer.blocked;
         if (rays == 0) break;
@@ -156,7 +168,9 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
       }
       for (std::uint64_t left = asking; left != 0; left &= left - 1) {
         const int ray = __builtin_ctzll(left);
-        if (side_of_from * exact_.side(position, packet.target[ray], tolerance) < 0)
+        const Vec3 target(packet.target_on_axis[0][ray], packet.target_on_axis[1][ray],
+                          packet.target_on_axis[2][ray]);
+        if (side_of_from * exact_.side(position, target, tolerance) < 0)
           ++counts.plane_crossings;
         const Vec3 delta(packet.delta[0][ray], packet.delta[1][ray], packet.delta[2][ray]);
         if (exact_.crosses(position, packet.from, delta)) {  // the first blocker ends its walk
@@ -172,20 +186,56 @@ std::uint64_t FastOctree::packet_blocked(const Packet& packet, WorkCounts& count
 
 void FastOctree::unblocked_parts(const PointBlock& block, const Shooter& shooter,
                                  PartMask* masks, WorkCounts& counts) const {
-  Scratch scratch(octree_->patches().size(), depth_);
+  if (lookahead_ && lookahead_->answers(*this, shooter, block, masks, counts)) return;
+  answer_block_here(block, shooter, masks, counts);
+}
+
+void FastOctree::answer_block_here(const PointBlock& block, const Shooter& shooter,
+                                   PartMask* masks, WorkCounts& counts) const {
+  std::unique_ptr<Scratch> scratch = take_scratch();
+  const int m = shooter.part_count;
+  const PartMask all = shooter.all_parts();
+  alignas(64) double targets[3][kMaxShooterParts];  // the shooter's, per axis
+  alignas(64) double delta[3][kMaxShooterParts];    // a point's rays, per axis
+  alignas(64) double gathered_targets[3][kMaxShooterParts], gathered_delta[3][kMaxShooterParts];
+  int gathered_part[kMaxShooterParts];
+  for (int part = 0; part < m; ++part)
+    for (int axis = 0; axis < 3; ++axis) targets[axis][part] = shooter.targets[part][axis];
   Packet packet;
   packet.shooter_patch = shooter.patch;
-  int signs[kMaxShooterParts];
   for (std::size_t k = 0; k < block.count; ++k) {
     packet.from = block.points[k];
     packet.receiver_patch = block.patches[k];
-    counts.rays += std::uint64_t(shooter.part_count);
-    PartMask waiting = 0;
-    for (int part = 0; part < shooter.part_count; ++part) {
-      signs[part] = direction_signs(shooter.targets[part] - packet.from);
-      waiting |= PartMask(1) << part;
+    counts.rays += std::uint64_t(m);
+    // The rays' deltas (target - point, as the walk's) and which run downwards per axis.
+    PartMask downwards[3] = {0, 0, 0};
+    for (int axis = 0; axis < 3; ++axis)
+      for (int part = 0; part < m; ++part) {
+        delta[axis][part] = targets[axis][part] - packet.from[axis];
+        downwards[axis] |= PartMask(delta[axis][part] < 0.0) << part;
+      }
+    if ((downwards[0] == 0 || downwards[0] == all) && (downwards[1] == 0 || downwards[1] == all) &&
+        (downwards[2] == 0 || downwards[2] == all)) {  // one packet: every ray the same signs
+      packet.flip = (downwards[0] ? 1 : 0) | (downwards[1] ? 2 : 0) | (downwards[2] ? 4 : 0);
+      packet.size = m;
+      packet.part = nullptr;
+      for (int axis = 0; axis < 3; ++axis) {
+        packet.target_on_axis[axis] = targets[axis];
+        packet.delta[axis] = delta[axis];
+      }
+      masks[k] = all & ~packet_blocked(packet, counts, *scratch);
+      continue;
     }
-    PartMask visible = 0;
+    int signs[kMaxShooterParts];
+    for (int part = 0; part < m; ++part)
+      signs[part] = int(downwards[0] >> part & 1) | int(downwards[1] >> part & 1) << 1 |
+                    int(downwards[2] >> part & 1) << 2;
+    for (int axis = 0; axis < 3; ++axis) {
+      packet.target_on_axis[axis] = gathered_targets[axis];
+      packet.delta[axis] = gathered_delta[axis];
+    }
+    packet.part = gathered_part;
+    PartMask waiting = all, visible = 0;
     while (waiting != 0) {  // one packet per direction signs, in the order of their first part
       packet.flip = signs[__builtin_ctzll(waiting)];
       packet.size = 0;
@@ -193,19 +243,39 @@ void FastOctree::unblocked_parts(const PointBlock& block, const Shooter& shooter
         const int part = __builtin_ctzll(left);
         if (signs[part] != packet.flip) continue;
         const int ray = packet.size++;
-        const Vec3 delta = shooter.targets[part] - packet.from;
-        packet.part[ray] = part;
-        packet.target[ray] = shooter.targets[part];
-        for (int axis = 0; axis < 3; ++axis) packet.target_on_axis[axis][ray] = shooter.targets[part][axis];
-        for (int axis = 0; axis < 3; ++axis) packet.delta[axis][ray] = delta[axis];
+        gathered_part[ray] = part;
+        for (int axis = 0; axis < 3; ++axis) {
+          gathered_targets[axis][ray] = targets[axis][part];
+          gathered_delta[axis][ray] = delta[axis][part];
+        }
         waiting &= ~(PartMask(1) << part);
       }
-      const std::uint64_t blocked = packet_blocked(packet, counts, scratch);
+      const std::uint64_t blocked = packet_blocked(packet, counts, *scratch);
       for (int ray = 0; ray < packet.size; ++ray)
-        if (!(blocked >> ray & 1)) visible |= PartMask(1) << packet.part[ray];
+        if (!(blocked >> ray & 1)) visible |= PartMask(1) << gathered_part[ray];
     }
     masks[k] = visible;
   }
+  give_back(scratch);
 }
+
+std::unique_ptr<FastOctree::Scratch> FastOctree::take_scratch() const {
+  {
+    const std::lock_guard<std::mutex> lock(spare_mutex_);
+    if (!spare_.empty()) {
+      std::unique_ptr<Scratch> scratch = std::move(spare_.back());
+      spare_.pop_back();
+      return scratch;
+    }
+  }
+  return std::make_unique<Scratch>(octree_->patches().size(), depth_);
+}
+
+void FastOctree::give_back(std::unique_ptr<Scratch>& scratch) const {
+  const std::lock_guard<std::mutex> lock(spare_mutex_);
+  spare_.push_back(std::move(scratch));
+}
+
+FastOctree::~FastOctree() = default;
 
 }  // namespace ncube

@@ -18,6 +18,8 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include "host/axis_patch_test.h"
 #include "host/host_side.h"
@@ -26,16 +28,26 @@
 
 namespace ncube {
 
+class Lookahead;
+
 class FastOctree : public OccluderSet {
  public:
   // `isa`: which compiled variant of the slab tests runs (all give the same bits; tests
   // choose each in turn).
   explicit FastOctree(std::unique_ptr<const Octree> octree,
                       octree_lanes::Isa isa = octree_lanes::best_isa());
+  ~FastOctree() override;
 
+  // The walk's answers and counts for a block: from the host threads computing ahead when
+  // the block was posted to them (lookahead.h), else computed here.
   void unblocked_parts(const PointBlock& block, const Shooter& shooter, PartMask* masks,
                        WorkCounts& counts) const override;
   using OccluderSet::unblocked_parts;
+  // The same computed on the calling thread (safe on several threads at once).
+  void answer_block_here(const PointBlock& block, const Shooter& shooter, PartMask* masks,
+                         WorkCounts& counts) const;
+  // From now on the batch call first asks `lookahead` (not owned; null: none).
+  void use_lookahead(Lookahead* lookahead) { lookahead_ = lookahead; }
   WorkCounts build_work() const override { return octree_->build_work(); }
   const std::vector<int>& patch_indices() const override { return octree_->patch_indices(); }
 
@@ -45,10 +57,17 @@ class FastOctree : public OccluderSet {
  private:
   // The packet's rays that meet a blocker (bit i: the packet's ray i).
   std::uint64_t packet_blocked(const Packet& packet, WorkCounts& counts, Scratch& scratch) const;
+  // A scratch for one block's walks: one given back before, or a new one. Reusing one is
+  // safe: its mailbox stamps only grow, and its quotients are written before they are read.
+  std::unique_ptr<Scratch> take_scratch() const;
+  void give_back(std::unique_ptr<Scratch>& scratch) const;
 
   std::unique_ptr<const Octree> octree_;
   octree_lanes::Kernels lanes_;
   int depth_ = 0;  // of the deepest cell (the root is 0)
+  Lookahead* lookahead_ = nullptr;
+  mutable std::mutex spare_mutex_;
+  mutable std::vector<std::unique_ptr<Scratch>> spare_;
   AxisPatchTest exact_;  // the leaves' exact tests and side tests, fewer operations
 };
 

@@ -23,14 +23,24 @@ struct Lookahead::Block {
 
 
 Lookahead::Lookahead(const Scene& scene, std::vector<const FastOccluders*> shares, int workers)
+    : Lookahead(scene, std::move(shares), {}, workers) {}
+
+Lookahead::Lookahead(const Scene& scene, std::vector<const FastOctree*> shares, int workers)
+    : Lookahead(scene, {}, std::move(shares), workers) {}
+
+Lookahead::Lookahead(const Scene& scene, std::vector<const FastOccluders*> brute_force,
+                     std::vector<const FastOctree*> octrees, int workers)
     : ThreadedAssist(std::max(1, workers) + 1),
       scene_(scene),
-      shares_(std::move(shares)),
+      shares_(std::move(brute_force)),
+      octree_shares_(std::move(octrees)),
       blockers_(SceneBlockers::for_scene(scene)),
       form_factor_set_(AnswerCache::new_set_id()),
       unshot_power_(scene.patches.size(), 0.0),
       posted_patch_(scene.patches.size(), 0),
       guessed_patch_(scene.patches.size(), 0) {
+  sets_.assign(shares_.begin(), shares_.end());
+  sets_.insert(sets_.end(), octree_shares_.begin(), octree_shares_.end());
   for (int w = 0; w < std::max(1, workers); ++w)
     threads_.emplace_back([this] {
       pthread_setname_np(pthread_self(), "lookahead");  // as profilers and top show it
@@ -200,8 +210,8 @@ bool Lookahead::next_guess_block(GuessBlock& block) {
 
 void Lookahead::compute_guess(const GuessBlock& block) {
   const std::size_t n = block.points.size();
-  std::vector<PartMask> answers(shares_.size() * n);
-  std::vector<WorkCounts> counts(shares_.size());
+  std::vector<PartMask> answers(share_count() * n);
+  std::vector<WorkCounts> counts(share_count());
   answer_shares(*block.shooter, *block.sides, PointBlock(block.points, block.patches),
                 answers.data(), counts.data());
 }
@@ -209,8 +219,11 @@ void Lookahead::compute_guess(const GuessBlock& block) {
 void Lookahead::answer_shares(const Shooter& shooter,
                               const std::vector<std::shared_ptr<const FastOccluders::TargetSides>>& sides,
                               const PointBlock& block, PartMask* answers, WorkCounts* counts) const {
-  // Exactly what each share's batch call does (fast_occluders.h): its remembered answers, or
-  // the computation from the block's scene-wide answers, computed once for all shares.
+  // Exactly what each share's batch call does (fast_octree.h: the walk; fast_occluders.h: its
+  // remembered answers, or the computation from the block's scene-wide answers, computed
+  // once for all shares).
+  for (std::size_t s = 0; s < octree_shares_.size(); ++s)
+    octree_shares_[s]->answer_block_here(block, shooter, answers + s * block.count, counts[s]);
   FastOccluders::SharedBlock shared;
   for (std::size_t s = 0; s < shares_.size(); ++s) {
     const FastOccluders& set = *shares_[s];
@@ -227,11 +240,11 @@ void Lookahead::compute(Shot& shot, Block& block) {
   const Vec3* points = asked.points;
   const int* patches = asked.patches;
   const Shooter& shooter = shot.shooter_;
-  block.answers.assign(shares_.size() * n, 0);
-  block.counts.assign(shares_.size(), WorkCounts{});
+  block.answers.assign(share_count() * n, 0);
+  block.counts.assign(share_count(), WorkCounts{});
   answer_shares(shooter, shot.sides_, asked, block.answers.data(), block.counts.data());
   block.visible.assign(n, shooter.all_parts());
-  for (std::size_t s = 0; s < shares_.size(); ++s)
+  for (std::size_t s = 0; s < share_count(); ++s)
     for (std::size_t k = 0; k < n; ++k) block.visible[k] &= block.answers[s * n + k];
   block.form_factors.resize(n);
   AnswerCache& cache = blockers_->answer_cache();
@@ -277,11 +290,11 @@ void Lookahead::complete(Shot& shot, Block& block) {
   }
 }
 
-bool Lookahead::answers(const FastOccluders& set, const Shooter& shooter, const PointBlock& asked,
+bool Lookahead::answers(const OccluderSet& set, const Shooter& shooter, const PointBlock& asked,
                         PartMask* masks, WorkCounts& counts) {
   const std::size_t count = asked.count;
-  const auto share = std::find(shares_.begin(), shares_.end(), &set);
-  if (share == shares_.end() || count == 0) return false;
+  const auto share = std::find(sets_.begin(), sets_.end(), &set);
+  if (share == sets_.end() || count == 0) return false;
   std::shared_ptr<Shot> shot;
   Block* found = nullptr;
   // The same question (question_key.h): the shooter's and the block's bits.
@@ -309,7 +322,7 @@ bool Lookahead::answers(const FastOccluders& set, const Shooter& shooter, const 
   }
   if (!found) return false;
   complete(*shot, *found);
-  const std::size_t s = std::size_t(share - shares_.begin());
+  const std::size_t s = std::size_t(share - sets_.begin());
   std::copy_n(found->answers.data() + s * count, count, masks);
   counts += found->counts[s];
   return true;

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "host/fast_occluders.h"
+#include "host/fast_octree.h"
 #include "host/host_side.h"
 #include "host/threaded_assist.h"
 #include "radiosity/shooter.h"
@@ -47,8 +48,10 @@ namespace ncube {
 class Lookahead : public ThreadedAssist {
  public:
   // `shares`: the sets every block is asked about (the V visibility processors' shares, the
-  // same for every group; not owned). `workers` >= 1 host threads besides the main one.
+  // same for every group; not owned), brute force or octree. `workers` >= 1 host threads
+  // besides the main one.
   Lookahead(const Scene& scene, std::vector<const FastOccluders*> shares, int workers);
+  Lookahead(const Scene& scene, std::vector<const FastOctree*> shares, int workers);
   ~Lookahead() override;  // stops the workers (blocks still posted are dropped)
   Lookahead(const Lookahead&) = delete;
   Lookahead& operator=(const Lookahead&) = delete;
@@ -62,7 +65,7 @@ class Lookahead : public ThreadedAssist {
   // When a posted block has exactly these points, patches and shooter (question_key.h) and
   // `set` is one of the shares: writes the set's answers to masks[0 .. count), adds its
   // counts and returns true (false: not posted; the caller computes it).
-  bool answers(const FastOccluders& set, const Shooter& shooter, const PointBlock& block,
+  bool answers(const OccluderSet& set, const Shooter& shooter, const PointBlock& block,
                PartMask* masks, WorkCounts& counts);
 
   // The receivers' form factors (receiver_form_factor) of block `block` of `shot`, when
@@ -82,7 +85,8 @@ class Lookahead : public ThreadedAssist {
 
   int workers() const { return int(threads_.size()); }
 
-  // Guesses (above) need every radiosity processor's receivers: all its elements' centres
+  // Guesses (above; brute-force shares only: their answers are remembered in the answer
+  // cache, the octree's are not) need every radiosity processor's receivers: all its elements' centres
   // and patches in store order (the receivers of a shot are those not on the shooter). Only
   // for runs whose elements never change (no subdivision, no balancing) and whose receivers
   // do not depend on the shooter (every element traces rays). Main thread.
@@ -93,6 +97,8 @@ class Lookahead : public ThreadedAssist {
 
  private:
   struct Block;
+  Lookahead(const Scene& scene, std::vector<const FastOccluders*> brute_force,
+            std::vector<const FastOctree*> octrees, int workers);
 
   void work();                                             // a worker thread's loop
   Block* claim_next(std::shared_ptr<Shot>& shot);          // under mutex_: a block nobody has started
@@ -113,8 +119,12 @@ class Lookahead : public ThreadedAssist {
   bool next_guess_block(GuessBlock& block);
   void compute_guess(const GuessBlock& block);
 
+  std::size_t share_count() const { return sets_.size(); }
+
   const Scene& scene_;
-  std::vector<const FastOccluders*> shares_;
+  std::vector<const FastOccluders*> shares_;      // brute-force shares (or none)
+  std::vector<const FastOctree*> octree_shares_;  // octree shares (or none)
+  std::vector<const OccluderSet*> sets_;          // all of them: brute force, then octree
   // The form factors of blocks shot before (a repeated shot has the same) are kept in the
   // scene's answer cache under this id.
   std::shared_ptr<const SceneBlockers> blockers_;

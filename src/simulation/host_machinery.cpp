@@ -18,13 +18,22 @@ void build_host_machinery(HostMachinery& machinery, const Scene& scene,
   const bool reference = options.reference_visibility;
   const bool octree = options.visibility == VisibilityMethod::kOctree;
   std::vector<FastOccluders*> fast_sets;
+  std::vector<FastOctree*> octree_sets;
+  // With visibility processors and more than one host thread, the blocks' answers and form
+  // factors are computed ahead on the other threads (lookahead.h).
+  const int threads = resolve_host_threads(options.host_threads);
+  const bool ahead = visibility_processors > 0 && threads > 1;
   for (const std::vector<int>& patches : patch_sets) {
     if (reference && octree) {
       machinery.occluders.push_back(std::make_unique<const Octree>(scene, patches));
     } else if (reference) {
       machinery.occluders.push_back(
           std::make_unique<const BruteForceOccluders>(scene, patches, options.ray_policy));
-    } else if (octree) {
+    } else if (octree && ahead) {
+      auto set = std::make_unique<FastOctree>(std::make_unique<const Octree>(scene, patches));
+      octree_sets.push_back(set.get());
+      machinery.occluders.push_back(std::move(set));
+    } else if (octree) {  // the block's points shared out over the host threads
       machinery.occluders.push_back(std::make_unique<const ThreadedOccluders>(
           std::make_unique<const FastOctree>(std::make_unique<const Octree>(scene, patches)),
           options.host_threads));
@@ -36,10 +45,12 @@ void build_host_machinery(HostMachinery& machinery, const Scene& scene,
     }
   }
   if (reference) return;  // the program computes everything itself, on one thread
-  // With visibility processors and more than one host thread, the blocks' answers and form
-  // factors are computed ahead on the other threads (lookahead.h).
-  const int threads = resolve_host_threads(options.host_threads);
-  if (visibility_processors > 0 && threads > 1 && !octree) {
+  if (ahead && octree) {
+    auto lookahead = std::make_unique<Lookahead>(
+        scene, std::vector<const FastOctree*>(octree_sets.begin(), octree_sets.end()), threads - 1);
+    for (FastOctree* share : octree_sets) share->use_lookahead(lookahead.get());
+    machinery.assist = std::move(lookahead);  // no guesses: the octree's answers are not kept
+  } else if (ahead) {
     auto lookahead = std::make_unique<Lookahead>(
         scene, std::vector<const FastOccluders*>(fast_sets.begin(), fast_sets.end()), threads - 1);
     for (FastOccluders* share : fast_sets) share->use_lookahead(lookahead.get());
