@@ -130,7 +130,7 @@ TEST(AnswerCache, ChangedPointsPatchesOrTargetsAreNotServedFromMemory) {
   expect_exact(block, make_shooter(scene, 40, Rgb(1.0), 16), "16 parts");
 }
 
-TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
+TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheOldestOfAShot) {
   const std::size_t budget = 64 * 1024;
   AnswerCache cache(budget);
   Shooter shooter;
@@ -180,6 +180,108 @@ TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheLeastRecentlyUsed) {
 
 namespace ncube {
 namespace {
+
+// The V shares' answers to one shooter's block are kept together: forgetting one set keeps
+// the others', and the values of the same block are told apart from answers.
+TEST(AnswerCache, ForgettingASetKeepsTheOtherSetsAnswersToTheSameBlock) {
+  Shooter shooter;
+  shooter.patch = 4;
+  shooter.part_count = 3;
+  for (int k = 0; k < 3; ++k) shooter.targets[k] = Vec3(k, 0, 1);
+  std::vector<Vec3> points(40);
+  std::vector<int> patches(40, 2);
+  for (int k = 0; k < 40; ++k) points[std::size_t(k)] = Vec3(0.25 * k, 1, 0);
+  const PointBlock block(points.data(), patches.data(), 40);
+  AnswerCache cache(1 << 20);
+  std::vector<PartMask> masks(40), out(40);
+  for (int set = 1; set <= 3; ++set) {
+    for (int k = 0; k < 40; ++k) masks[std::size_t(k)] = PartMask((k + set) % 8);
+    WorkCounts counts;
+    counts.ray_patch_tests = std::uint64_t(100 * set);
+    counts.plane_crossings = std::uint64_t(set);
+    cache.store(std::uint64_t(set), shooter, block, masks.data(), counts);
+  }
+  const std::vector<double> values(40, 0.125);
+  cache.store_values(2, shooter, block, masks.data(), values.data());
+  EXPECT_EQ(cache.entries(), 4u);
+  const std::size_t before = cache.bytes();
+  cache.forget_set(1);
+  EXPECT_EQ(cache.entries(), 3u);
+  EXPECT_LT(cache.bytes(), before);
+  WorkCounts counts;
+  EXPECT_FALSE(cache.find(1, shooter, block, out.data(), counts));
+  ASSERT_TRUE(cache.find(3, shooter, block, out.data(), counts));
+  EXPECT_EQ(counts.ray_patch_tests, 300u);
+  EXPECT_EQ(counts.plane_crossings, 3u);
+  EXPECT_EQ(counts.rays, 0u);
+  for (int k = 0; k < 40; ++k) EXPECT_EQ(out[std::size_t(k)], PartMask((k + 3) % 8)) << k;
+  std::vector<double> got(40);
+  EXPECT_TRUE(cache.find_values(2, shooter, block, masks.data(), got.data()));
+  EXPECT_EQ(got, values);
+  EXPECT_FALSE(cache.find_values(3, shooter, block, masks.data(), got.data()));
+  cache.forget_set(2);
+  cache.forget_set(3);
+  EXPECT_EQ(cache.entries(), 0u);
+  EXPECT_EQ(cache.bytes(), 0u);
+}
+
+// Progressive refinement shoots its bright patches again and again: over budget, the answers
+// of the shooter shot least often go, not those used least recently. Shooter A is shot three
+// times, then B once, then C: there is room for two shots, and B's go (least recently used
+// would have been A's).
+TEST(AnswerCache, KeepsTheAnswersOfTheShootersShotMostOften) {
+  auto shooter_of = [](int patch) {
+    Shooter s;
+    s.patch = patch;
+    s.part_count = 4;
+    for (int k = 0; k < 4; ++k) s.targets[k] = Vec3(k, patch, 2);
+    return s;
+  };
+  const Shooter a = shooter_of(1), b = shooter_of(2), c = shooter_of(3);
+  constexpr int kBlocks = 20;
+  std::vector<Vec3> points(100);
+  std::vector<int> patches(100, 5);
+  auto block_of = [&](int i) {
+    for (int k = 0; k < 100; ++k) points[k] = Vec3(i, k, 0.5);
+    return PointBlock(points.data(), patches.data(), 100);
+  };
+  std::vector<PartMask> masks(100), out(100);
+  // A shot: every block asked about, stored when not held. Returns the blocks found.
+  auto shoot = [&](AnswerCache& cache, const Shooter& s) {
+    int found = 0;
+    for (int i = 0; i < kBlocks; ++i) {
+      WorkCounts counts;
+      if (cache.find(1, s, block_of(i), out.data(), counts)) {
+        ++found;
+        continue;
+      }
+      for (int k = 0; k < 100; ++k) masks[std::size_t(k)] = PartMask(k % 3 == 0 ? 0 : 15);
+      counts.rays = std::uint64_t(s.patch);
+      cache.store(1, s, block_of(i), masks.data(), counts);
+    }
+    return found;
+  };
+  // The bytes of the keys and of one shot's answers, measured.
+  AnswerCache probe(std::size_t(1) << 30);
+  shoot(probe, a);
+  const std::size_t one = probe.bytes();
+  shoot(probe, b);
+  const std::size_t shot = probe.bytes() - one;
+  AnswerCache cache(probe.bytes() + shot / 2);  // two shots fit, not three
+  EXPECT_EQ(shoot(cache, a), 0);
+  EXPECT_EQ(shoot(cache, a), kBlocks);
+  EXPECT_EQ(shoot(cache, a), kBlocks);
+  EXPECT_EQ(shoot(cache, b), 0);
+  EXPECT_EQ(shoot(cache, c), 0);
+  EXPECT_LE(cache.peak_bytes(), cache.budget());
+  EXPECT_EQ(shoot(cache, a), kBlocks) << "the shooter shot most often keeps its answers";
+  WorkCounts counts;
+  EXPECT_FALSE(cache.find(1, b, block_of(0), out.data(), counts)) << "the one shot once goes";
+  ASSERT_TRUE(cache.find(1, c, block_of(kBlocks - 1), out.data(), counts));
+  EXPECT_EQ(counts.rays, 3u);
+  EXPECT_EQ(out[0], PartMask(0));
+  EXPECT_EQ(out[1], PartMask(15));
+}
 
 // Values per point (the form factors the lookahead keeps) come back only for the same set,
 // shooter, block and masks, and count against the budget like answers.

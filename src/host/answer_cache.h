@@ -30,9 +30,10 @@ namespace ncube {
 
 class AnswerCache {
  public:
-  // Choice: 512 MiB by default; every answer and form factor of the scene2 run at R=8, V=7
-  // takes about 300 MB (docs/performance.md); NCUBE_ANSWER_CACHE_MB overrides it (0 turns
-  // the cache off).
+  // Choice: 384 MiB by default. scene3 at R=8, V=7 to convergence (830 shots of 314
+  // patches) takes 95.8 s with it, 94.4 s with 448 MiB and 129 s with 256 MiB, at a peak of
+  // 542 MiB for the whole run (docs/performance-log.md, 2026-11-25); NCUBE_ANSWER_CACHE_MB
+  // overrides it (0 turns the cache off).
   static std::size_t default_budget_bytes();
 
   explicit AnswerCache(std::size_t budget_bytes);
@@ -44,8 +45,10 @@ class AnswerCache {
   // adds the block's counts to `counts` and returns true.
   bool find(std::uint64_t set, const Shooter& shooter, const PointBlock& block, PartMask* masks,
             WorkCounts& counts);
-  // Remembers masks[0 .. count) and the block's counts (the least recently used answers go
-  // when over budget; answers larger than the whole budget are not kept).
+  // Remembers masks[0 .. count) and the block's counts. Over budget, the answers of the
+  // shooter shot least often go first (the least recently shot among equals): progressive
+  // refinement shoots its bright patches again and again. Answers larger than the whole
+  // budget are not kept.
   void store(std::uint64_t set, const Shooter& shooter, const PointBlock& block,
              const PartMask* masks, const WorkCounts& counts);
   // Values per point computed from a block's answers (the form factors of lookahead.h), kept
@@ -63,45 +66,44 @@ class AnswerCache {
   std::size_t budget() const { return budget_; }
   std::uint64_t hits() const { return hits_; }
   std::uint64_t misses() const { return misses_; }
-  std::size_t entries() const { return lru_.size(); }
+  std::size_t entries() const { return std::size_t(records_); }  // records held
 
   // A fresh id for a set of occluders (process-wide, never reused).
   static std::uint64_t new_set_id();
 
  private:
-  // Keys are kept once however many sets are asked about them: the V shares of a group are
-  // asked about the same block for the same shooter.
-  // Keys (question_key.h) with their hash and the number of entries using them.
+  // Keys are kept once however many sets and shooters use them: the V shares of a group are
+  // asked about the same block for the same shooter, and every shot of a run asks about the
+  // same blocks (keys question_key.h, with their hash).
   struct Block {
     std::uint64_t hash;
     BlockKey key;
-    int users = 0;
+    int users = 0;  // slots using it
+  };
+  // How often a shooter was shot and when last: a shot is a question about the first (set,
+  // block) the cache saw for that shooter. Kept for the cache's life (a few dozen bytes per
+  // patch shot, outside the budget), so a shooter shot often stays known when its answers
+  // went.
+  struct Use {
+    std::uint64_t shots = 0, last = 0;
+    std::uint64_t first_set = 0, first_block = 0;  // its first question (set, block hash)
+  };
+  // All answers to one shooter's questions about one block, as records in one array of
+  // words (record_layout in answer_cache.cpp): one per set, and the values records.
+  struct Slot {
+    Block* block;
+    std::vector<std::uint64_t> words;
   };
   struct Target {
     std::uint64_t hash;
     ShooterKey key;
-    int users = 0;
-  };
-  // Most answers are "every part visible" or "none": two bits per point say which, and
-  // only the other masks are kept (0: none, 1: all parts, 2: the next of `partial`).
-  struct Entry {
-    std::uint64_t set;
-    Target* target;
-    Block* block;
-    std::vector<std::uint64_t> codes;  // 32 points per word
-    std::vector<PartMask> partial;
-    WorkCounts counts;
-    std::vector<PartMask> masks;  // values entries: the masks they were computed from
-    std::vector<double> values;
-    std::size_t bytes;
+    Use* use;
+    std::list<Slot> slots;  // oldest first
   };
   struct Key {
-    std::uint64_t set;
     const Target* target;
     const Block* block;
-    bool operator==(const Key& o) const {
-      return set == o.set && target == o.target && block == o.block;
-    }
+    bool operator==(const Key& o) const { return target == o.target && block == o.block; }
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const;
@@ -109,24 +111,32 @@ class AnswerCache {
 
   // The block with these points and patches (bit for bit), or null; `hash`: its hash.
   Block* find_block(const PointBlock& block, std::uint64_t& hash) const;
-  Target* find_target(const Shooter& shooter) const;
-  // The entry of (set, shooter, block), or null (under mutex_).
-  Entry* find_entry(std::uint64_t set, const Shooter& shooter, const PointBlock& block);
-  // Keeps `entry` (its set, payload and bytes filled in) unless one is held already.
-  void insert(Entry entry, const Shooter& shooter, const PointBlock& block);
-  void release(Entry& entry);
-  void evict_until(std::size_t bytes);
+  // The shooter's target, or null; `hash`: the shooter's hash.
+  Target* find_target(const Shooter& shooter, std::uint64_t& hash) const;
+  // A question for `set` about this shooter and block: counts the shooter's use, and
+  // returns the first word of the set's record of `kind` (null: none held).
+  const std::uint64_t* find_record(std::uint64_t set, int kind, const Shooter& shooter,
+                                   const PointBlock& block);
+  // Keeps `record` (the words of one record) for the shooter and block unless the set has
+  // one of that kind there already.
+  void insert(std::vector<std::uint64_t> record, const Shooter& shooter, const PointBlock& block);
+  // Drops the slot (and its keys when they have no other user).
+  void release(Target* target, std::list<Slot>::iterator slot);
+  // Drops slots until at most `bytes` are held: those of the shooter shot least often (and
+  // least recently among equals) first, and `keep`'s only when no other's are left.
+  void evict_until(std::size_t bytes, const Target* keep);
+  std::size_t slot_bytes(const Slot& slot) const;
 
   std::size_t budget_;
   std::size_t bytes_ = 0, peak_bytes_ = 0;
-  std::uint64_t hits_ = 0, misses_ = 0;
+  std::uint64_t hits_ = 0, misses_ = 0, records_ = 0, clock_ = 0;
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Block>> blocks_;
   std::unordered_multimap<std::uint64_t, std::unique_ptr<Target>> targets_;
+  std::unordered_map<std::uint64_t, Use> uses_;  // by shooter hash
   mutable Target* last_target_ = nullptr;
   mutable std::array<Block*, 16> recent_blocks_{};
   mutable std::size_t next_recent_ = 0;
-  std::list<Entry> lru_;  // most recently used first
-  std::unordered_map<Key, std::list<Entry>::iterator, KeyHash> index_;
+  std::unordered_map<Key, std::list<Slot>::iterator, KeyHash> index_;
   std::mutex mutex_;
 };
 
