@@ -10,7 +10,10 @@ the peak resident memory, the rays the simulated program traced and their rate, 
 tracing library's own rate for such rays on the same two threads (Embree's rtcOccluded16 on
 scene3's rays, build/benchmarks embree_alone/scene3_2threads): the ratio of the two rates is
 the figure to drive down (with V > 0, against the library following every ray to its end,
-which is the shares' question). With --old, an older build's simulate runs the same commands in
+which is the shares' question). Beside it, the library's floor for the run's own rays:
+build/embree_floor traces every distinct shot of the result file (a repeated shot is answered
+from the answer cache) through plain Embree on two threads, to the first hit (V = 0) or to
+the end of every ray (V > 0). With --old, an older build's simulate runs the same commands in
 turn, and the result files are compared byte for byte apart from host fields. With
 --profile, a short run of each (--iterations, default 40) is sampled by perf and its time
 split by library (the simulator, Embree, SimGrid, the C and maths libraries, malloc).
@@ -38,6 +41,19 @@ RUNS = {
                                "--visibility", "octree"],
     "scene2_R8_V7_brute_force_20": ["scene2.json", "--R", "8", "--V", "7", "--iterations", "20"],
 }
+
+
+def run_floor(text, mode):
+    """build/embree_floor on a result (its distinct shots): seconds on two threads."""
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        f.write(text)
+        name = f.name
+    try:
+        out = subprocess.run([os.path.join(ROOT, "build", "embree_floor"), name, mode], check=True,
+                             capture_output=True, text=True).stdout
+    finally:
+        os.unlink(name)
+    return float(out.split()[-1]), out.strip()
 
 
 def run(binary, args):
@@ -114,7 +130,7 @@ def main():
     print(f"Embree alone, scene3's rays, 2 threads: {embree / 1e6:.1f} M rays/s to the first hit, "
           f"{to_the_end / 1e6:.1f} M rays/s to the end of every ray (the question of V > 0)")
     print(f"{'run':30} {'build':5} {'wall s':>8} {'peak MiB':>9} {'M rays*':>8} {'M rays/s':>9} "
-          f"{'of Embree':>9} {'floor s':>8}")
+          f"{'of Embree':>9} {'floor s':>8} {'run floor s':>11}")
     for name in options.runs.split(","):
         args = list(RUNS[name])
         if options.iterations and "--iterations" not in args:
@@ -136,9 +152,16 @@ def main():
                             "rays_per_second": rays / wall, "share_of_embree": rays / wall / library,
                             "embree_floor_seconds": rays / library,
                             "iterations": result.get("iterations"), "converged": result.get("converged")}
+            run_floor_text = ""
+            if label == "new" and result.get("counts", {}).get("rays", 0) > 0:
+                mode = "to-the-end" if result["config"].get("V", 0) else "first-hit"
+                seconds, line = run_floor(text, mode)
+                entry["run_floor_seconds"] = seconds
+                entry["run_floor"] = line
+                run_floor_text = f"{seconds:11.1f}"
             print(f"{name:30} {label:5} {wall:8.1f} {peak:9.0f} {rays / 1e6:8.0f} "
-                  f"{rays / wall / 1e6:9.1f} {rays / wall / library:9.2f} {rays / library:8.1f}",
-                  flush=True)
+                  f"{rays / wall / 1e6:9.1f} {rays / wall / library:9.2f} {rays / library:8.1f} "
+                  f"{run_floor_text}", flush=True)
         if options.old:
             entry["same_result"] = comparable(texts["new"]) == comparable(texts["old"])
             print(f"{'':30} result files {'equal' if entry['same_result'] else 'DIFFER'}")
@@ -147,7 +170,8 @@ def main():
             print(f"{'':30} profile: {entry['profile_percent_by_library']}")
         report["runs"][name] = entry
     print("* distinct rays: with V > 0 the program counts each ray once per share; floor: the "
-          "distinct rays at Embree's own rate")
+          "distinct rays at Embree's own rate on the first shooter's rays; run floor: plain Embree "
+          "on the run's own distinct shots (build/embree_floor)")
     report["load_average_at_end"] = os.getloadavg()[0]
     os.makedirs(os.path.dirname(OUT), exist_ok=True)
     # Runs measured before and not now stay in the file, with the date they were measured.
