@@ -195,7 +195,7 @@ void FastOctree::answer_block_here(const PointBlock& block, const Shooter& shoot
   std::unique_ptr<Scratch> scratch = take_scratch();
   const int m = shooter.part_count;
   const PartMask all = shooter.all_parts();
-  alignas(64) double targets[3][kMaxShooterParts];  // the shooter's, per axis
+  alignas(64) double targets[3][kMaxShooterParts] = {};  // the shooter's, per axis
   alignas(64) double delta[3][kMaxShooterParts];    // a point's rays, per axis
   alignas(64) double gathered_targets[3][kMaxShooterParts], gathered_delta[3][kMaxShooterParts];
   int gathered_part[kMaxShooterParts];
@@ -208,12 +208,10 @@ void FastOctree::answer_block_here(const PointBlock& block, const Shooter& shoot
     packet.receiver_patch = block.patches[k];
     counts.rays += std::uint64_t(m);
     // The rays' deltas (target - point, as the walk's) and which run downwards per axis.
-    PartMask downwards[3] = {0, 0, 0};
-    for (int axis = 0; axis < 3; ++axis)
-      for (int part = 0; part < m; ++part) {
-        delta[axis][part] = targets[axis][part] - packet.from[axis];
-        downwards[axis] |= PartMask(delta[axis][part] < 0.0) << part;
-      }
+    octree_lanes::RaysQuery rays{{targets[0], targets[1], targets[2]}, &packet.from.x, m,
+                                 {delta[0], delta[1], delta[2]}, {}};
+    lanes_.rays(rays);
+    const PartMask* downwards = rays.downwards;
     if ((downwards[0] == 0 || downwards[0] == all) && (downwards[1] == 0 || downwards[1] == all) &&
         (downwards[2] == 0 || downwards[2] == all)) {  // one packet: every ray the same signs
       packet.flip = (downwards[0] ? 1 : 0) | (downwards[1] ? 2 : 0) | (downwards[2] ? 4 : 0);

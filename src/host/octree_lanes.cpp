@@ -67,13 +67,13 @@ const char* isa_name(Isa isa) {
 Kernels kernels(Isa isa) {
   switch (isa) {
     case Isa::kAvx512:
-      return {&avx512::meets_root, &avx512::children_met, &avx512::leaf_tests};
+      return {&avx512::rays, &avx512::meets_root, &avx512::children_met, &avx512::leaf_tests};
     case Isa::kAvx2:
-      return {&avx2::meets_root, &avx2::children_met, &avx2::leaf_tests};
+      return {&avx2::rays, &avx2::meets_root, &avx2::children_met, &avx2::leaf_tests};
     case Isa::kSse2:
       break;
   }
-  return {&sse2::meets_root, &sse2::children_met, &sse2::leaf_tests};
+  return {&sse2::rays, &sse2::meets_root, &sse2::children_met, &sse2::leaf_tests};
 }
 
 }  // namespace ncube::octree_lanes

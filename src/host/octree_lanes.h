@@ -78,7 +78,18 @@ struct LeafAnswer {
   std::uint64_t blocked;   // rays the patch blocks
 };
 
+// A point's rays to targets 0 .. count-1 (per axis, kRays each): delta[axis][r] = target -
+// from, as the walk computes it, and per axis the rays that run downwards (delta < 0).
+struct RaysQuery {
+  const double* targets[3];
+  const double* from;
+  int count;
+  double* delta[3];
+  std::uint64_t downwards[3];
+};
+
 struct Kernels {
+  void (*rays)(RaysQuery& query);
   std::uint64_t (*meets_root)(const RootQuery& query);
   void (*children_met)(const ChildrenQuery& query, std::uint64_t met[8]);
   LeafAnswer (*leaf_tests)(const LeafQuery& query);
