@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "plain_quads.h"
 #include "radiosity/shooter.h"
 #include "scene/scene_loader.h"
 
@@ -41,63 +42,11 @@ void reject_every_hit(const RTCFilterFunctionNArguments* args) {
   hits_seen.fetch_add(hits, std::memory_order_relaxed);
 }
 
-RTCScene quad_scene(RTCDevice device, const ncube::Scene& scene, bool to_the_end) {
-  RTCScene rtc_scene = rtcNewScene(device);
-  RTCGeometry quads = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
-  const std::size_t n = scene.patches.size();
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), n));
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 4; ++k) {
-      const ncube::Polygon& p = scene.patches[i].polygon;
-      for (int axis = 0; axis < 3; ++axis)
-        vertices[12 * i + 3 * k + axis] = float(p[std::min(k, p.count - 1)][axis]);
-      indices[4 * i + k] = unsigned(4 * i + k);
-    }
-  if (to_the_end) rtcSetGeometryOccludedFilterFunction(quads, &reject_every_hit);
-  rtcCommitGeometry(quads);
-  rtcAttachGeometry(rtc_scene, quads);
-  rtcReleaseGeometry(quads);
-  rtcCommitScene(rtc_scene);
-  return rtc_scene;
-}
-
 // The rays of one shot: every element not on the shooter to each of its targets.
 std::uint64_t trace_shot(RTCScene rtc_scene, const ncube::Scene& scene, const ncube::Shooter& shooter) {
   std::uint64_t rays = 0;
-  const int m = shooter.part_count;
-  for (const ncube::Element& e : scene.elements) {
-    if (e.patch == shooter.patch) continue;
-    for (int start = 0; start < m; start += 16) {
-      alignas(64) RTCRay16 r;
-      alignas(64) int valid[16];
-      for (int lane = 0; lane < 16; ++lane) {
-        const int k = std::min(start + lane, m - 1);
-        const ncube::Vec3 d = shooter.targets[std::size_t(k)] - e.centre;
-        valid[lane] = start + lane < m ? -1 : 0;
-        // The ray's ends kept off the receiver and the shooter (no exact test here).
-        r.org_x[lane] = float(e.centre.x + 1e-4 * d.x);
-        r.org_y[lane] = float(e.centre.y + 1e-4 * d.y);
-        r.org_z[lane] = float(e.centre.z + 1e-4 * d.z);
-        r.dir_x[lane] = float(d.x);
-        r.dir_y[lane] = float(d.y);
-        r.dir_z[lane] = float(d.z);
-        r.tnear[lane] = 0.0f;
-        r.tfar[lane] = 1.0f - 2e-4f;
-        r.time[lane] = 0.0f;
-        r.mask[lane] = ~0u;
-        r.id[lane] = unsigned(lane);
-        r.flags[lane] = 0;
-      }
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-      rtcOccluded16(valid, rtc_scene, &context, &r);
-      rays += std::uint64_t(std::min(16, m - start));
-    }
-  }
+  for (const ncube::Element& e : scene.elements)
+    if (e.patch != shooter.patch) rays += ncube::bench::trace_element(rtc_scene, e, shooter).rays;
   return rays;
 }
 
@@ -125,7 +74,7 @@ int main(int argc, char** argv) {
   for (const bool to_the_end : {false, true}) {
     if (mode == (to_the_end ? "first-hit" : "to-the-end")) continue;
     RTCDevice device = rtcNewDevice("threads=1");
-    RTCScene rtc_scene = quad_scene(device, scene, to_the_end);
+    RTCScene rtc_scene = ncube::bench::plain_quads(device, scene, to_the_end ? &reject_every_hit : nullptr);
     hits_seen = 0;
     std::atomic<std::size_t> next{0};
     std::atomic<std::uint64_t> rays{0};

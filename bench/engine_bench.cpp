@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include "plain_quads.h"
 #include "host/host_threads.h"
 #include "host/fast_occluders.h"
 #include "host/threaded_assist.h"
@@ -62,27 +63,11 @@ void reject_every_hit(const RTCFilterFunctionNArguments* args) {
 
 void embree_alone(benchmark::State& state, const std::string& scene_name, bool to_the_end) {
   const ncube::Scene scene = load(scene_name);
+  hits_rejected = 0;  // this thread's count, from this run on
   RTCDevice device = rtcNewDevice("threads=1");
-  RTCScene rtc_scene = rtcNewScene(device);
-  RTCGeometry quads = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
-  const std::size_t n = scene.patches.size();
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), n));
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 4; ++k) {
-      const ncube::Polygon& p = scene.patches[i].polygon;
-      for (int axis = 0; axis < 3; ++axis)
-        vertices[12 * i + 3 * k + axis] = float(p[std::min(k, p.count - 1)][axis]);
-      indices[4 * i + k] = unsigned(4 * i + k);
-    }
-  if (to_the_end) rtcSetGeometryOccludedFilterFunction(quads, &reject_every_hit);
-  rtcCommitGeometry(quads);
-  rtcAttachGeometry(rtc_scene, quads);
-  rtcReleaseGeometry(quads);
-  rtcCommitScene(rtc_scene);
-  std::vector<int> all(n);
+  RTCScene rtc_scene =
+      ncube::bench::plain_quads(device, scene, to_the_end ? &reject_every_hit : nullptr);
+  std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
   const ncube::RadiosityEngine engine(scene, all);
   ncube::WorkCounts unused;
@@ -92,38 +77,18 @@ void embree_alone(benchmark::State& state, const std::string& scene_name, bool t
   for (auto _ : state) {
     for (const ncube::Element& e : scene.elements) {
       if (e.patch == shooter.patch) continue;
-      for (int start = 0; start < 64; start += 16) {
-        alignas(64) RTCRay16 r;
-        alignas(64) int valid[16];
-        for (int lane = 0; lane < 16; ++lane) {
-          const ncube::Vec3 d = shooter.targets[start + lane] - e.centre;
-          // The ray's ends are kept off the receiver and the shooter (no filter here).
-          valid[lane] = -1;
-          r.org_x[lane] = float(e.centre.x + 1e-4 * d.x);
-          r.org_y[lane] = float(e.centre.y + 1e-4 * d.y);
-          r.org_z[lane] = float(e.centre.z + 1e-4 * d.z);
-          r.dir_x[lane] = float(d.x);
-          r.dir_y[lane] = float(d.y);
-          r.dir_z[lane] = float(d.z);
-          r.tnear[lane] = 0.0f;
-          r.tfar[lane] = 1.0f - 2e-4f;
-          r.time[lane] = 0.0f;
-          r.mask[lane] = ~0u;
-          r.id[lane] = unsigned(lane);
-          r.flags[lane] = 0;
-        }
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        rtcOccluded16(valid, rtc_scene, &context, &r);
-        for (int lane = 0; lane < 16; ++lane) blocked += r.tfar[lane] < 0.0f;
-        rays += 16;
-      }
+      const ncube::bench::ElementRays traced = ncube::bench::trace_element(rtc_scene, e, shooter);
+      rays += traced.rays;
+      blocked += traced.blocked;
     }
   }
   state.counters["rays_per_second"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
-  state.counters["blocked_share"] = double(blocked) / double(rays);
-  if (to_the_end) state.counters["hits_per_ray"] = double(hits_rejected) / double(rays);
+  // Ratios are each thread's own, averaged over the threads (a plain counter would be summed).
+  state.counters["blocked_share"] =
+      benchmark::Counter(double(blocked) / double(rays), benchmark::Counter::kAvgThreads);
+  if (to_the_end)
+    state.counters["hits_per_ray"] =
+        benchmark::Counter(double(hits_rejected) / double(rays), benchmark::Counter::kAvgThreads);
   rtcReleaseScene(rtc_scene);
   rtcReleaseDevice(device);
 }
