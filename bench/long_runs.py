@@ -15,9 +15,12 @@ build/embree_floor traces every distinct shot of the result file (a repeated sho
 from the answer cache) through plain Embree on two threads, to the first hit (V = 0) or to
 the end of every ray (V > 0). With --old, an older build's simulate runs the same commands in
 turn, and the result files are compared byte for byte apart from host fields. With
---profile, a short run of each (--iterations, default 40) is sampled by perf and its time
-split by library (the simulator, Embree, SimGrid, the C and maths libraries, malloc).
---iterations N also caps the long runs at N iterations (quick checks of the script).
+--profile, the same run is sampled again by perf (199 samples a second, the whole run) and its
+time split by library (the simulator, Embree, SimGrid, the C and maths libraries, malloc);
+SimGrid's CPU seconds (its share of the run's CPU time) then give the run's floor with
+SimGrid: the library's run floor on both threads plus SimGrid's CPU time spread over both,
+the least wall time if the host did nothing else and both cores stayed busy.
+--iterations N caps the runs at N iterations (quick checks of the script).
 Writes bench/measured/long_runs.json.
 """
 import argparse
@@ -57,7 +60,7 @@ def run_floor(text, mode):
 
 
 def run(binary, args):
-    """Runs simulate to a temporary result file: (result, text, wall seconds, peak MiB)."""
+    """Runs simulate to a temporary result file: (result, text, wall s, CPU s, peak MiB)."""
     with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as f:
         out = f.name
     env = dict(os.environ, NCUBE_ROOT=os.path.dirname(os.path.dirname(binary)))
@@ -71,7 +74,7 @@ def run(binary, args):
     with open(out) as f:
         text = f.read()
     os.unlink(out)
-    return json.loads(text), text, wall, usage.ru_maxrss / 1024
+    return json.loads(text), text, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
 def comparable(text):
@@ -92,16 +95,14 @@ def embree_two_threads(case="scene3_2threads"):
     return json.loads(out)["benchmarks"][0]["rays_per_second"]
 
 
-def profile(binary, args, iterations):
-    """Share of samples per library for a short run (None without perf)."""
+def profile(binary, args):
+    """Share of samples per library for the run (None without perf)."""
     if not shutil.which("perf"):
         return None
     with tempfile.TemporaryDirectory() as work:
         data = os.path.join(work, "perf.data")
-        capped = [a for a in args]
-        if "--iterations" not in capped:
-            capped += ["--iterations", str(iterations)]
-        subprocess.run(["perf", "record", "-q", "-o", data, "--", binary] + capped + ["--quiet"],
+        subprocess.run(["perf", "record", "-q", "-F", "199", "-o", data, "--", binary] + args +
+                       ["--quiet", "--json", os.path.join(work, "result.json")],
                        check=True, capture_output=True, env=dict(os.environ, NCUBE_ROOT=os.path.dirname(os.path.dirname(binary))))
         report = subprocess.run(["perf", "report", "-i", data, "--no-children", "--stdio",
                                  "--sort", "dso"], check=True, capture_output=True,
@@ -119,7 +120,8 @@ def main():
     parser.add_argument("--old", help="an older build directory (holding simulate)")
     parser.add_argument("--new", default=os.path.dirname(NEW), help="the build directory to measure")
     parser.add_argument("--iterations", type=int, help="cap every run at N iterations")
-    parser.add_argument("--profile", action="store_true", help="split a short run's time by library")
+    parser.add_argument("--profile", action="store_true",
+                        help="split each run's time by library; the floor with SimGrid")
     parser.add_argument("--runs", default=",".join(RUNS), help="which runs (comma-separated)")
     options = parser.parse_args()
     embree = embree_two_threads()
@@ -129,8 +131,8 @@ def main():
               "cores": os.cpu_count(), "load_average_at_start": os.getloadavg()[0], "runs": {}}
     print(f"Embree alone, scene3's rays, 2 threads: {embree / 1e6:.1f} M rays/s to the first hit, "
           f"{to_the_end / 1e6:.1f} M rays/s to the end of every ray (the question of V > 0)")
-    print(f"{'run':30} {'build':5} {'wall s':>8} {'peak MiB':>9} {'M rays*':>8} {'M rays/s':>9} "
-          f"{'of Embree':>9} {'floor s':>8} {'run floor s':>11}")
+    print(f"{'run':30} {'build':5} {'wall s':>8} {'CPU s':>7} {'peak MiB':>9} {'M rays*':>8} "
+          f"{'M rays/s':>9} {'of Embree':>9} {'floor s':>8} {'run floor s':>11}")
     for name in options.runs.split(","):
         args = list(RUNS[name])
         if options.iterations and "--iterations" not in args:
@@ -139,7 +141,7 @@ def main():
         texts = {}
         builds = [("new", os.path.join(options.new, "simulate"))] + ([("old", os.path.join(options.old, "simulate"))] if options.old else [])
         for label, binary in builds:
-            result, text, wall, peak = run(binary, args)
+            result, text, wall, cpu, peak = run(binary, args)
             texts[label] = text
             # With V > 0 each visibility processor of a group tests the same rays against its
             # share: the simulated program counts a ray V times, the host traces it once.
@@ -148,7 +150,8 @@ def main():
             # The library's rate for the question asked: a share's "does one of my patches
             # block it" is not settled by the first blocker when V > 0.
             library = to_the_end if result["config"].get("V", 0) else embree
-            entry[label] = {"wall_seconds": wall, "peak_mib": peak, "distinct_rays": rays,
+            entry[label] = {"wall_seconds": wall, "cpu_seconds": cpu, "peak_mib": peak,
+                            "distinct_rays": rays,
                             "rays_per_second": rays / wall, "share_of_embree": rays / wall / library,
                             "embree_floor_seconds": rays / library,
                             "iterations": result.get("iterations"), "converged": result.get("converged")}
@@ -159,15 +162,26 @@ def main():
                 entry["run_floor_seconds"] = seconds
                 entry["run_floor"] = line
                 run_floor_text = f"{seconds:11.1f}"
-            print(f"{name:30} {label:5} {wall:8.1f} {peak:9.0f} {rays / 1e6:8.0f} "
+            print(f"{name:30} {label:5} {wall:8.1f} {cpu:7.1f} {peak:9.0f} {rays / 1e6:8.0f} "
                   f"{rays / wall / 1e6:9.1f} {rays / wall / library:9.2f} {rays / library:8.1f} "
                   f"{run_floor_text}", flush=True)
         if options.old:
             entry["same_result"] = comparable(texts["new"]) == comparable(texts["old"])
             print(f"{'':30} result files {'equal' if entry['same_result'] else 'DIFFER'}")
         if options.profile:
-            entry["profile_percent_by_library"] = profile(os.path.join(options.new, "simulate"), RUNS[name], options.iterations or 40)
-            print(f"{'':30} profile: {entry['profile_percent_by_library']}")
+            shares = profile(os.path.join(options.new, "simulate"), args)
+            entry["profile_percent_by_library"] = shares
+            print(f"{'':30} profile: {shares}")
+            if shares is not None:
+                simgrid = shares.get("libsimgrid", 0.0) / 100 * entry["new"]["cpu_seconds"]
+                entry["simgrid_cpu_seconds"] = simgrid
+                line = f"{'':30} SimGrid's CPU time: {simgrid:.1f} s"
+                if "run_floor_seconds" in entry:
+                    floor = entry["run_floor_seconds"] + simgrid / 2
+                    entry["floor_with_simgrid_seconds"] = floor
+                    line += (f"; floor with SimGrid on two cores: {floor:.1f} s "
+                             f"(the run takes {entry['new']['wall_seconds'] / floor:.2f} times it)")
+                print(line)
         report["runs"][name] = entry
     print("* distinct rays: with V > 0 the program counts each ray once per share; floor: the "
           "distinct rays at Embree's own rate on the first shooter's rays; run floor: plain Embree "
