@@ -87,9 +87,10 @@ int main(int argc, char** argv) {
       });
     for (std::thread& t : threads) t.join();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %zu distinct shots of %zu, %.3g rays, %.1f s on 2 threads, %.1f M rays/s",
+    std::printf("%s: %zu distinct shots of %zu, %llu rays, %.1f s on 2 threads, %.1f M rays/s",
                 to_the_end ? "to the end of every ray" : "to the first hit", shooters.size(),
-                shots.size(), double(rays), seconds, double(rays) / seconds / 1e6);
+                shots.size(), static_cast<unsigned long long>(rays.load()), seconds,
+                double(rays) / seconds / 1e6);
     if (to_the_end) std::printf(", %.2f hits per ray", double(hits_seen) / double(rays));
     std::printf(", seconds %.3f\n", seconds);
     rtcReleaseScene(rtc_scene);
