@@ -27,7 +27,7 @@ void iteration(benchmark::State& state, const std::string& scene_name, int threa
   std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
   ncube::RadiosityEngine engine(scene, all);
-  ncube::ThreadedAssist assist(threads);
+  ncube::ThreadedAssist assist(threads, nullptr);  // every form factor computed
   engine.use_host_assist(&assist, 0);
   const ncube::FastOccluders occluders(scene, all, ncube::RayTestPolicy::kTestAllPatches, threads);
   ncube::ProgressiveOptions options;

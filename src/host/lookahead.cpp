@@ -30,7 +30,7 @@ Lookahead::Lookahead(const Scene& scene, std::vector<const FastOctree*> shares, 
 
 Lookahead::Lookahead(const Scene& scene, std::vector<const FastOccluders*> brute_force,
                      std::vector<const FastOctree*> octrees, int workers)
-    : ThreadedAssist(std::max(1, workers) + 1),
+    : ThreadedAssist(std::max(1, workers) + 1, nullptr),
       scene_(scene),
       shares_(std::move(brute_force)),
       octree_shares_(std::move(octrees)),

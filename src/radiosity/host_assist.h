@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "radiosity/shooter.h"
+#include "visibility/point_block.h"
 
 namespace ncube {
 
@@ -50,6 +51,16 @@ class HostAssist {
                                      const PartMask* /*visible*/, std::size_t /*count*/) {
     return nullptr;
   }
+  // The receivers' form factors (receiver_form_factor) at the points of `receivers` for
+  // `shooter` and the visibility `visible`, remembered from an earlier shot with exactly
+  // the same question: writes them to `out` and returns true. remember_form_factors keeps
+  // them. The default remembers nothing.
+  virtual bool remembered_form_factors(const Shooter& /*shooter*/, const PointBlock& /*receivers*/,
+                                       const PartMask* /*visible*/, double* /*out*/) {
+    return false;
+  }
+  virtual void remember_form_factors(const Shooter& /*shooter*/, const PointBlock& /*receivers*/,
+                                     const PartMask* /*visible*/, const double* /*values*/) {}
   // Radiosity processor `rank`'s engine before its first shot, and any engine after a shot.
   virtual void engine_started(int /*rank*/, const RadiosityEngine& /*engine*/) {}
   virtual void shot_finished(const RadiosityEngine& /*engine*/) {}

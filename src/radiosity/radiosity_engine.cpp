@@ -91,6 +91,15 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
                                 const std::vector<PartMask>& masks,
                                 const double* computed_form_factors, WorkCounts& counts) {
   std::vector<double> form_factors;
+  std::vector<Vec3> points;
+  std::vector<int> patches;
+  if (!computed_form_factors && assist_) {  // the same question asked in an earlier shot?
+    visibility_points(receivers, points, patches);
+    form_factors.assign(receivers.size(), 0.0);
+    if (assist_->remembered_form_factors(shooter, PointBlock(points, patches), masks.data(),
+                                         form_factors.data()))
+      computed_form_factors = form_factors.data();
+  }
   if (!computed_form_factors) {
     form_factors.assign(receivers.size(), 0.0);
     const auto compute = [&](std::size_t begin, std::size_t end) {
@@ -103,10 +112,13 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
     };
     // Each receiver's form factor is independent of the others': the host may compute them
     // on several threads (host_assist.h).
-    if (assist_)
+    if (assist_) {
       assist_->share_out(receivers.size(), 64, compute);
-    else
+      assist_->remember_form_factors(shooter, PointBlock(points, patches), masks.data(),
+                                     form_factors.data());
+    } else {
       compute(0, receivers.size());
+    }
     computed_form_factors = form_factors.data();
   }
   for (std::size_t k = 0; k < receivers.size(); ++k) {

@@ -4,6 +4,7 @@
 #include "host/fast_octree.h"
 #include "host/host_threads.h"
 #include "host/lookahead.h"
+#include "host/scene_blockers.h"
 #include "host/threaded_assist.h"
 #include "host/threaded_occluders.h"
 #include "visibility/brute_force_occluders.h"
@@ -60,7 +61,13 @@ void build_host_machinery(HostMachinery& machinery, const Scene& scene,
       lookahead->guess_shots(options.samples, block_size, radiosity_processors);
     machinery.assist = std::move(lookahead);
   } else {
-    machinery.assist = std::make_unique<ThreadedAssist>(options.host_threads);
+    // Choice: the receivers' form factors remembered across shots without visibility
+    // processors, where the brute-force set already holds the scene's answer cache (the
+    // octree would build the scene's Embree scene for it). With V > 0 on one host thread they
+    // are not: 150 iterations of scene3 R=8 V=7 gained nothing and held 130 MB more.
+    const bool remember = visibility_processors == 0 && !fast_sets.empty();
+    machinery.assist = std::make_unique<ThreadedAssist>(
+        options.host_threads, remember ? SceneBlockers::for_scene(scene) : nullptr);
   }
 }
 
