@@ -26,6 +26,7 @@ class ThreadedAssist : public HostAssist {
   ~ThreadedAssist() override;
   void share_out(std::size_t count, std::size_t grain,
                  const std::function<void(std::size_t, std::size_t)>& body) const override;
+  bool remembers_form_factors() const override { return blockers_ != nullptr; }
   bool remembered_form_factors(const Shooter& shooter, const PointBlock& receivers,
                                const PartMask* visible, double* out) override;
   void remember_form_factors(const Shooter& shooter, const PointBlock& receivers,

@@ -54,7 +54,8 @@ class HostAssist {
   // The receivers' form factors (receiver_form_factor) at the points of `receivers` for
   // `shooter` and the visibility `visible`, remembered from an earlier shot with exactly
   // the same question: writes them to `out` and returns true. remember_form_factors keeps
-  // them. The default remembers nothing.
+  // them. The default remembers nothing (remembers_form_factors: whether to ask at all).
+  virtual bool remembers_form_factors() const { return false; }
   virtual bool remembered_form_factors(const Shooter& /*shooter*/, const PointBlock& /*receivers*/,
                                        const PartMask* /*visible*/, double* /*out*/) {
     return false;

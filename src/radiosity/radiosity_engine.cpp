@@ -93,7 +93,8 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
   std::vector<double> form_factors;
   std::vector<Vec3> points;
   std::vector<int> patches;
-  if (!computed_form_factors && assist_) {  // the same question asked in an earlier shot?
+  const bool remembering = !computed_form_factors && assist_ && assist_->remembers_form_factors();
+  if (remembering) {  // the same question asked in an earlier shot?
     visibility_points(receivers, points, patches);
     form_factors.assign(receivers.size(), 0.0);
     if (assist_->remembered_form_factors(shooter, PointBlock(points, patches), masks.data(),
@@ -114,8 +115,9 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
     // on several threads (host_assist.h).
     if (assist_) {
       assist_->share_out(receivers.size(), 64, compute);
-      assist_->remember_form_factors(shooter, PointBlock(points, patches), masks.data(),
-                                     form_factors.data());
+      if (remembering)
+        assist_->remember_form_factors(shooter, PointBlock(points, patches), masks.data(),
+                                       form_factors.data());
     } else {
       compute(0, receivers.size());
     }
