@@ -24,6 +24,16 @@ const Scene& set_scene() {
   return scene;
 }
 
+// A shooter of `parts` targets at (k, y, z), k = 0 .. parts - 1: for the tests that need only
+// keys, not a scene's geometry.
+Shooter synthetic_shooter(int patch, int parts, double y, double z) {
+  Shooter shooter;
+  shooter.patch = patch;
+  shooter.part_count = parts;
+  for (int k = 0; k < parts; ++k) shooter.targets[std::size_t(k)] = Vec3(k, y, z);
+  return shooter;
+}
+
 struct Block {
   std::vector<Vec3> points;
   std::vector<int> patches;
@@ -133,10 +143,7 @@ TEST(AnswerCache, ChangedPointsPatchesOrTargetsAreNotServedFromMemory) {
 TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheOldestOfAShot) {
   const std::size_t budget = 64 * 1024;
   AnswerCache cache(budget);
-  Shooter shooter;
-  shooter.patch = 7;
-  shooter.part_count = 4;
-  for (int k = 0; k < 4; ++k) shooter.targets[k] = Vec3(k, 1, 2);
+  const Shooter shooter = synthetic_shooter(7, 4, 1, 2);
   std::vector<Vec3> points(100);
   std::vector<int> patches(100, 3);
   std::vector<PartMask> out(100);
@@ -175,19 +182,11 @@ TEST(AnswerCache, KeepsWithinItsBudgetAndDropsTheOldestOfAShot) {
   EXPECT_FALSE(off.find(1, shooter, PointBlock(points.data(), patches.data(), 100), out.data(), counts));
 }
 
-}  // namespace
-}  // namespace ncube
-
-namespace ncube {
-namespace {
 
 // The V shares' answers to one shooter's block are kept together: forgetting one set keeps
 // the others', and the values of the same block are told apart from answers.
 TEST(AnswerCache, ForgettingASetKeepsTheOtherSetsAnswersToTheSameBlock) {
-  Shooter shooter;
-  shooter.patch = 4;
-  shooter.part_count = 3;
-  for (int k = 0; k < 3; ++k) shooter.targets[k] = Vec3(k, 0, 1);
+  const Shooter shooter = synthetic_shooter(4, 3, 0, 1);
   std::vector<Vec3> points(40);
   std::vector<int> patches(40, 2);
   for (int k = 0; k < 40; ++k) points[std::size_t(k)] = Vec3(0.25 * k, 1, 0);
@@ -230,14 +229,8 @@ TEST(AnswerCache, ForgettingASetKeepsTheOtherSetsAnswersToTheSameBlock) {
 // times, then B once, then C: there is room for two shots, and B's go (least recently used
 // would have been A's).
 TEST(AnswerCache, KeepsTheAnswersOfTheShootersShotMostOften) {
-  auto shooter_of = [](int patch) {
-    Shooter s;
-    s.patch = patch;
-    s.part_count = 4;
-    for (int k = 0; k < 4; ++k) s.targets[k] = Vec3(k, patch, 2);
-    return s;
-  };
-  const Shooter a = shooter_of(1), b = shooter_of(2), c = shooter_of(3);
+  const Shooter a = synthetic_shooter(1, 4, 1, 2), b = synthetic_shooter(2, 4, 2, 2),
+                c = synthetic_shooter(3, 4, 3, 2);
   constexpr int kBlocks = 20;
   std::vector<Vec3> points(100);
   std::vector<int> patches(100, 5);

@@ -36,6 +36,7 @@ struct Receivers {
   std::vector<Vec3> points;
   std::vector<int> patches;
   std::vector<PartMask> masks;
+  PointBlock block() const { return PointBlock(points, patches); }
   std::vector<double> form_factors(const Scene& scene, const Shooter& shooter) const {
     std::vector<double> values(points.size());
     for (std::size_t k = 0; k < points.size(); ++k)
@@ -53,7 +54,10 @@ Receivers some_receivers(const Scene& scene, int shooter_patch, const Shooter& s
     r.patches.push_back(scene.elements[e].patch);
     // Every part, none, and partial masks in turn.
     const std::size_t k = r.points.size();
-    r.masks.push_back(k % 3 == 0 ? shooter.all_parts() : (k % 3 == 1 ? PartMask(0) : PartMask(0x5a5a5a5a5a5a5a5aull) & shooter.all_parts()));
+    r.masks.push_back(
+        k % 3 == 0
+            ? shooter.all_parts()
+            : (k % 3 == 1 ? PartMask(0) : PartMask(0x5a5a5a5a5a5a5a5aull) & shooter.all_parts()));
   }
   return r;
 }
@@ -68,27 +72,32 @@ TEST(ThreadedAssist, HandsBackTheFormFactorsOfExactlyTheSameQuestion) {
   const std::vector<double> expected = r.form_factors(scene, shooter);
   std::vector<double> out(r.points.size(), -1.0);
 
-  EXPECT_FALSE(assist.remembered_form_factors(shooter, PointBlock(r.points, r.patches), r.masks.data(), out.data()));
-  assist.remember_form_factors(shooter, PointBlock(r.points, r.patches), r.masks.data(), expected.data());
-  ASSERT_TRUE(assist.remembered_form_factors(shooter, PointBlock(r.points, r.patches), r.masks.data(), out.data()));
-  for (std::size_t k = 0; k < out.size(); ++k) EXPECT_EQ(std::memcmp(&out[k], &expected[k], sizeof(double)), 0) << k;
+  EXPECT_FALSE(assist.remembered_form_factors(shooter, r.block(), r.masks.data(), out.data()));
+  assist.remember_form_factors(shooter, r.block(), r.masks.data(), expected.data());
+  ASSERT_TRUE(assist.remembered_form_factors(shooter, r.block(), r.masks.data(), out.data()));
+  for (std::size_t k = 0; k < out.size(); ++k)
+    EXPECT_EQ(std::memcmp(&out[k], &expected[k], sizeof(double)), 0) << k;
 
   // Another visibility of one receiver: not the same question.
   Receivers other_mask = r;
   other_mask.masks[2] ^= 1;
-  EXPECT_FALSE(assist.remembered_form_factors(shooter, PointBlock(other_mask.points, other_mask.patches), other_mask.masks.data(), out.data()));
+  EXPECT_FALSE(assist.remembered_form_factors(shooter, other_mask.block(), other_mask.masks.data(),
+                                              out.data()));
   // One receiver moved by one unit in the last place.
   Receivers moved = r;
   moved.points[5].y = std::nextafter(moved.points[5].y, 1e300);
-  EXPECT_FALSE(assist.remembered_form_factors(shooter, PointBlock(moved.points, moved.patches), moved.masks.data(), out.data()));
+  EXPECT_FALSE(
+      assist.remembered_form_factors(shooter, moved.block(), moved.masks.data(), out.data()));
   // Another shooter, and the same shooter with fewer parts.
   const int other_patch = shooter_patch + 1 == int(scene.patches.size()) ? 0 : shooter_patch + 1;
-  EXPECT_FALSE(assist.remembered_form_factors(make_shooter(scene, other_patch, Rgb(1.0), 64), PointBlock(r.points, r.patches), r.masks.data(), out.data()));
-  EXPECT_FALSE(assist.remembered_form_factors(make_shooter(scene, shooter_patch, Rgb(1.0), 16), PointBlock(r.points, r.patches), r.masks.data(), out.data()));
+  EXPECT_FALSE(assist.remembered_form_factors(make_shooter(scene, other_patch, Rgb(1.0), 64),
+                                              r.block(), r.masks.data(), out.data()));
+  EXPECT_FALSE(assist.remembered_form_factors(make_shooter(scene, shooter_patch, Rgb(1.0), 16),
+                                              r.block(), r.masks.data(), out.data()));
   // Without a cache nothing is remembered.
   ThreadedAssist forgetful(1, nullptr);
-  forgetful.remember_form_factors(shooter, PointBlock(r.points, r.patches), r.masks.data(), expected.data());
-  EXPECT_FALSE(forgetful.remembered_form_factors(shooter, PointBlock(r.points, r.patches), r.masks.data(), out.data()));
+  forgetful.remember_form_factors(shooter, r.block(), r.masks.data(), expected.data());
+  EXPECT_FALSE(forgetful.remembered_form_factors(shooter, r.block(), r.masks.data(), out.data()));
 }
 
 TEST(ThreadedAssist, RepeatedShotsTakeRememberedFormFactorsAndRadiositiesStayEqual) {

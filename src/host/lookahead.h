@@ -86,10 +86,10 @@ class Lookahead : public ThreadedAssist {
   int workers() const { return int(threads_.size()); }
 
   // Guesses (above; brute-force shares only: their answers are remembered in the answer
-  // cache, the octree's are not) need every radiosity processor's receivers: all its elements' centres
-  // and patches in store order (the receivers of a shot are those not on the shooter). Only
-  // for runs whose elements never change (no subdivision, no balancing) and whose receivers
-  // do not depend on the shooter (every element traces rays). Main thread.
+  // cache, the octree's are not) need every radiosity processor's receivers: all its
+  // elements' centres and patches in store order (the receivers of a shot are those not on
+  // the shooter). Only for runs whose elements never change (no subdivision, no balancing)
+  // and whose receivers do not depend on the shooter (every element traces rays). Main thread.
   void guess_shots(int samples, int block_size, int ranks);
   void know_receivers(int rank, std::vector<Vec3> points, std::vector<int> patches);
   // The unshot power of some patches as it is now (after a shot).
