@@ -2,7 +2,8 @@
 """The long runs researchers wait for, with the host's limit beside each figure (a reported
 benchmark, not a test; docs/performance-log.md quotes it).
 
-  bench/long_runs.py [--old OLD_BUILD_DIR] [--iterations N] [--profile] [--runs NAME,...]
+  bench/long_runs.py [--old OLD_BUILD_DIR] [--iterations N] [--profile] [--simgrid-alone]
+                     [--runs NAME,...]
 
 For each run (by default scene3 to convergence at R=8, V=7 and at R=64, V=0, and the octree
 on scene2 R=8 V=7 for 20 iterations beside brute force) it reports the host's wall seconds,
@@ -20,6 +21,11 @@ time split by library (the simulator, Embree, SimGrid, the C and maths libraries
 SimGrid's CPU seconds (its share of the run's CPU time) then give the run's floor with
 SimGrid: the library's run floor on both threads plus SimGrid's CPU time spread over both,
 the least wall time if the host did nothing else and both cores stayed busy.
+With --simgrid-alone, the run is made once more recording its SimGrid activities
+(NCUBE_RECORD_ACTIVITIES) and build/simgrid_replay replays them with no node program behind
+them: SimGrid alone on the run's own messages, measured rather than sampled (the replay must
+end at the run's simulated time, or the script says so); the floor with SimGrid then takes
+the replay's CPU seconds.
 --iterations N caps the runs at N iterations (quick checks of the script).
 Writes bench/measured/long_runs.json.
 """
@@ -77,6 +83,21 @@ def run(binary, args):
     return json.loads(text), text, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
+def simgrid_alone(binary, args, platform):
+    """SimGrid alone on the run's messages: (host s, CPU s, peak MiB, simulated end, line)."""
+    with tempfile.TemporaryDirectory() as work:
+        record = os.path.join(work, "run.act")
+        env = dict(os.environ, NCUBE_ROOT=os.path.dirname(os.path.dirname(binary)),
+                   NCUBE_RECORD_ACTIVITIES=record)
+        subprocess.run([binary] + args + ["--quiet", "--json", os.path.join(work, "r.json")],
+                       check=True, env=env)
+        line = subprocess.run([os.path.join(os.path.dirname(binary), "simgrid_replay"), platform,
+                               record], check=True, capture_output=True, text=True).stdout.strip()
+    m = re.search(r": ([0-9.]+) host s, ([0-9.]+) CPU s, peak ([0-9.]+) MiB, simulated end (\S+) s$",
+                  line)
+    return float(m[1]), float(m[2]), float(m[3]), float(m[4]), line
+
+
 def comparable(text):
     """The result without the host fields and the provenance (paths, versions, hashes)."""
     result = json.loads(text)
@@ -122,6 +143,8 @@ def main():
     parser.add_argument("--iterations", type=int, help="cap every run at N iterations")
     parser.add_argument("--profile", action="store_true",
                         help="split each run's time by library; the floor with SimGrid")
+    parser.add_argument("--simgrid-alone", action="store_true",
+                        help="replay each run's messages with SimGrid alone (build/simgrid_replay)")
     parser.add_argument("--runs", default=",".join(RUNS), help="which runs (comma-separated)")
     options = parser.parse_args()
     embree = embree_two_threads()
@@ -182,6 +205,22 @@ def main():
                     line += (f"; floor with SimGrid on two cores: {floor:.1f} s "
                              f"(the run takes {entry['new']['wall_seconds'] / floor:.2f} times it)")
                 print(line)
+        if options.simgrid_alone:
+            binary = os.path.join(options.new, "simulate")
+            host, cpu, peak, end, line = simgrid_alone(binary, args, os.path.join(
+                os.path.dirname(os.path.dirname(binary)), "platforms", "ncube2.json"))
+            same_end = end == json.loads(texts["new"])["simulated_seconds"]
+            entry["simgrid_alone"] = {"host_seconds": host, "cpu_seconds": cpu, "peak_mib": peak,
+                                      "ends_at_the_run_time": same_end, "replay": line}
+            text = (f"{'':30} SimGrid alone on the run's messages: {host:.1f} s, {cpu:.1f} CPU s, "
+                    f"{peak:.0f} MiB; ends at the run's simulated time: {'yes' if same_end else 'NO'}")
+            if "run_floor_seconds" in entry:
+                # SimGrid runs on one thread: the floor is never below its own time.
+                floor = max(entry["run_floor_seconds"] + cpu / 2, cpu)
+                entry["floor_with_simgrid_alone_seconds"] = floor
+                text += (f"\n{'':30} floor with SimGrid alone on two cores: {floor:.1f} s (the run "
+                         f"takes {entry['new']['wall_seconds'] / floor:.2f} times it)")
+            print(text, flush=True)
         report["runs"][name] = entry
     print("* distinct rays: with V > 0 the program counts each ray once per share; floor: the "
           "distinct rays at Embree's own rate on the first shooter's rays; run floor: plain Embree "

@@ -69,6 +69,7 @@ void NodeRuntime::run_charged() {
   for (const Charged& c : charged_) total += c.seconds;
   double start = simgrid::s4u::Engine::get_clock();
   simgrid::s4u::this_actor::execute(total * platform_.node_speed);
+  if (record_) record_->executed(total * platform_.node_speed);
   if (trace_)
     for (const Charged& c : charged_) {
       trace_->push_back({stats_.node, c.what, start, start + c.seconds});
@@ -95,6 +96,7 @@ void NodeRuntime::send(int to, std::unique_ptr<Message> message) {
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;
   XBT_DEBUG("node %d -> node %d: kind %d, %.0f bytes", stats_.node, to, int(message->kind), bytes);
+  if (record_) record_->put(to, std::uint64_t(bytes));
   mailbox_of(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
 }
 
@@ -119,6 +121,7 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
     if (!mailbox->ready()) run_charged();
     const double before = simgrid::s4u::Engine::get_clock();
     std::unique_ptr<Message> arrived = mailbox->get_unique<Message>();
+    if (record_) record_->got();
     if (simgrid::s4u::Engine::get_clock() > before && wait_start < 0.0) wait_start = before;
     if (wanted(*arrived))
       message = std::move(arrived);

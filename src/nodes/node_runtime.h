@@ -13,6 +13,7 @@
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "nodes/activity_record.h"
 #include "nodes/messages.h"
 #include "nodes/node_role.h"
 #include "radiosity/work_counts.h"
@@ -49,6 +50,9 @@ class NodeRuntime {
   // delivered as soon as they are sent (the nCube2's DMA into receive buffers).
   void start();
   void finish();
+  // From now on, this node's SimGrid activities are also written to `stream`
+  // (activity_record.h: what SimGrid alone needs for the run's messages). Changes nothing else.
+  void record_activities(ActivityRecord::Stream* stream) { record_ = stream; }
   // Whether the node program reached its end (finish() was called): a node that did not
   // was left blocked when the simulation ended (a deadlock).
   bool finished() const { return finished_; }
@@ -102,6 +106,7 @@ class NodeRuntime {
   const PlatformConfig& platform_;
   const CostModel& costs_;
   std::vector<TraceEvent>* trace_;
+  ActivityRecord::Stream* record_ = nullptr;
   NodeStats stats_;
   std::deque<std::unique_ptr<Message>> deferred_;
   RenderCounts render_counts_;

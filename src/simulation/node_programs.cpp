@@ -13,9 +13,13 @@ namespace ncube {
 void create_runtimes(NodePrograms& programs, const std::vector<NodeMemory>& memory,
                      const PlatformConfig& platform, const CostModel& costs,
                      std::vector<TraceEvent>* trace) {
+  if (!ActivityRecord::requested_path().empty())
+    programs.activities = std::make_unique<ActivityRecord>();
   for (const NodeMemory& m : memory) {
     programs.runtimes.emplace_back(m.node, m.role, m.rank, platform, costs, trace);
     programs.runtimes.back().set_memory(m.bytes);
+    if (programs.activities)
+      programs.runtimes.back().record_activities(&programs.activities->add_node(m.node));
   }
 }
 

@@ -26,6 +26,9 @@ namespace ncube {
 // Everything the node programs of one run are made of; lives until the run is over.
 struct NodePrograms {
   std::deque<NodeRuntime> runtimes;  // in node order
+  // Every runtime's SimGrid activities, when the environment asks for them
+  // (nodes/activity_record.h; null otherwise).
+  std::unique_ptr<ActivityRecord> activities;
   std::deque<RadiosityEngine> engines;
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
@@ -34,7 +37,8 @@ struct NodePrograms {
   HostMachinery host;
 };
 
-// One runtime per node of `memory` (node order), each holding its planned bytes.
+// One runtime per node of `memory` (node order), each holding its planned bytes (and
+// recording its activities when NCUBE_RECORD_ACTIVITIES names a file).
 void create_runtimes(NodePrograms& programs, const std::vector<NodeMemory>& memory,
                      const PlatformConfig& platform, const CostModel& costs,
                      std::vector<TraceEvent>* trace);
