@@ -30,6 +30,7 @@
 
 #include "machine/platform_config.h"
 #include "nodes/activity_record.h"
+#include "nodes/node_runtime.h"
 #include "simulation/simulated_platform.h"
 
 namespace {
@@ -45,16 +46,6 @@ double cpu_seconds() {
   getrusage(RUSAGE_SELF, &usage);
   return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
          1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-// Looked up on first use, as the run's runtimes look them up (nodes/node_runtime.cpp).
-simgrid::s4u::Mailbox* mailbox_of(int node) {
-  static std::vector<simgrid::s4u::Mailbox*> known;
-  if (std::size_t(node) < known.size() && known[std::size_t(node)]) return known[std::size_t(node)];
-  simgrid::s4u::Mailbox* mailbox = simgrid::s4u::Mailbox::by_name("node-" + std::to_string(node));
-  if (std::size_t(node) >= known.size()) known.resize(std::size_t(node) + 1, nullptr);
-  known[std::size_t(node)] = mailbox;
-  return mailbox;
 }
 
 template <typename T>
@@ -73,7 +64,7 @@ struct Totals {
 // replay's receivers only count them.
 void replay(const ncube::ActivityRecord::Stream& stream, Totals& totals) {
   static char payload = 0;
-  simgrid::s4u::Mailbox* mine = mailbox_of(stream.node);
+  simgrid::s4u::Mailbox* mine = ncube::node_mailbox(stream.node);
   mine->set_receiver(simgrid::s4u::Actor::self());
   const unsigned char* at = stream.bytes.data();
   const unsigned char* end = at + stream.bytes.size();
@@ -86,7 +77,7 @@ void replay(const ncube::ActivityRecord::Stream& stream, Totals& totals) {
       case ncube::ActivityRecord::kPut: {
         const int to = take<std::int32_t>(at);
         const std::uint64_t bytes = take<std::uint64_t>(at);
-        mailbox_of(to)->put_init(&payload, bytes)->detach();
+        ncube::node_mailbox(to)->put_init(&payload, bytes)->detach();
         ++totals.puts;
         break;
       }

@@ -7,7 +7,8 @@
 #     of the result's messages_sent and messages_received), and ends at the run's simulated
 #     time to the last digit: a missed or extra execute, put or get would move it;
 #  3. with visibility processors and with load balancing (its messages depend on the run);
-#  4. bad use exits 2, an unreadable or truncated record exits 3.
+#  4. bad use exits 2, an unreadable or truncated record exits 3; a record simulate cannot
+#     write exits 5 with no result file.
 # Called by ctest as: simgrid_replay_test.sh SIMULATE REPO_ROOT
 set -u
 simulate="$1"
@@ -55,6 +56,11 @@ PY
 check_run scene0-v3 "$root/scenes/scene0.json" --R 2 --V 3 --samples 9
 check_run scene1-v0 "$root/scenes/scene1.json" --R 4 --V 0 --iterations 6
 check_run scene2-balance "$root/scenes/scene2.json" --R 4 --V 1 --iterations 8 --balance
+
+NCUBE_RECORD_ACTIVITIES="$work/no-such-folder/run.act" "$simulate" "$root/scenes/scene0.json" \
+  --json "$work/unwritten.json" --quiet 2>/dev/null
+[ $? -eq 5 ] || fail "an unwritable record should exit 5"
+[ -e "$work/unwritten.json" ] && fail "an unwritable record should leave no result file"
 
 "$replay" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "no arguments should exit 2"

@@ -1,9 +1,13 @@
 #include "nodes/activity_record.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+
+#include "util/input_error.h"
 
 namespace ncube {
 namespace {
@@ -42,7 +46,9 @@ ActivityRecord::Stream& ActivityRecord::add_node(int node) {
 }
 
 void ActivityRecord::write(const std::string& path) const {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  // Written beside the file and renamed into place: never a half-written record.
+  const std::string partial = path + ".partial";
+  std::ofstream out(partial, std::ios::binary | std::ios::trunc);
   out.write(kHeader, sizeof kHeader - 1);
   for (const Stream& s : streams_) {
     const std::int32_t node = s.node;
@@ -52,7 +58,11 @@ void ActivityRecord::write(const std::string& path) const {
     out.write(reinterpret_cast<const char*>(s.bytes.data()), std::streamsize(length));
   }
   out.close();
-  if (!out) throw std::runtime_error(path + ": cannot write the activity record");
+  if (!out || std::rename(partial.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(partial.c_str());
+    throw OutputError("NCUBE_RECORD_ACTIVITIES " + path + ": cannot write: " + why);
+  }
 }
 
 ActivityRecord ActivityRecord::read(const std::string& path) {

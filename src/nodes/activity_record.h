@@ -38,7 +38,8 @@ class ActivityRecord {
   Stream& add_node(int node);
   const std::deque<Stream>& streams() const { return streams_; }
 
-  // Writes the record; throws std::runtime_error naming the file if it cannot.
+  // Writes the record (whole or not at all); throws OutputError naming the file if it cannot
+  // (simulate: exit 5).
   void write(const std::string& path) const;
   // Reads a record written by write(); throws std::runtime_error naming the file and what
   // is wrong with it.

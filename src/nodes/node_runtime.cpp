@@ -14,11 +14,10 @@
 XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_messages, "the messages between the nodes");
 
 namespace ncube {
-namespace {
 
 // Looked up by name once per node and engine (by_name builds a string and searches a map:
 // measurable at thousands of messages per iteration). One engine per process.
-simgrid::s4u::Mailbox* mailbox_of(int node) {
+simgrid::s4u::Mailbox* node_mailbox(int node) {
   static std::vector<simgrid::s4u::Mailbox*> known;
   static const simgrid::s4u::Engine* engine = nullptr;
   if (engine != simgrid::s4u::Engine::get_instance()) {
@@ -33,8 +32,6 @@ simgrid::s4u::Mailbox* mailbox_of(int node) {
   return mailbox;
 }
 
-}  // namespace
-
 NodeRuntime::NodeRuntime(int node, NodeRole role, int rank, const PlatformConfig& platform,
                          const CostModel& costs, std::vector<TraceEvent>* trace)
     : platform_(platform), costs_(costs), trace_(trace) {
@@ -43,11 +40,11 @@ NodeRuntime::NodeRuntime(int node, NodeRole role, int rank, const PlatformConfig
   stats_.rank = rank;
 }
 
-void NodeRuntime::start() { mailbox_of(stats_.node)->set_receiver(simgrid::s4u::Actor::self()); }
+void NodeRuntime::start() { node_mailbox(stats_.node)->set_receiver(simgrid::s4u::Actor::self()); }
 
 void NodeRuntime::finish() {
   run_charged();
-  mailbox_of(stats_.node)->set_receiver(nullptr);
+  node_mailbox(stats_.node)->set_receiver(nullptr);
   finished_ = true;
   stats_.memory_bytes_at_end = memory_;
 }
@@ -97,7 +94,7 @@ void NodeRuntime::send(int to, std::unique_ptr<Message> message) {
   stats_.bytes_sent += bytes;
   XBT_DEBUG("node %d -> node %d: kind %d, %.0f bytes", stats_.node, to, int(message->kind), bytes);
   if (record_) record_->put(to, std::uint64_t(bytes));
-  mailbox_of(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
+  node_mailbox(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
 }
 
 std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind> kinds) {
@@ -115,7 +112,7 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
     }
   // A message already delivered is taken at once; before waiting for one, the charged CPU
   // time runs (it would have run before this receive began).
-  simgrid::s4u::Mailbox* mailbox = mailbox_of(stats_.node);
+  simgrid::s4u::Mailbox* mailbox = node_mailbox(stats_.node);
   double wait_start = -1.0;
   while (!message) {
     if (!mailbox->ready()) run_charged();

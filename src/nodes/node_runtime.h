@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <simgrid/forward.h>
+
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "nodes/activity_record.h"
@@ -40,6 +42,10 @@ struct TraceEvent {
   const char* what;  // "compute", "overhead", "wait"
   double start, end;
 };
+
+// The mailbox of node `node` ("node-N"), looked up by name once per node and engine: every
+// message to a node goes there (NodeRuntime, and bench/simgrid_replay.cpp's replay of them).
+simgrid::s4u::Mailbox* node_mailbox(int node);
 
 class NodeRuntime {
  public:
