@@ -631,7 +631,20 @@ def model_cases(root, work):
 
 
 def all_cases(root, work, simulate):
+    """Every case, each group's files in a folder of its own (case["work"]): the groups can run
+    at once, a run's temporary files looked for in its own group's folder only."""
     root, work = Path(root), Path(work)
-    return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
-            output_cases(root, work) + path_kind_cases(work, simulate) + settings_cases(root, work) +
-            machine_cases(root, work) + model_cases(root, work))
+    groups = {"scene": lambda w: scene_cases(root, w), "options": lambda w: option_cases(root, w),
+              "numbers": lambda w: number_cases(simulate, w),
+              "outputs": lambda w: output_cases(root, w),
+              "path kinds": lambda w: path_kind_cases(w, simulate),
+              "settings": lambda w: settings_cases(root, w),
+              "machine": lambda w: machine_cases(root, w), "model": lambda w: model_cases(root, w)}
+    cases = []
+    for name, make in groups.items():
+        folder = work / name.replace(" ", "-")
+        folder.mkdir()
+        for case in make(folder):
+            case["work"] = folder
+            cases.append(case)
+    return cases

@@ -20,8 +20,9 @@ hang or exhaust the machine running the script. Outcomes:
   bad output      the expected exit code, but an output or temporary file left behind, an input changed, a
                   message too long, or a result file with status other than expected,
                   null or non-finite numbers, or radiosities that differ from the reference
-The threat model's cells run in folders of their own, --jobs at a time beside the cases, each
-with --cell-timeout; a cell is clean or not clean (threat_cases.run_cell says why), and the
+Each group of cases runs in a folder of its own, its cases one after another, --jobs groups and
+threat-model cells at once. The threat model's cells run in folders of their own, each with
+--cell-timeout; a cell is clean or not clean (threat_cases.run_cell says why), and the
 table counts them by the issue's classes and by input or output. Cells listed in
 known_open.KNOWN_OPEN are reported, not failed (--strict fails on entries that are now clean).
 Exit status: 0 when every case and every cell not known open is clean, 1 otherwise (ctest).
@@ -192,6 +193,13 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
     return ("clean error" if case["expect"] == "error" else "clean other"), message.strip()[:200], seconds
 
 
+def run_group(args, group):
+    """The cases of one group (one folder), one after another: [(case, outcome, detail, s)]."""
+    results = {}
+    return [(case, *run_case(args.simulate, case, args.timeout, args.memory_mb << 20, results,
+                             case["work"])) for case in group]
+
+
 def threat_table(outcomes, title, key):
     """Rows by `key` of a cell: cells, clean, not clean, of which known open."""
     rows = {}
@@ -261,7 +269,8 @@ def main():
     parser.add_argument("--cell-timeout", type=float, default=6.0,
                         help="seconds per run of a threat-model cell")
     parser.add_argument("--jobs", type=int, default=3,
-                        help="threat-model cells at once (a hanging cell takes no CPU)")
+                        help="groups of cases and threat-model cells at once (a hanging cell "
+                             "takes no CPU)")
     parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per run")
     parser.add_argument("--only", choices=("cases", "threats"), help="run one part only")
     parser.add_argument("--list", action="store_true", help="print every case and its outcome")
@@ -272,17 +281,24 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as work, tempfile.TemporaryDirectory() as cells_work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = run_threats(args, cells_work, pool) if args.only != "cases" else {}
         cases = (case_list.all_cases(args.root, work, args.simulate)
                  if args.only != "threats" else [])
-        table, results = {}, {}
+        by_folder = {}
         for case in cases:
-            outcome, detail, seconds = run_case(args.simulate, case, args.timeout,
-                                                args.memory_mb << 20, results, work)
+            by_folder.setdefault(case["work"], []).append(case)
+        # The biggest groups first: each group runs its cases one after another.
+        groups = [pool.submit(run_group, args, group)
+                  for group in sorted(by_folder.values(), key=len, reverse=True)]
+        futures = run_threats(args, cells_work, pool) if args.only != "cases" else {}
+        outcomes = {id(case): outcome for group in groups for case, *outcome in group.result()}
+        table = {}
+        for case in cases:
+            outcome, detail, seconds = outcomes[id(case)]
             row = table.setdefault(case["group"], dict.fromkeys(COLUMNS, 0))
             row[outcome] += 1
             if args.list:
-                print(f"{case['group']:10} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} {detail[:150]}")
+                print(f"{case['group']:10} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} "
+                      f"{detail[:150]}")
             if outcome not in ("clean error", "clean other"):
                 failures.append((case, outcome, detail))
         if cases:

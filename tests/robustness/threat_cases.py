@@ -220,8 +220,8 @@ def make_input(cell, folder, outside, root, simulate):
     target = folder / surface.file
     good = target.read_bytes()
     names = [Path(surface.file).name] + ([surface.named_by] if surface.named_by else [])
-    if kind in tm.MODEL_ONLY_KINDS:
-        names = [secret_name, surface.named_by]
+    if kind in ("absolute reference", "escaping reference", "file URI"):
+        names = [secret_name, surface.named_by]   # the reference as the model spells it
     if cell.direction == "content":
         # Bad content in a file a model names is told by the model and the item that uses it
         # ("model.obj: line 10: usemtl light: ..."): the model is what the user named.
