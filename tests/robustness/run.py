@@ -232,7 +232,10 @@ def report_threats(args, futures):
     """Prints the threat model's tables and its unclean cells; returns the number of failures."""
     outcomes, skipped = [], 0
     for future, cell in futures.items():
-        result = future.result()
+        try:
+            result = future.result()
+        except OSError as error:   # the cell could not even start (the binary being rebuilt)
+            result = (False, f"could not run: {error}", 0.0)
         if result is None:
             skipped += 1
             continue

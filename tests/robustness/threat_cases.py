@@ -362,6 +362,36 @@ def leak_markers(outside):
     return markers
 
 
+def _atime_tells_reads():
+    """Whether this file system notes a read in the access time of a file whose access time is
+    older than its change (relatime, strictatime; not noatime)."""
+    probe = Path(os.environ.get("TMPDIR", "/tmp")) / f"robustness-atime-{os.getpid()}"
+    probe.write_bytes(b"x")
+    try:
+        os.utime(probe, (time.time() - 10000, time.time()))
+        before = os.stat(probe).st_atime_ns
+        probe.read_bytes()
+        return os.stat(probe).st_atime_ns != before
+    finally:
+        probe.unlink()
+
+
+ATIME_TELLS_READS = _atime_tells_reads()
+
+
+def secret_reads(outside):
+    """Sets the secrets' access times in the past; returns a function naming those read since
+    (reading, not stat or open, moves the access time), or none where the file system does not
+    tell (noatime)."""
+    if not ATIME_TELLS_READS:
+        return lambda: []
+    times = {}
+    for name, _ in SECRETS.values():
+        os.utime(outside / name, (time.time() - 10000, os.stat(outside / name).st_mtime))
+        times[name] = os.stat(outside / name).st_atime_ns
+    return lambda: [n for n, t in times.items() if os.stat(outside / n).st_atime_ns != t]
+
+
 def _drain(path, received):
     with open(path, "rb") as f:
         received.append(len(f.read()))
@@ -463,6 +493,8 @@ def run_cell(cell, work, root, simulate, timeout, memory_bytes):
     outside.mkdir()
     for name, content in SECRETS.values():
         (outside / name).write_bytes(content)
+    before_outside = snapshot(outside)
+    secrets_read = secret_reads(outside)
     after_kind, holder, reader, received = None, None, None, []
     if cell.direction == "write":
         made = make_output(cell, folder, root, simulate)
@@ -479,7 +511,7 @@ def run_cell(cell, work, root, simulate, timeout, memory_bytes):
             return None
         argv, env, names = made
         named = None
-    before, before_outside = snapshot(folder), snapshot(outside)
+    before = snapshot(folder)
 
     code, message, rss, seconds, printed = execute(argv, env, folder, timeout, memory_bytes)
     if reader:
@@ -514,6 +546,9 @@ def run_cell(cell, work, root, simulate, timeout, memory_bytes):
     changed = [k for k in changed if k not in partial]
     if changed:
         problems.append("changed or created " + ", ".join(changed[:4]))
+    read = secrets_read()
+    if read:
+        problems.append("read " + ", ".join(read) + " beside the case folder")
     if snapshot(outside) != before_outside:
         problems.append("changed the folder beside the case folder")
     markers = leak_markers(outside)

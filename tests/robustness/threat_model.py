@@ -10,15 +10,16 @@ The rules (docs/cli.md, "Output files"; issue 30, "What to build" 1 and 2):
            content: exit 2, one line naming the file (and for a file a model names, the model);
            never a hang, never the whole file in memory.
            A file a model names must resolve inside the model's folder: an absolute reference,
-           a file: URI, a `..` out of the folder or a link out of it is refused (exit 2).
+           a file: URI, a `..` out of the folder or a link out of it is refused (exit 2); one
+           the run never opens (a glTF image) may also be ignored, but never read.
   writes   docs/cli.md's table: a new or regular file replaced whole, a link's target written
            (the link stays), a FIFO or character device streamed and never replaced, a folder
            or socket exit 5, a loop of links or a missing folder exit 2, an output that is any
            input of the run (the model and every file it names too) exit 2.
   always   nothing outside what the user named is read or written: the case folder holds
            afterwards only what it held plus the named outputs (none after a failure, no
-           `.partial*`), the folder beside it is untouched, and no output holds the bytes, the
-           hash or the path of a file the run was not allowed to read.
+           `.partial*`), the folder beside it is untouched and unread (access times), and no
+           output holds the bytes, the hash or the path of a file the run was not allowed to read.
 
 Outcomes: "ok" (exit 0), "error" (exit 2), "write" (exit 5).
 """
@@ -96,8 +97,11 @@ def input_expect(surface, kind):
     """The outcomes the rules allow for `surface` made a path of `kind`."""
     if kind in ("regular", "link"):
         return {"ok"}
-    if not surface.read and kind not in MODEL_ONLY_KINDS:
-        return {"ok", "error"}   # never opened: refusing it is as good as ignoring it
+    if not surface.read:
+        # Never opened (Assimp keeps an image's name only): refusing it is as good as ignoring
+        # it, even out of the folder (exported models often name absolute texture paths), as
+        # long as nothing beside the case folder is read (threat_cases.secret_reads).
+        return {"ok", "error"}
     return {"error"}
 
 
