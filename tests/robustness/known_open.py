@@ -31,6 +31,8 @@ KNOWN_OPEN = [
     # the sweep tool hashes a glTF's images wherever they are.
     *_cross(["read OBJ mtllib", "read glTF buffer"],
             ["absolute reference", "escaping reference", "link out of the folder"]),
+    *_cross(["read OBJ mtllib, model by absolute path", "read glTF buffer, model by absolute path"],
+            ["escaping reference", "link out of the folder"]),
     *_cross(["read sweep OBJ mtllib", "read sweep glTF buffer", "read sweep glTF image"],
             ["escaping reference", "link out of the folder"]),
     "read sweep glTF image / absolute reference",

@@ -217,6 +217,8 @@ def make_input(cell, folder, outside, root, simulate):
     elif kind == "file URI":
         refs[surface.ref] = "file://" + str(outside / secret_name)
     argv, env = base_run(surface.run, folder, root, simulate, refs)
+    if surface.absolute:
+        argv[1] = str(folder / argv[1])
     target = folder / surface.file
     good = target.read_bytes()
     names = [Path(surface.file).name] + ([surface.named_by] if surface.named_by else [])

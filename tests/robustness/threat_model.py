@@ -51,6 +51,8 @@ class Input:
     uri: bool = False       # the reference is a URI (glTF), so a file: URI applies
     read: bool = True       # the run opens it (a glTF image is only named: its kinds may be
                             # refused or ignored, but never followed out of the folder)
+    absolute: bool = False  # the model named by its absolute path (on main 0f2337f a model's
+                            # references were resolved differently for the two)
 
 
 INPUTS = [
@@ -62,6 +64,10 @@ INPUTS = [
     Input("OBJ mtllib", "lamp.mtl", "mtl", "obj", "model.obj", "mtl"),
     Input("glTF buffer", "mesh.bin", "buffer", "gltf", "model.gltf", "buffer", uri=True),
     Input("glTF image", "tex.png", "image", "gltf", "model.gltf", "image", uri=True, read=False),
+    Input("OBJ mtllib, model by absolute path", "lamp.mtl", "mtl", "obj", "model.obj", "mtl",
+          absolute=True),
+    Input("glTF buffer, model by absolute path", "mesh.bin", "buffer", "gltf", "model.gltf",
+          "buffer", uri=True, absolute=True),
     Input("--platform JSON", "platform.json", "platform", "scene"),
     Input("--platform SimGrid XML", "platform.xml", "xml", "xml"),
     Input("--cost-model", "cost.json", "cost", "scene"),
@@ -90,6 +96,8 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
 
 def input_kinds(surface):
     kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
+    if surface.absolute:   # only where the model's own path matters
+        kinds = ["regular", "link", *MODEL_ONLY_KINDS]
     return [k for k in kinds if k != "file URI" or surface.uri]
 
 
@@ -242,7 +250,7 @@ def cells(simulate):
         for kind in input_kinds(surface):
             found.append(Cell(f"read {surface.id} / {kind}", "read", surface, kind,
                               input_expect(surface, kind)))
-        for content in CONTENT_CLASSES[surface.fmt]:
+        for content in CONTENT_CLASSES[surface.fmt] if not surface.absolute else []:
             found.append(Cell(f"content {surface.id} / {content}", "content", surface, content,
                               {"error"}))
     for output in outputs(simulate):
