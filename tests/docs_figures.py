@@ -21,6 +21,7 @@ every run on one host thread, so about as long on an idle machine. Python 3 stan
 only.
 """
 
+import functools
 import json
 import os
 import re
@@ -71,15 +72,20 @@ def mib(result, role_prefix):
                if n["role"].startswith(role_prefix)) / 2**20
 
 
+@functools.lru_cache(maxsize=None)
+def scene_patches(name):
+    """The patches of scenes/NAME (read once)."""
+    return json.loads((ROOT / "scenes" / name).read_text())["patches"]
+
+
 def patch_grids(name):
     """Each patch's element grid [nu, nv] in scenes/NAME."""
-    patches = json.loads((ROOT / "scenes" / name).read_text())["patches"]
-    return [p.get("elements", [1, 1]) for p in patches]
+    return [p.get("elements", [1, 1]) for p in scene_patches(name)]
 
 
 def scene_counts(name):
     """(patches, elements, lights) of scenes/NAME, counted from the file."""
-    patches = json.loads((ROOT / "scenes" / name).read_text())["patches"]
+    patches = scene_patches(name)
     elements = sum(a * b for a, b in patch_grids(name))
     lights = sum(1 for p in patches if any(p.get("emission", [0, 0, 0])))
     return len(patches), elements, lights
@@ -238,6 +244,15 @@ def checks(p):
           lambda: mib(plan("scene4.json", 8, 7), "visibility"),
           lambda: mib(octree_plan("scene4.json", 16, 3), "visibility"),
           lambda: mib(octree_plan("scene4.json", 21, 2), "visibility")]),
+        ("scenes.md", r"\*\*Elements: ([\d,]+)\*\*, ([\d.]+) per patch, .*?: ([\d,]+) patches "
+         r"\(chair legs, books, seats, light panels\) have one element",
+         [lambda: scene_counts("scene4.json")[1],
+          lambda: scene_counts("scene4.json")[1] / scene_counts("scene4.json")[0],
+          lambda: sum(1 for a, b in patch_grids("scene4.json") if a * b == 1)]),
+        ("scenes.md", r"no patch may hold more than 1/512 of the elements \((\d+)\); the largest "
+         r"holds (\d+),",
+         [lambda: scene_counts("scene4.json")[1] / 512,
+          lambda: max(a * b for a, b in patch_grids("scene4.json"))]),
         ("model.md", r"scene1 \(288 patches\) whole scene (\d+) cells",
          [lambda: octree_plan("scene1.json", 1, 0)["counts"]["octree_cells_built"]]),
         # One default for M (docs/model.md, "Options"): the code's and simulate's.
@@ -296,6 +311,10 @@ def checks(p):
           lambda: 2 * cost("shooter_record_bytes"),
           lambda: machine_parameters()["node_memory"] - cost("node_reserve_bytes")
           - 2 * cost("shooter_record_bytes")]),
+        ("performance.md", r"a memo of the last (\d+) blocks",
+         [lambda: constant("kMemoBlocks")]),
+        ("performance.md", r"\*\*Budget, choice: (\d+) MiB per scene in the process\*\*",
+         [lambda: source_value("src/host/answer_cache.cpp", r"std::size_t megabytes = (\d+);")]),
         ("architecture.md", r"`tests/seam_test\.sh` holds (\w+) whole runs",
          [lambda: len(re.findall(r"^check ", (ROOT / "tests/seam_test.sh").read_text(), re.M))]),
         ("reproduce.md", r"compares (\d+) speedup ratios",
