@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/NetZone.hpp>
 
 #include "machine/simgrid_session.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -28,7 +28,8 @@ double node_property(const std::string& path, simgrid::s4u::Host* host, const ch
 }  // namespace
 
 bool is_simgrid_platform_file(const std::string& path) {
-  std::ifstream in(path);
+  // Either kind of platform file, up to the larger limit: only its first character is read.
+  InputStream in(path, InputKind{kPlatformFile.what, kSimgridPlatformFile.max_bytes});
   char c = 0;
   while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
   }
@@ -38,8 +39,10 @@ bool is_simgrid_platform_file(const std::string& path) {
 PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments) {
   simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
+  // SimGrid reads the descriptor the gate opened and checked, not the path again.
+  const InputFile file(path, kSimgridPlatformFile);
   try {
-    engine.load_platform(path);
+    engine.load_platform(file.descriptor_path());
   } catch (const std::exception& e) {
     throw InputError(path + ": not a SimGrid platform file: " + e.what());
   }
