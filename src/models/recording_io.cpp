@@ -1,9 +1,9 @@
 #include "models/recording_io.h"
 
+#include <assimp/MemoryIOWrapper.h>
 #include <strings.h>
 
 #include <algorithm>
-#include <assimp/MemoryIOWrapper.h>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -20,18 +20,23 @@ namespace fs = std::filesystem;
 
 bool lies_in(const std::string& path, const std::string& folder) {
   if (folder == "/") return true;
-  return path == folder || (path.size() > folder.size() && path.compare(0, folder.size(), folder) == 0 &&
-                            path[folder.size()] == '/');
+  return path == folder ||
+         (path.size() > folder.size() && path.compare(0, folder.size(), folder) == 0 &&
+          path[folder.size()] == '/');
 }
 
-RecordingIOSystem::RecordingIOSystem(const std::string& model, const std::vector<std::string>& folders,
-                                     std::vector<std::string>& files, std::vector<std::string>& problems)
+RecordingIOSystem::RecordingIOSystem(const std::string& model,
+                                     const std::vector<std::string>& folders,
+                                     std::vector<std::string>& files,
+                                     std::vector<std::string>& problems)
     : model_(model), files_(files), problems_(problems) {
   // Assimp joins the model's folder, as written in the model's path, and the name the model
   // gives (relative or not): "dir/" + "x.mtl", "dir/" + "/etc/x".
   const std::size_t slash = model.find_last_of('/');
   prefix_ = slash == std::string::npos ? "" : model.substr(0, slash + 1);
-  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : model.substr(0, slash);
+  const std::string folder = slash == std::string::npos ? "."
+                             : slash == 0               ? "/"
+                                                        : model.substr(0, slash);
   std::error_code error;
   allowed_.push_back(fs::canonical(folder, error).string());
   if (error) throw InputError(model + ": cannot find the model's folder: " + error.message());
@@ -44,7 +49,8 @@ RecordingIOSystem::RecordingIOSystem(const std::string& model, const std::vector
   }
 }
 
-std::string RecordingIOSystem::outside(const std::string& reference, const std::string& real) const {
+std::string RecordingIOSystem::outside(const std::string& reference,
+                                       const std::string& real) const {
   for (const std::string& folder : allowed_)
     if (lies_in(real, folder)) return "";
   std::string why = "through a symbolic link";
@@ -54,14 +60,16 @@ std::string RecordingIOSystem::outside(const std::string& reference, const std::
     const std::string lexical = (fs::path(allowed_[0]) / reference).lexically_normal().string();
     if (!lies_in(lexical, allowed_[0])) why = "a .. path";
   }
-  return model_ + ": names " + reference + ", which lies outside the model's folder " + allowed_[0] +
-         " (" + why + "); a model reads only files in its own folder or one named with --model-folder";
+  return model_ + ": names " + reference + ", which lies outside the model's folder " +
+         allowed_[0] + " (" + why +
+         "); a model reads only files in its own folder or one named with --model-folder";
 }
 
 RecordingIOSystem::Asked RecordingIOSystem::checked(const std::string& file) const {
   if (file == model_) return {file, file};  // the model itself: the user named it
-  const std::string reference =
-      !prefix_.empty() && file.compare(0, prefix_.size(), prefix_) == 0 ? file.substr(prefix_.size()) : file;
+  const std::string reference = !prefix_.empty() && file.compare(0, prefix_.size(), prefix_) == 0
+                                    ? file.substr(prefix_.size())
+                                    : file;
   if (strncasecmp(reference.c_str(), "file:", 5) == 0) {
     note(problems_, model_ + ": names " + reference +
                         ", a file: URI (a model names its files by paths relative to its folder)");
@@ -87,7 +95,8 @@ bool RecordingIOSystem::Exists(const char* file) const {
   if (target.empty()) return false;
   try {
     const bool part = target != model_;
-    const InputFile input(target, part ? kModelPart : kModelFile, part ? model_ + ": names " : "");
+    const InputFile input(target, part ? kModelPart : kModelFile, part ? model_ + ": names " : "",
+                          reference);
     if (part) {
       // What was opened, links resolved now: no link swapped in after the check above.
       const std::string problem = outside(reference, input.real_path());
@@ -106,7 +115,8 @@ Assimp::IOStream* RecordingIOSystem::Open(const char* file, const char* mode) {
   if (target.empty()) return nullptr;
   try {
     const bool part = target != model_;
-    InputFile input(target, part ? kModelPart : kModelFile, part ? model_ + ": names " : "");
+    InputFile input(target, part ? kModelPart : kModelFile, part ? model_ + ": names " : "",
+                    reference);
     if (part) {
       const std::string problem = outside(reference, input.real_path());
       if (!problem.empty()) throw InputError(problem);

@@ -6,10 +6,10 @@
 // default material in place of a missing MTL).
 #pragma once
 
+#include <assimp/DefaultIOSystem.h>
+
 #include <string>
 #include <vector>
-
-#include <assimp/DefaultIOSystem.h>
 
 namespace ncube::models {
 
@@ -36,8 +36,8 @@ class RecordingIOSystem : public Assimp::DefaultIOSystem {
   void note(std::vector<std::string>& list, const std::string& text) const;
 
   std::string model_;
-  std::string prefix_;                 // the model's folder as Assimp writes it before a name
-  std::vector<std::string> allowed_;   // canonical folders
+  std::string prefix_;                // the model's folder as Assimp writes it before a name
+  std::vector<std::string> allowed_;  // canonical folders
   std::vector<std::string>& files_;
   std::vector<std::string>& problems_;
 };

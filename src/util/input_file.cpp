@@ -27,13 +27,19 @@ const char* file_type(mode_t mode) {
 
 }  // namespace
 
-InputFile::InputFile(const std::string& path, const InputKind& kind, const std::string& named_by)
-    : path_(path), kind_(kind), named_by_(named_by) {
+InputFile::InputFile(const std::string& path, const InputKind& kind, const std::string& named_by,
+                     const std::string& shown)
+    : path_(path), kind_(kind), named_by_(named_by), shown_(shown) {
   // O_NONBLOCK: opening a FIFO for reading would wait for a writer. O_NOCTTY: a terminal
   // named as input does not become the process's controlling terminal.
   descriptor_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (descriptor_ < 0) {
     const int error = errno;
+    struct stat named {};
+    // A socket cannot be opened at all (ENXIO): say what it is rather than "no such device".
+    if (error == ENXIO && ::stat(path.c_str(), &named) == 0 && !S_ISREG(named.st_mode))
+      throw InputError(where() + ": " + kind.what + " is " + file_type(named.st_mode) +
+                       ", not a regular file");
     throw InputError(where() + ": cannot open " + kind.what + ": " +
                      (error == ELOOP ? std::string("a loop of symbolic links")
                                      : std::string(std::strerror(error))));
@@ -106,7 +112,8 @@ std::string read_input_file(const std::string& path, const InputKind& kind,
 std::string input_sha256(const std::string& path, const InputKind& kind,
                          const std::string& named_by) {
   InputFile file(path, kind, named_by);
-  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context(EVP_MD_CTX_new(), EVP_MD_CTX_free);
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context(EVP_MD_CTX_new(),
+                                                                  EVP_MD_CTX_free);
   EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr);
   std::vector<char> buffer(1 << 16);
   for (std::size_t got; (got = file.read(buffer.data(), buffer.size())) > 0;)
@@ -123,7 +130,8 @@ std::string input_sha256(const std::string& path, const InputKind& kind,
   return text;
 }
 
-InputStream::InputStream(const std::string& path, const InputKind& kind, const std::string& named_by)
+InputStream::InputStream(const std::string& path, const InputKind& kind,
+                         const std::string& named_by)
     : std::istream(nullptr), buffer_(path, kind, named_by) {
   rdbuf(&buffer_);
   exceptions(std::ios::badbit);  // the InputError of a failed read reaches the caller

@@ -30,12 +30,14 @@ inline constexpr InputKind kPlatformFile{"platform file", 1 * kMiB};
 inline constexpr InputKind kSimgridPlatformFile{"SimGrid platform file", 64 * kMiB};
 inline constexpr InputKind kCostModelFile{"cost model", 1 * kMiB};
 inline constexpr InputKind kActivityRecord{"activity record", std::size_t(16) << 30};
+// A result file read back by a bench tool (build/embree_floor).
+inline constexpr InputKind kResultFile{"result file", 256 * kMiB};
 
 // An open input file. Opening never blocks (O_NONBLOCK: a FIFO is refused, not waited on)
 // and checks the descriptor it opened (fstat), not the path again, so no other file can take
 // the path's place between the check and the read.
-// Throws InputError, each one line naming the file after `named_by` (what names it, e.g.
-// "a.obj: names "):
+// Throws InputError, each one line naming the file (as `shown`, if given: the name a model
+// gives it) after `named_by` (what names it, e.g. "a.obj: names "):
 //   "<file>: cannot open <what>: <reason>"       (missing, no permission)
 //   "<file>: cannot open <what>: a loop of symbolic links"
 //   "<file>: <what> is a FIFO, not a regular file" (also a character device, ...)
@@ -43,7 +45,8 @@ inline constexpr InputKind kActivityRecord{"activity record", std::size_t(16) <<
 //   "<file>: cannot read <what>: <reason>"
 class InputFile {
  public:
-  InputFile(const std::string& path, const InputKind& kind, const std::string& named_by = "");
+  InputFile(const std::string& path, const InputKind& kind, const std::string& named_by = "",
+            const std::string& shown = "");
   ~InputFile();
   InputFile(const InputFile&) = delete;
   InputFile& operator=(const InputFile&) = delete;
@@ -60,13 +63,14 @@ class InputFile {
   // "/proc/self/fd/<n>": the open file, for a library that takes a path and opens it itself.
   std::string descriptor_path() const { return "/proc/self/fd/" + std::to_string(descriptor_); }
   // "<named_by><path>", for messages.
-  std::string where() const { return named_by_ + path_; }
+  std::string where() const { return named_by_ + (shown_.empty() ? path_ : shown_); }
   const InputKind& kind() const { return kind_; }
 
  private:
   std::string path_;
   InputKind kind_;
   std::string named_by_;
+  std::string shown_;
   int descriptor_ = -1;
   std::size_t size_ = 0;
   std::size_t given_ = 0;
