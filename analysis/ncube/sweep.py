@@ -209,19 +209,35 @@ def scene_summary(path):
     return scene.get("name", Path(path).stem), len(scene.get("patches", []))
 
 
-@functools.lru_cache(maxsize=None)
+def _signature(file):
+    """What tells a changed file without reading it (inode, size, modification time)."""
+    try:
+        info = os.stat(file)
+    except OSError:
+        return None
+    return info.st_ino, info.st_size, info.st_mtime_ns
+
+
+_listings = {}   # model path -> (the signature of every file listed, the listing)
+
+
 def _listed_inputs(path):
     """Every file ./simulate reads for the model at `path`, as it reads them: its --list-inputs,
-    [{role, file, sha256}], each file opened and hashed through its input gate (regular files
-    only, in the model's folder, each kind's size limit: docs/cli.md, "Input files"). The
-    sweep never parses a model itself: Assimp's reading of a name (an mtllib with spaces is
-    one file) is the only one."""
+    ((role, file, sha256), ...), each file opened and hashed through its input gate (regular
+    files only, in the model's folder, each kind's size limit: docs/cli.md, "Input files").
+    The sweep never parses a model itself: Assimp's reading of a name (an mtllib with spaces
+    is one file) is the only one. Asked again only when a file listed has changed."""
+    cached = _listings.get(path)
+    if cached and all(_signature(file) == signature for file, signature in cached[0]):
+        return cached[1]
     run = subprocess.run([paths.simulate_binary(), path, "--list-inputs"], capture_output=True,
                          text=True, env=paths.simulate_environment())
     if run.returncode != 0:
         raise ValueError(run.stderr.strip().removeprefix("simulate: "))
-    return tuple((entry["role"], entry["file"], entry["sha256"])
-                 for entry in json.loads(run.stdout)["inputs"])
+    listing = tuple((entry["role"], entry["file"], entry["sha256"])
+                    for entry in json.loads(run.stdout)["inputs"])
+    _listings[path] = ([(file, _signature(file)) for _, file, _ in listing], listing)
+    return listing
 
 
 def model_parts(path):

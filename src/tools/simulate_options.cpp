@@ -188,7 +188,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "0, or 2 with the setting SimGrid refuses (no scene needed)",
              "");
   table.flag("--list-inputs", options.list_inputs,
-             "print every file the run would read (role, file, bytes, sha256) as JSON, read "
+             "print every file the run would read (role, file, sha256) as JSON, each read "
              "through the same checks and limits, then stop without simulating",
              "");
   bool describe = false;
