@@ -96,6 +96,17 @@ refused "zero.bin: platform file is a character device, not a regular file" scen
 refused "fifo.bin: cost model is a FIFO, not a regular file" scene0.json --cost-model fifo.bin
 head -c 1048577 /dev/zero | tr '\0' ' ' > big.json
 refused "big.json: cost model is larger than 1048576 bytes (the limit)" scene0.json --cost-model big.json
+# A SimGrid platform naming a file SimGrid would open itself (here a FIFO: it would wait).
+cat > named.xml <<XML
+<?xml version='1.0'?>
+<platform version="4.1">
+  <zone id="z" routing="Full">
+    <host id="node-0" speed="1Mf" speed_file="$work/m/fifo.bin"/>
+  </zone>
+</platform>
+XML
+refused "named.xml: line 4: speed_file=: names a file, which SimGrid would read outside the input gate" \
+  scene0.json --R 1 --platform named.xml
 mkdir -p "$work/root/platforms"
 mkfifo "$work/root/platforms/ncube2.json"
 NCUBE_ROOT="$work/root" refused "ncube2.json: platform file is a FIFO, not a regular file" "$root/scenes/scene0.json"
