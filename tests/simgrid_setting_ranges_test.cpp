@@ -16,11 +16,13 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <set>
 #include <simgrid/s4u/Engine.hpp>
 #include <sstream>
 
+#include "machine/simgrid_platform_file.h"
 #include "machine/simgrid_settings.h"
 #include "util/input_error.h"
 
@@ -129,6 +131,29 @@ TEST(SimgridSettingRanges, ValuesInsideAreTaken) {
         "smpi/bw-factor:65472:0.94;0:0.81", "smpi/IB-penalty-factors:0.965;0.925;1.35",
         "tracing/vm:no", "debug/breakpoint:-1", "smpi/np:-5"})
     EXPECT_EQ(refusal(std::string("--cfg=") + setting), "") << setting;
+}
+
+// A SimGrid platform file's <config> tags are settings too: held to the same table before
+// SimGrid loads the file (Constant aborts while it loads).
+TEST(SimgridSettingRanges, APlatformFilesConfigTagsAreChecked) {
+  const std::filesystem::path file = std::filesystem::path(testing::TempDir()) / "config_tag.xml";
+  std::ifstream in(std::string(NCUBE_SOURCE_DIR) + "/platforms/ncube2.xml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string model = "<prop id=\"network/model\" value=\"CM02\"/>";
+  ASSERT_NE(text.find(model), std::string::npos);
+  text.replace(text.find(model), model.size(), "<prop id=\"network/model\" value=\"Constant\"/>");
+  std::ofstream(file) << text;
+  try {
+    read_simgrid_platform_file(file.string(), {});
+    ADD_FAILURE() << "network/model Constant in <config> was taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": <config> <prop id=\"network/model\" "
+                                          "value=\"Constant\">: network/model must be one of",
+                                          0),
+              0u)
+        << e.what();
+  }
+  std::filesystem::remove(file);
 }
 
 // Settings read only with a model, solver or plugin are run with it.
