@@ -130,12 +130,28 @@ def constant(name):
     for path in sorted((ROOT / "src").rglob("*.h")) + sorted((ROOT / "src").rglob("*.cpp")):
         found = definition.search(path.read_text())
         if found:
-            expression = re.sub(r"std::size_t\((\d+)\)", r"\1", found.group(1))
+            expression = found.group(1).strip()
+            kind = re.fullmatch(r"(\w+)\.max_bytes", expression)
+            if kind:  # a limit of the input gate's (src/util/input_file.h): its InputKind's bytes
+                return input_limit(kind.group(1))
+            expression = re.sub(r"std::size_t\((\d+)\)", r"\1", expression)
             expression = re.sub(r"(\d)L\b", r"\1", expression)
             if not re.fullmatch(r"[\d\s<>*+().e-]+", expression):
                 raise LookupError("%s: %s = %s is not a plain number" % (path, name, expression))
             return float(eval(expression))  # digits and operators only, checked above
     raise LookupError("no constexpr %s under src/" % name)
+
+
+def input_limit(kind):
+    """The byte limit of the input gate's InputKind KIND (src/util/input_file.h)."""
+    text = (ROOT / "src/util/input_file.h").read_text()
+    found = re.search(r"InputKind %s\{\"[^\"]*\", ([^}]+)\}" % kind, text)
+    if not found:
+        raise LookupError("no InputKind %s in src/util/input_file.h" % kind)
+    expression = found.group(1).replace("kMiB", str(2**20)).replace("kGiB", str(2**30))
+    if not re.fullmatch(r"[\d\s*+()]+", expression):
+        raise LookupError("InputKind %s: %s is not a plain number" % (kind, expression))
+    return float(eval(expression))  # digits and operators only, checked above
 
 
 def scene2(probe, R, V):
@@ -288,7 +304,9 @@ def checks(p):
         ("cli.md", r"JSON nesting at most (\d+) arrays and objects deep",
          [lambda: constant("kMaxNestingDepth")]),
         ("cli.md", r"Platform and cost-model files: at most (\d+) MiB each",
-         [lambda: constant("kMaxParameterFileBytes") / 2**20]),
+         [lambda: input_limit("kPlatformFile") / 2**20]),
+        ("cli.md", r"Platform and cost-model files: at most (\d+) MiB each",
+         [lambda: input_limit("kCostModelFile") / 2**20]),
         ("performance.md", r"`kEndGap` = ([\d.]+) pad past its point",
          [lambda: constant("kEndGap")]),
         ("performance.md", r"`kNearRadius` = ([\d.]+) pads holds the end",
