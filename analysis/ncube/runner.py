@@ -26,9 +26,14 @@ SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
 SNAKEMAKE = "/usr/bin/snakemake"
 
 
-def write_plan(sweeps, results_dir):
+def write_plan(sweeps, results_dir, pending, rerun_finished=False):
+    """The plan Snakemake reads: every sweep with its cells, the result files of the cells to
+    run ("pending"; the Snakefile's cell rules make only those) and whether a cell's job may
+    replace a finished result (only when Snakemake is told to force reruns)."""
     plan = results_dir / "plan.json"
-    text = json.dumps({"sweeps": [s.to_dict() for s in sweeps]}, indent=1) + "\n"
+    text = json.dumps({"sweeps": [s.to_dict() for s in sweeps],
+                       "pending": [c.file for c in pending],
+                       "rerun_finished": rerun_finished}, indent=1) + "\n"
     output_file.write(plan, text)
     return plan
 
@@ -53,13 +58,37 @@ def discard_unfinished(cells, results_dir="."):
     return rejected
 
 
+def cells_to_run(sweeps, results_dir, rerun_all=False):
+    """The sweep's own decision of what runs, made from the result files before Snakemake
+    starts: a cell runs unless its verified result file is there (discard_unfinished moves any
+    other file aside first). A cell that is not to run is no job's output, so Snakemake's own
+    bookkeeping (an incomplete mark left by a stop at any instant, a touch, the deletion of a
+    failed job's outputs) can neither run it again nor delete its file. A sweep's table is made
+    again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or --forcerun asked
+    for) hands every cell to Snakemake, which then decides."""
+    cells = list({c.id: c for s in sweeps for c in s.cells}.values())
+    discard_unfinished(cells, results_dir)
+    missing = {c.file for c in cells if not (Path(results_dir) / c.file).exists()}
+    for sweep in sweeps:
+        if any(c.file in missing for c in sweep.cells):
+            (Path(results_dir) / "sweeps" / sweep.name / "cells.csv").unlink(missing_ok=True)
+    return [c for c in cells if rerun_all or c.file in missing]
+
+
+FORCING = ("-F", "--forceall", "-R", "--forcerun")
+
+
+def forces_reruns(snakemake_arguments):
+    return any(a in FORCING or a.startswith("--forcerun=") for a in snakemake_arguments)
+
+
 def snakemake_command(plan, results_dir, args):
-    # --ignore-incomplete: a cell's file appears only once it is verified (ncube.run_cell) and
-    # every existing file is verified again before the run (discard_unfinished), so Snakemake's
-    # own bookkeeping must not rerun a cell that finished just before an interruption.
-    # --keep-incomplete: for the same reason, a job stopped by an interruption between giving
-    # its verified file the final name and exiting must not have that file deleted (Snakemake
-    # deletes the outputs of every job it sees fail, and a stopped job is one).
+    # Which cells run is decided before (cells_to_run); Snakemake's own bookkeeping only
+    # concerns the cells to run and the tables. --ignore-incomplete: a cell's file appears only
+    # verified (ncube.run_cell), so an incomplete mark Snakemake left on one is no reason to
+    # refuse the folder. --keep-incomplete: a job stopped between giving its verified file the
+    # final name and exiting keeps that file (Snakemake deletes the outputs of every job it sees
+    # fail, and a stopped job is one); the next run then finds the cell finished.
     # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
                "--config", f"plan={plan}", "--ignore-incomplete", "--keep-incomplete",
@@ -142,10 +171,13 @@ def main(argv=None):
         os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
     results_dir.mkdir(parents=True, exist_ok=True)
-    plan = write_plan(sweeps, results_dir)
+    forced = forces_reruns(args.snakemake)
+    pending = cells_to_run(sweeps, results_dir, forced)
+    plan = write_plan(sweeps, results_dir, pending, forced)
     done = sum((results_dir / c.file).exists() for c in cells.values())
-    print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a result "
-          f"file in {results_dir}", flush=True)
+    print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a finished "
+          f"result file in {results_dir}, " +
+          ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
     start = time.monotonic()
     status = run_snakemake(snakemake_command(plan, results_dir, args))
     wall = time.monotonic() - start
