@@ -9,7 +9,9 @@ Every sweep file is validated first (exit 2 with the file, cell and key at the f
 The cells of all sweeps go to DIR/cells/ (traced ones to DIR/traced/), named after their
 identity, so a cell in several sweeps runs once; DIR/sweeps/<name>/ gets each sweep's CSV and
 plots. Interrupt it (Ctrl-C, SIGTERM) and run it again: finished cells are kept, the running
-ones are stopped with their simulations and start again."""
+ones are stopped with their simulations and start again. A failure ends with one plain line
+saying what happened and what to do, and an exit code (ncube.outcome, docs/sweeps.md); the last
+line names the tables this run wrote."""
 import argparse
 import json
 import os
@@ -19,7 +21,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import output_file, paths, results
+from . import outcome, output_file, paths, results
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -105,8 +107,10 @@ def snakemake_command(plan, results_dir, args):
 
 def run_snakemake(command):
     """Runs Snakemake in its own process group; a signal to this process stops the group, so
-    no job and no simulation outlives the sweep."""
-    process = subprocess.Popen(command, start_new_session=True)
+    no job and no simulation outlives the sweep (then outcome.Interrupted is raised). Returns
+    Snakemake's exit status and its messages (outcome.SnakemakeMessages)."""
+    process = subprocess.Popen(command, start_new_session=True, stderr=subprocess.PIPE)
+    messages = outcome.SnakemakeMessages(process.stderr)
 
     def stop(signum, _frame):
         for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 0.0)):
@@ -122,19 +126,31 @@ def run_snakemake(command):
             os.killpg(process.pid, signal.SIGKILL)
         except ProcessLookupError:
             pass
+        messages.wait()
         # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
         # leave its lock behind, and the next run would refuse the folder. The lock is this
-        # run's own (no other instance could hold the folder while it ran), so it goes.
+        # run's own (no other sweep holds the folder while this one runs: hold_folder), so it
+        # goes.
         try:
             subprocess.run(command + ["--unlock"], stdout=subprocess.DEVNULL,
                            stderr=subprocess.DEVNULL, timeout=120, check=False)
         except (OSError, subprocess.SubprocessError):
             pass
-        sys.exit(128 + signum)
+        raise outcome.Interrupted(signum)
 
     signal.signal(signal.SIGINT, stop)
     signal.signal(signal.SIGTERM, stop)
-    return process.wait()
+    status = process.wait()
+    messages.wait()
+    return status, messages
+
+
+def not_written(error, results_dir):
+    """The plain line and exit code of the runner's own writes failing."""
+    if outcome.is_full(error):
+        return outcome.say_full(results_dir)
+    outcome.say(f"{error.filename or results_dir}: cannot be written: {error.strerror or error}")
+    return outcome.NOT_WRITTEN
 
 
 def main(argv=None):
@@ -170,21 +186,36 @@ def main(argv=None):
     if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
         os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
-    results_dir.mkdir(parents=True, exist_ok=True)
-    forced = forces_reruns(args.snakemake)
-    pending = cells_to_run(sweeps, results_dir, forced)
-    plan = write_plan(sweeps, results_dir, pending, forced)
+    try:
+        results_dir.mkdir(parents=True, exist_ok=True)
+        held = outcome.hold_folder(results_dir)
+        if held is None:
+            outcome.final_line(None, [])
+            return outcome.FOLDER_IN_USE
+        forced = forces_reruns(args.snakemake)
+        pending = cells_to_run(sweeps, results_dir, forced)
+        plan = write_plan(sweeps, results_dir, pending, forced)
+    except OSError as e:
+        code = not_written(e, results_dir)
+        outcome.final_line(None, [])
+        return code
     done = sum((results_dir / c.file).exists() for c in cells.values())
     print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a finished "
           f"result file in {results_dir}, " +
           ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
+    tables = [results_dir / "sweeps" / s.name / "cells.csv" for s in sweeps]
+    before = outcome.stamps(tables)
     start = time.monotonic()
-    status = run_snakemake(snakemake_command(plan, results_dir, args))
-    wall = time.monotonic() - start
-    print(f"sweep: {wall:.1f} s wall time; tables: " +
-          ", ".join(str(results_dir / "sweeps" / s.name / "cells.csv") for s in sweeps), flush=True)
-    return status
-
+    try:
+        status, messages = run_snakemake(snakemake_command(plan, results_dir, args))
+        code = outcome.OK
+        if status != 0:   # a cell's file appears only verified: existing means finished
+            missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
+            code = outcome.failed(status, messages, results_dir, missing)
+    except outcome.Interrupted as stop:
+        code = outcome.say_interrupted(stop.signum)
+    outcome.final_line(time.monotonic() - start, outcome.tables_written(before, tables))
+    return code
 
 if __name__ == "__main__":
     sys.exit(main())
