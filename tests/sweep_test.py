@@ -198,8 +198,11 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
 def file_state(path):
     """What a rerun of the cell would change: the inode (a new file is renamed into place), the
     modification time and the bytes (host-time fields differ between runs)."""
-    status = path.stat()
-    return status.st_ino, status.st_mtime_ns, path.read_bytes()
+    try:
+        status = path.stat()
+        return status.st_ino, status.st_mtime_ns, path.read_bytes()
+    except OSError:
+        return None
 
 
 def jobs_run(log, cell):
@@ -237,6 +240,7 @@ def test_kill_and_resume(work):
     check(reached and (results_dir / quick.file).exists() and seen["running"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
     kept = file_state(results_dir / quick.file)
+    check(kept is not None, "the stopped cell's file is still there")
     left = processes_mentioning(str(results_dir))
     check(not left, f"a killed sweep leaves no simulation or job running ({left[:1]})")
     check(not (results_dir / slow.file).exists() and
