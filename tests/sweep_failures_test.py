@@ -5,6 +5,7 @@ system each give one plain line saying what happened and what to do, their docum
 code, and a last line naming only the tables written; finished cells stay valid and the same
 command completes the sweep afterwards. The instants are driven (ncube.run_cell's test pause),
 not raced."""
+import io
 import os
 import signal
 import subprocess
@@ -15,7 +16,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import results, sweep  # noqa: E402
+from ncube import outcome, results, sweep  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
 SIMULATE = os.path.abspath(os.environ.get("NCUBE_SIMULATE") or ROOT / "simulate")
@@ -73,7 +74,8 @@ def test_folder_in_use(work):
                                               f"({second.returncode})")
     check(plain_lines(second) == [f"sweep: {results_dir} is in use by another sweep (process "
                                   f"{first.pid}): wait for it to end or stop it, then run this "
-                                  f"command again"], f"one plain line says so ({second.stderr[-300:]})")
+                                  f"command again"],
+          f"one plain line says so ({second.stderr[-300:]})")
     check(last_line(second).endswith("written: no table") and "Snakemake" not in second.stderr,
           f"nothing else is said or written ({last_line(second)})")
     check((results_dir / "plan.json").read_bytes() == plan,
@@ -136,7 +138,8 @@ def full_disk_inside(folder):
     done = run_sweep(folder / "full.yaml", "--results", results_dir)
     check(done.returncode == 5, f"a full file system: exit 5 ({done.returncode})")
     said = plain_lines(done)
-    check(len(said) == 1 and said[0].startswith(f"sweep: the file system of {results_dir} is full (")
+    check(len(said) == 1 and
+          said[0].startswith(f"sweep: the file system of {results_dir} is full (")
           and said[0].endswith("KiB free): finished cells are kept; free some space and run the "
                                "same command again"), f"one plain line says so ({said[:1]})")
     check("Traceback" not in done.stderr and "Logging error" not in done.stderr,
@@ -171,13 +174,41 @@ def test_full_disk(work):
     check(done.returncode == 0, f"the full-disk case ran ({done.stderr[-300:]})")
 
 
+def test_logging_tracebacks_dropped(_work):
+    """Snakemake's logging on a full disk prints Python's "--- Logging error ---" blocks (a
+    traceback, the call stack, the message): the sweep does not pass them on, but notes the
+    full disk; the lines around them are passed on unchanged."""
+    script = ("import errno, logging, sys\n"
+              "class Full:\n"
+              "    def write(self, text):\n"
+              "        raise OSError(errno.ENOSPC, 'No space left on device')\n"
+              "    def flush(self):\n"
+              "        pass\n"
+              "logging.getLogger().addHandler(logging.StreamHandler(Full()))\n"
+              "print('before', file=sys.stderr, flush=True)\n"
+              "logging.getLogger().error('a job finished')\n"
+              "print('after', file=sys.stderr, flush=True)\n")
+    process = subprocess.Popen([sys.executable, "-c", script], stderr=subprocess.PIPE)
+    captured, saved = io.StringIO(), sys.stderr
+    sys.stderr = captured
+    try:
+        messages = outcome.SnakemakeMessages(process.stderr)
+        process.wait(timeout=60)
+        messages.wait()
+    finally:
+        sys.stderr = saved
+    check(captured.getvalue() == "before\nafter\n" and messages.full,
+          f"logging tracebacks are not passed on, the full disk is noted ({captured.getvalue()!r})")
+
+
 def main():
     if sys.argv[1:2] == ["--full-disk-inside"]:
         return full_disk_inside(sys.argv[2])
     os.environ["NCUBE_SIMULATE"] = SIMULATE
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-failures-") as folder:
         work = Path(folder)
-        for test in (test_folder_in_use, test_cell_failing, test_full_disk):
+        for test in (test_logging_tracebacks_dropped, test_folder_in_use, test_cell_failing,
+                     test_full_disk):
             print(f"-- {test.__name__}", flush=True)
             test(work)
     print(f"sweep_failures_test: {len(failures)} failure(s)")

@@ -181,7 +181,8 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
                                                              in pauses.items()),
                        NCUBE_TEST_PAUSE_DIR=str(signals_dir))
     process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir)],
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=environment)
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               env=environment)
     deadline = time.monotonic() + 240
     while (not all((signals_dir / point).exists() for point in pauses) and
            process.poll() is None and time.monotonic() < deadline):

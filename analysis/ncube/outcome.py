@@ -48,6 +48,9 @@ def hold_folder(results_dir):
 
 
 def free_bytes(folder):
+    folder = Path(folder)
+    while not folder.exists() and folder != folder.parent:   # not made: its file system
+        folder = folder.parent
     status = os.statvfs(folder)
     return status.f_bavail * status.f_frsize
 
@@ -118,7 +121,9 @@ def failed(status, messages, results_dir, missing):
     if messages.full or free_bytes(results_dir) < LOW_SPACE:
         return say_full(results_dir)
     if missing:
-        shown = ", ".join(missing[:5]) + (f" and {len(missing) - 5} more" if len(missing) > 5 else "")
+        shown = ", ".join(missing[:5])
+        if len(missing) > 5:
+            shown += f" and {len(missing) - 5} more"
         say(f"{len(missing)} cell(s) failed: {shown}; their messages are above and in {log}; "
             f"the other cells finished and are kept; fix the cause and run the same command again")
         return CELLS_FAILED

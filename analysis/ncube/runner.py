@@ -66,8 +66,8 @@ def cells_to_run(sweeps, results_dir, rerun_all=False):
     other file aside first). A cell that is not to run is no job's output, so Snakemake's own
     bookkeeping (an incomplete mark left by a stop at any instant, a touch, the deletion of a
     failed job's outputs) can neither run it again nor delete its file. A sweep's table is made
-    again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or --forcerun asked
-    for) hands every cell to Snakemake, which then decides."""
+    again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or
+    --forcerun asked for) hands every cell to Snakemake, which then decides."""
     cells = list({c.id: c for s in sweeps for c in s.cells}.values())
     discard_unfinished(cells, results_dir)
     missing = {c.file for c in cells if not (Path(results_dir) / c.file).exists()}
