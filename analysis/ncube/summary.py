@@ -146,7 +146,12 @@ def main():
     plan, name = sys.argv[1], sys.argv[2]
     for document in json.loads(Path(plan).read_text())["sweeps"]:
         if document["name"] == name:
-            csv_path, figures = summarize(Sweep.from_dict(document))
+            try:
+                csv_path, figures = summarize(Sweep.from_dict(document))
+            except OSError as e:   # a full disk: one line, the sweep says what to do
+                print(f"summary: sweep {name}: {e.filename or 'its table and plots'} cannot be "
+                      f"written: {e.strerror or e}", file=sys.stderr)
+                return 5
             print(f"{name}: {csv_path} and {len(figures)} plots")
             return 0
     raise SystemExit(f"summary: no sweep {name!r} in {plan}")
