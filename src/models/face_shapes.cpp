@@ -10,16 +10,35 @@
 namespace ncube::models {
 namespace {
 
+// The corners scaled by the power of two that brings their largest coordinate into [0.5, 1):
+// exact in floating point, so every test below decides as it would on the corners as given,
+// but no product of two to four lengths (a normal's dot product) underflows or overflows
+// whatever the model's units and --scale (a face of 1e-88 has normals' dot products near
+// 1e-350, which are 0 in doubles). The faces' points themselves are never changed.
+std::vector<Point> in_face_units(const std::vector<Point>& corners) {
+  double largest = 0.0;
+  for (const Point& p : corners)
+    largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  int exponent = 0;
+  if (largest > 0.0 && std::isfinite(largest)) std::frexp(largest, &exponent);
+  std::vector<Point> scaled;
+  scaled.reserve(corners.size());
+  for (const Point& p : corners)
+    scaled.emplace_back(std::ldexp(p.x, -exponent), std::ldexp(p.y, -exponent), std::ldexp(p.z, -exponent));
+  return scaled;
+}
+
 // Ear clipping in the face's best plane: triangles in the face's own winding, for faces that
 // are concave, bent or have more than four corners.
 std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
-  const Point normal = newell(corners);
+  const std::vector<Point> unit = in_face_units(corners);
+  const Point normal = newell(unit);
   const Point n = normal / norm(normal);
   const Point u = glm::normalize(std::fabs(n.x) < 0.9 ? glm::cross(n, Point(1, 0, 0))
                                                         : glm::cross(n, Point(0, 1, 0)));
   const Point v = glm::cross(n, u);
   std::vector<glm::dvec2> flat;
-  for (const Point& p : corners) flat.emplace_back(glm::dot(p, u), glm::dot(p, v));
+  for (const Point& p : unit) flat.emplace_back(glm::dot(p, u), glm::dot(p, v));
   const auto cross2 = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   };
@@ -83,7 +102,8 @@ Point newell(const std::vector<Point>& corners) {
   return n;
 }
 
-bool planar_convex_quad(const std::vector<Point>& q) {
+bool planar_convex_quad(const std::vector<Point>& corners) {
+  const std::vector<Point> q = in_face_units(corners);
   const double d = diameter(q);
   const Point n = glm::cross(q[1] - q[0], q[2] - q[0]);
   if (norm(n) <= 2 * kFlat * d * d) return false;
@@ -101,14 +121,18 @@ bool planar_convex_quad(const std::vector<Point>& q) {
 // box's bent wall); other faces by ear clipping.
 std::vector<std::vector<Point>> split(const std::vector<Point>& corners) {
   if (corners.size() == 4) {
-    const Point n = newell(corners);
-    const std::vector<Point> a{corners[0], corners[1], corners[2]}, b{corners[2], corners[3], corners[0]};
-    if (glm::dot(newell(a), n) > 0.0 && glm::dot(newell(b), n) > 0.0) return {a, b};
+    const std::vector<Point> q = in_face_units(corners);
+    const Point n = newell(q);
+    const bool a_faces = glm::dot(newell({q[0], q[1], q[2]}), n) > 0.0;
+    const bool b_faces = glm::dot(newell({q[2], q[3], q[0]}), n) > 0.0;
+    if (a_faces && b_faces)
+      return {{corners[0], corners[1], corners[2]}, {corners[2], corners[3], corners[0]}};
   }
   return triangulate(corners);
 }
 
-bool flat(const std::vector<Point>& polygon) {
+bool flat(const std::vector<Point>& corners) {
+  const std::vector<Point> polygon = in_face_units(corners);
   const double d = diameter(polygon);
   return d == 0.0 || 0.5 * norm(newell(polygon)) <= kFlat * d * d;
 }
