@@ -28,9 +28,9 @@ std::vector<Point> in_face_units(const std::vector<Point>& corners) {
   return scaled;
 }
 
-// Ear clipping in the face's best plane: triangles in the face's own winding, for faces that
-// are concave, bent or have more than four corners.
-std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
+// A face's corners projected on its best plane (Newell's normal), in the face's own units:
+// where ear clipping and the crossing test work.
+std::vector<glm::dvec2> in_best_plane(const std::vector<Point>& corners) {
   const std::vector<Point> unit = in_face_units(corners);
   const Point normal = newell(unit);
   const Point n = normal / norm(normal);
@@ -38,10 +38,20 @@ std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
                                                         : glm::cross(n, Point(0, 1, 0)));
   const Point v = glm::cross(n, u);
   std::vector<glm::dvec2> flat;
+  flat.reserve(unit.size());
   for (const Point& p : unit) flat.emplace_back(glm::dot(p, u), glm::dot(p, v));
-  const auto cross2 = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  };
+  return flat;
+}
+
+double cross2(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Ear clipping in the face's best plane: triangles in the face's own winding, for faces that
+// are concave, bent or have more than four corners. Each step clips the first corner, in the
+// face's order, that is convex with no other remaining corner in its (closed) triangle.
+std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
+  const std::vector<glm::dvec2> flat = in_best_plane(corners);
   std::vector<std::size_t> left(corners.size());
   for (std::size_t i = 0; i < left.size(); ++i) left[i] = i;
   std::vector<std::vector<Point>> triangles;
@@ -52,18 +62,18 @@ std::vector<std::vector<Point>> triangulate(const std::vector<Point>& corners) {
                         c = left[(k + 1) % left.size()];
       if (cross2(flat[a], flat[b], flat[c]) <= 0) continue;  // reflex (or straight) corner
       bool inside = false;
-      for (std::size_t p : left) {
+      for (std::size_t i = 0; i < left.size() && !inside; ++i) {
+        const std::size_t p = left[i];
         if (p == a || p == b || p == c) continue;
-        if (cross2(flat[a], flat[b], flat[p]) >= 0 && cross2(flat[b], flat[c], flat[p]) >= 0 &&
-            cross2(flat[c], flat[a], flat[p]) >= 0)
-          inside = true;
+        inside = cross2(flat[a], flat[b], flat[p]) >= 0 && cross2(flat[b], flat[c], flat[p]) >= 0 &&
+                 cross2(flat[c], flat[a], flat[p]) >= 0;
       }
       if (inside) continue;
       triangles.push_back({corners[a], corners[b], corners[c]});
       left.erase(left.begin() + std::ptrdiff_t(k));
       clipped = true;
     }
-    if (!clipped) {  // a self-intersecting outline: a fan keeps what can be kept
+    if (!clipped) {  // an outline that touches itself: a fan keeps what can be kept
       for (std::size_t k = 1; k + 1 < left.size(); ++k)
         triangles.push_back({corners[left[0]], corners[left[k]], corners[left[k + 1]]});
       return triangles;
@@ -129,6 +139,22 @@ std::vector<std::vector<Point>> split(const std::vector<Point>& corners) {
       return {{corners[0], corners[1], corners[2]}, {corners[2], corners[3], corners[0]}};
   }
   return triangulate(corners);
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> crossing_edges(const std::vector<Point>& corners) {
+  const std::vector<glm::dvec2> flat = in_best_plane(corners);
+  const std::size_t n = flat.size();
+  const auto opposite = [](double a, double b) { return (a > 0 && b < 0) || (a < 0 && b > 0); };
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec2 p = flat[i], q = flat[(i + 1) % n];
+    // Edges i and j > i + 1, but not the last with the first (they share corner 0).
+    for (std::size_t j = i + 2; j < n && !(i == 0 && j == n - 1); ++j) {
+      const glm::dvec2 r = flat[j], s = flat[(j + 1) % n];
+      if (opposite(cross2(p, q, r), cross2(p, q, s)) && opposite(cross2(r, s, p), cross2(r, s, q)))
+        return std::pair{i, j};
+    }
+  }
+  return std::nullopt;
 }
 
 bool flat(const std::vector<Point>& corners) {

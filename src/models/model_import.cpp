@@ -153,6 +153,10 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       if (face.mNumIndices < 3)
         throw InputError(at + ": " + std::to_string(face.mNumIndices) +
                          " corners (points and lines are not surfaces)");
+      if (face.mNumIndices > kMaxFaceCorners)
+        throw InputError(at + ": " + std::to_string(face.mNumIndices) + " corners, more than " +
+                         std::to_string(kMaxFaceCorners) + " (the limit; triangulate it in the "
+                         "modelling tool)");
       std::vector<Point> corners;
       Point colour(0.0);
       for (unsigned k = 0; k < face.mNumIndices; ++k) {
@@ -179,12 +183,22 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
             throw InputError(at + (face_colours.empty() ? ": vertex colour " : ": face colour ") + show(colour) +
                              ": each channel must be in [0, 1) (a white of 255 is 1)");
       }
-      if (options.flip_faces != mirrored) std::reverse(corners.begin(), corners.end());
+      // The face's corner numbers as the file gives them, for messages.
+      std::vector<unsigned> number(corners.size());
+      for (unsigned k = 0; k < number.size(); ++k) number[k] = k;
+      if (options.flip_faces != mirrored) {
+        std::reverse(corners.begin(), corners.end());
+        std::reverse(number.begin(), number.end());
+      }
       // Repeated corners (consecutive, within kSame of the face's size) are one corner.
       const double d = diameter(corners);
       std::vector<Point> distinct;
-      for (const Point& p : corners)
-        if (distinct.empty() || norm(p - distinct.back()) > kSame * d) distinct.push_back(p);
+      std::vector<unsigned> distinct_number;
+      for (std::size_t k = 0; k < corners.size(); ++k)
+        if (distinct.empty() || norm(corners[k] - distinct.back()) > kSame * d) {
+          distinct.push_back(corners[k]);
+          distinct_number.push_back(number[k]);
+        }
       while (distinct.size() > 1 && norm(distinct.front() - distinct.back()) <= kSame * d)
         distinct.pop_back();
       if (distinct.size() < 3 || flat(distinct)) {
@@ -194,6 +208,17 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       if (distinct.size() == 3 || (distinct.size() == 4 && planar_convex_quad(distinct))) {
         patches.push_back({distinct, this_face});
         continue;
+      }
+      // A face whose outline crosses itself (a pentagram) has no one inside: refused rather
+      // than cut into pieces that overlap and face both ways.
+      if (const auto crossing = crossing_edges(distinct)) {
+        const auto edge = [&](std::size_t i) {
+          return std::to_string(distinct_number[i]) + "-" +
+                 std::to_string(distinct_number[(i + 1) % distinct.size()]);
+        };
+        throw InputError(at + ": self-intersecting face: its edges between corners " +
+                         edge(crossing->first) + " and " + edge(crossing->second) +
+                         " cross (corners counted from 0; split it into simple polygons)");
       }
       ++summary.split;
       for (std::vector<Point>& triangle : split(distinct))
