@@ -16,6 +16,7 @@
 #include "models/element_grid.h"
 #include "models/face_shapes.h"
 #include "models/gltf_extras.h"
+#include "models/json_nesting.h"
 #include "models/model_material.h"
 #include "models/mtl_file.h"
 #include "models/ply_file.h"
@@ -63,6 +64,8 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     throw InputError("--scale: must be from 1e-100 to 1e100");
 
   if (lower_extension(path) == ".ply") check_ply_length(path);
+  if (lower_extension(path) == ".gltf" || lower_extension(path) == ".glb")
+    check_gltf_nesting(path, lower_extension(path) == ".glb");
   Assimp::Importer importer;
   std::vector<std::string> missing, too_large;
   importer.SetIOHandler(new RecordingIOSystem(summary.files, missing, too_large,
