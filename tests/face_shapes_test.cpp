@@ -123,6 +123,21 @@ TEST_F(FaceFile, PentagramIsRefusedNamingTheFace) {
                                   "counted from 0; split it into simple polygons)");
 }
 
+// A bow-tie of two equal halves has no net area, so no plane to find crossings in; its corners
+// span the plane z = 0 (each half 1/4): refused, where a face of collinear corners is dropped.
+TEST_F(FaceFile, SymmetricBowTieIsRefusedAndALineDropped) {
+  const std::string path = write({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}, "1 2 3 4");
+  EXPECT_EQ(refusal(path), path + ": mesh 0 \"star\", material \"lamp\", face 0: self-intersecting "
+                                  "face: its 4 corners span a plane but enclose no net area (a "
+                                  "bow-tie of two equal halves; split it into simple polygons)");
+  std::ofstream(dir / "b.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\n"
+                                  "usemtl lamp\nf 1 2 3\nf 1 2 4 5\n";
+  ImportSummary summary;
+  import_model((dir / "b.obj").string(), {}, summary);
+  EXPECT_EQ(summary.degenerate, 1);  // the four corners on a line
+  EXPECT_EQ(summary.patches, 1);
+}
+
 TEST_F(FaceFile, SimpleStarImportsWithItsArea) {
   std::vector<Point> star;
   std::string face;

@@ -157,6 +157,14 @@ std::optional<std::pair<std::size_t, std::size_t>> crossing_edges(const std::vec
   return std::nullopt;
 }
 
+bool spans_plane(const std::vector<Point>& corners) {
+  const std::vector<Point> q = in_face_units(corners);
+  const double d = diameter(q);
+  for (std::size_t i = 1; i + 1 < q.size(); ++i)
+    if (0.5 * norm(glm::cross(q[i] - q[0], q[i + 1] - q[0])) > kSpan * d * d) return true;
+  return false;
+}
+
 bool flat(const std::vector<Point>& corners) {
   const std::vector<Point> polygon = in_face_units(corners);
   const double d = diameter(polygon);

@@ -42,6 +42,11 @@ bool planar_convex_quad(const std::vector<Point>& q);
 std::optional<std::pair<std::size_t, std::size_t>> crossing_edges(const std::vector<Point>& corners);
 // Triangles, in the face's own winding, of a face that is not kept as it is.
 std::vector<std::vector<Point>> split(const std::vector<Point>& corners);
+// Whether a face whose net area is flat still has corners that span a plane: some triangle of
+// corner 0 and two consecutive corners has an area over kSpan of the diameter squared. Such
+// a face folds over itself (a bow-tie of two equal halves), which is no degenerate face.
+constexpr double kSpan = 1e-6;
+bool spans_plane(const std::vector<Point>& corners);
 // Whether a polygon's area is at most kFlat of its diameter squared (degenerate).
 bool flat(const std::vector<Point>& polygon);
 

@@ -205,6 +205,10 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       while (distinct.size() > 1 && norm(distinct.front() - distinct.back()) <= kSame * d)
         distinct.pop_back();
       if (distinct.size() < 3 || flat(distinct)) {
+        if (distinct.size() >= 4 && spans_plane(distinct))
+          throw InputError(at + ": self-intersecting face: its " + std::to_string(distinct.size()) +
+                           " corners span a plane but enclose no net area (a bow-tie of two equal "
+                           "halves; split it into simple polygons)");
         ++summary.degenerate;
         continue;
       }
