@@ -1,6 +1,12 @@
 #include "simulation/actor_exceptions.h"
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <new>
+
 #include <simgrid/s4u/Actor.hpp>
+#include <xbt/config.hpp>
 
 namespace ncube {
 
@@ -20,6 +26,17 @@ std::function<void()> ActorExceptions::guard(std::function<void()> body) {
       simgrid::s4u::Actor::kill_all();  // the others would wait forever for this one
     }
   };
+}
+
+void ActorExceptions::check_stacks(std::size_t actors) {
+  // Each stack: contexts/stack-size KiB and contexts/guard-size pages, allocated by SimGrid
+  // through malloc's posix_memalign, which reuses what is freed here.
+  const std::size_t stack = std::size_t(simgrid::config::get_value<int>("contexts/stack-size")) * 1024 +
+                            std::size_t(simgrid::config::get_value<int>("contexts/guard-size") + 1) *
+                                std::size_t(sysconf(_SC_PAGESIZE));
+  void* probe = std::malloc(actors * stack);
+  if (!probe) throw std::bad_alloc();
+  std::free(probe);
 }
 
 void ActorExceptions::rethrow_first() const {

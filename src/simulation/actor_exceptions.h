@@ -6,6 +6,7 @@
 // caller rethrows it, so it reaches main() like any exception outside the run.
 #pragma once
 
+#include <cstddef>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -19,6 +20,10 @@ class ActorExceptions {
   // own ForcefulKillException, which kills an actor, is not one and passes) is kept and ends
   // the simulation.
   std::function<void()> guard(std::function<void()> body);
+  // Throws std::bad_alloc when the host cannot hold the stacks of `actors` more actors:
+  // SimGrid ends the process (xbt_die, exit 134) when it cannot allocate an actor's stack, so
+  // the memory is asked for, and given back, before the actors are created.
+  static void check_stacks(std::size_t actors);
   // Rethrows the first kept exception, if there is one; call after Engine::run returned.
   void rethrow_first() const;
 

@@ -38,6 +38,7 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
   build_host_machinery(programs.host, scene, patch_sets, setup.options, V, R, setup.block_size,
                        setup.loads_change());
   const OccluderSet* all = V == 0 ? programs.host.occluders.front().get() : nullptr;
+  ActorExceptions::check_stacks(std::size_t(R) * std::size_t(V + 1));
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];

@@ -56,6 +56,7 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
       }
   std::deque<NodeRuntime> runtimes;
   std::deque<RenderProcessor> programs;
+  ActorExceptions::check_stacks(std::size_t(N));
   ActorExceptions exceptions;  // a program's exception (the host out of memory), rethrown
   for (int node = 0; node < N; ++node) {
     const bool radiosity = node % (V + 1) == 0;
