@@ -1,10 +1,10 @@
 // Host time of importing large models (a reported figure, not a test; docs/scene-format.md,
 // "Importing models"): an OBJ grid of bumpy triangles (no two make a planar quad, so every
-// triangle looks for a partner) with and without --merge-coplanar, by size, to show the merge
-// linear in the triangles (it was quadratic: 40,000 triangles 58 s); and one face of n corners
+// triangle looks for a partner) with and without --merge-coplanar, and the merge alone, by
+// size, to show the merge O(n log n) in the triangles (it was quadratic: 40,000 triangles 58 s); and one face of n corners
 // (a convex ring and a comb, ear clipping's easy and hard cases) up to the limit of 1,024, whose
 // cost grows with n^2. The models are written to a temporary folder, not kept.
-// Run: build/benchmarks --benchmark_filter=Import
+// Run: build/benchmarks --benchmark_filter='Import|MergeCoplanar'
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -15,6 +15,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "models/coplanar_merge.h"
 #include "models/face_shapes.h"
 #include "models/model_import.h"
 
@@ -100,5 +101,35 @@ void ImportFace(benchmark::State& state, bool comb) {
 }
 BENCHMARK_CAPTURE(ImportFace, ring, false)->RangeMultiplier(2)->Range(128, 1024)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ImportFace, comb, true)->RangeMultiplier(2)->Range(128, 1022)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+// The merge alone on the bumpy grid's triangles (no file, no Assimp): linear in the triangles.
+void MergeCoplanar(benchmark::State& state) {
+  const int n = int(state.range(0));
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> height(0.0, 1.0);
+  std::vector<ncube::models::Point> corner;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) corner.emplace_back(x, height(random), y);
+  std::vector<ncube::models::ImportedPatch> patches;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const auto a = corner[std::size_t(y * (n + 1) + x)], b = corner[std::size_t(y * (n + 1) + x + 1)],
+                 c = corner[std::size_t((y + 1) * (n + 1) + x + 1)], d = corner[std::size_t((y + 1) * (n + 1) + x)];
+      patches.push_back({{a, d, c}, {}});
+      patches.push_back({{a, c, b}, {}});
+    }
+  for (auto _ : state) {
+    long pairs = 0;
+    benchmark::DoNotOptimize(ncube::models::merge_coplanar(patches, pairs));
+  }
+  state.counters["triangles"] = double(patches.size());
+  state.counters["ns_per_triangle"] =
+      benchmark::Counter(double(patches.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(MergeCoplanar)->Arg(100)->Arg(141)->Arg(245)->Arg(490)->Unit(benchmark::kMillisecond);
 
 }  // namespace
