@@ -3,7 +3,9 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <memory>
 #include <new>
+#include <vector>
 
 #include <simgrid/s4u/Actor.hpp>
 #include <xbt/config.hpp>
@@ -34,9 +36,14 @@ void ActorExceptions::check_stacks(std::size_t actors) {
   const std::size_t stack = std::size_t(simgrid::config::get_value<int>("contexts/stack-size")) * 1024 +
                             std::size_t(simgrid::config::get_value<int>("contexts/guard-size") + 1) *
                                 std::size_t(sysconf(_SC_PAGESIZE));
-  void* probe = std::malloc(actors * stack);
-  if (!probe) throw std::bad_alloc();
-  std::free(probe);
+  // One block per stack, as SimGrid allocates them (one block of all would be refused by the
+  // kernel's overcommit heuristic on a large platform where the stacks one by one are not).
+  std::vector<std::unique_ptr<void, decltype(&std::free)>> probes;
+  probes.reserve(actors);
+  for (std::size_t k = 0; k < actors; ++k) {
+    probes.emplace_back(std::malloc(stack), &std::free);
+    if (!probes.back()) throw std::bad_alloc();
+  }
 }
 
 void ActorExceptions::rethrow_first() const {
