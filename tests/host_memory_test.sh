@@ -9,6 +9,7 @@
 # Lower limits fail where SimGrid allocates the actors' stacks, which SimGrid itself turns into
 # an abort: the stacks' memory is asked for first (ActorExceptions::check_stacks), so these
 # too are exit 6.
+# THREADS=N runs with N host threads (default 1).
 # Usage: bash tests/host_memory_test.sh <path-to-simulate-binary> <repo-root>
 set -euo pipefail
 simulate="$1"
@@ -21,7 +22,7 @@ export NCUBE_ROOT="$root"
 # Exit code of the run under a limit of $1 KiB; its stderr in $work/err.
 run() {
   set +e
-  (ulimit -v "$1"; "$simulate" "$root/scenes/scene0.json" --R 4 --V 3 --threads 1 --quiet \
+  (ulimit -v "$1"; "$simulate" "$root/scenes/scene0.json" --R 4 --V 3 --threads "${THREADS:-1}" --quiet \
      --trace "$work/out/t.trace" --json "$work/out/r.json" 2> "$work/err")
   local code=$?
   set -e
