@@ -1,4 +1,4 @@
-// Faces of a model (src/models/face_shapes.h, model_import.h): a self-intersecting outline is
+// Faces' outlines (src/models/face_shapes.h, model_import.h): a self-intersecting outline is
 // refused naming the face and the two edges that cross; a simple star of the same corners is
 // cut into triangles that cover its area, worked out from the star's radii; faces over the
 // corner limit are refused.
@@ -34,7 +34,7 @@ double triangle_area(const std::vector<Point>& t) {
   return 0.5 * (e.x * f.y - e.y * f.x);  // signed, seen from +z
 }
 
-TEST(FaceShapes, PentagramEdgesCross) {
+TEST(FaceOutline, PentagramEdgesCross) {
   // Corners 0, 2, 4, 1, 3 of the pentagon: its first edge (top to lower left) crosses its
   // third (upper right to upper left, the horizontal at y = sin 18), the first pair found.
   const std::vector<Point> pentagram{outer(0), outer(2), outer(4), outer(1), outer(3)};
@@ -50,7 +50,7 @@ TEST(FaceShapes, PentagramEdgesCross) {
                    .has_value());
 }
 
-TEST(FaceShapes, SimpleStarIsCutIntoItsArea) {
+TEST(FaceOutline, SimpleStarIsCutIntoItsArea) {
   std::vector<Point> star;
   for (int k = 0; k < 5; ++k) {
     star.push_back(outer(k));
@@ -74,7 +74,7 @@ TEST(FaceShapes, SimpleStarIsCutIntoItsArea) {
 // A C: the ear at corner 0, (0,3)-(0,0)-(3,0), would hold the notch's corners (1,1) and (1,2):
 // cut there, the triangles would overlap and cover the notch. The C is 3 x 3 less the 2 x 1
 // notch, area 7, cut into 6 triangles that all face its way.
-TEST(FaceShapes, ConcaveFaceIsCutWithoutOverlap) {
+TEST(FaceOutline, ConcaveFaceIsCutWithoutOverlap) {
   const std::vector<Point> c{{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0},
                              {1, 2, 0}, {3, 2, 0}, {3, 3, 0}, {0, 3, 0}};
   const auto triangles = models::split(c);
@@ -87,11 +87,11 @@ TEST(FaceShapes, ConcaveFaceIsCutWithoutOverlap) {
   EXPECT_DOUBLE_EQ(total, 7.0);
 }
 
-struct FaceFile : testing::Test {
+struct FaceOutlineFile : testing::Test {
   fs::path dir;
   void SetUp() override {
     dir = fs::path(testing::TempDir()) /
-          ("face_file_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+          ("face_outline_file_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir);
     std::ofstream(dir / "m.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
   }
@@ -116,7 +116,7 @@ struct FaceFile : testing::Test {
   }
 };
 
-TEST_F(FaceFile, PentagramIsRefusedNamingTheFace) {
+TEST_F(FaceOutlineFile, PentagramIsRefusedNamingTheFace) {
   const std::string path = write({outer(0), outer(1), outer(2), outer(3), outer(4)}, "1 3 5 2 4");
   EXPECT_EQ(refusal(path), path + ": mesh 0 \"star\", material \"lamp\", face 0: self-intersecting "
                                   "face: its edges between corners 0-1 and 2-3 cross (corners "
@@ -125,7 +125,7 @@ TEST_F(FaceFile, PentagramIsRefusedNamingTheFace) {
 
 // A bow-tie of two equal halves has no net area, so no plane to find crossings in; its corners
 // span the plane z = 0 (each half 1/4): refused, where a face of collinear corners is dropped.
-TEST_F(FaceFile, SymmetricBowTieIsRefusedAndALineDropped) {
+TEST_F(FaceOutlineFile, SymmetricBowTieIsRefusedAndALineDropped) {
   const std::string path = write({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}, "1 2 3 4");
   EXPECT_EQ(refusal(path), path + ": mesh 0 \"star\", material \"lamp\", face 0: self-intersecting "
                                   "face: its 4 corners span a plane but enclose no net area (a "
@@ -138,7 +138,7 @@ TEST_F(FaceFile, SymmetricBowTieIsRefusedAndALineDropped) {
   EXPECT_EQ(summary.patches, 1);
 }
 
-TEST_F(FaceFile, SimpleStarImportsWithItsArea) {
+TEST_F(FaceOutlineFile, SimpleStarImportsWithItsArea) {
   std::vector<Point> star;
   std::string face;
   for (int k = 0; k < 5; ++k) {
@@ -160,7 +160,7 @@ TEST_F(FaceFile, SimpleStarImportsWithItsArea) {
 }
 
 // A regular polygon of n corners has area n sin(2 pi / n) / 2; 1024 corners are cut, 1025 refused.
-TEST_F(FaceFile, CornerLimit) {
+TEST_F(FaceOutlineFile, CornerLimit) {
   for (unsigned n : {models::kMaxFaceCorners, models::kMaxFaceCorners + 1}) {
     std::vector<Point> ring;
     std::string face;
