@@ -1,13 +1,14 @@
 #include "machine/simgrid_platform_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/NetZone.hpp>
 
 #include "machine/simgrid_session.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -25,10 +26,35 @@ double node_property(const std::string& path, simgrid::s4u::Host* host, const ch
   return value;
 }
 
+// "line <n>: <name>=" of the first attribute named `file` or `*_file` with a value, or "".
+// A plain scan, not std::regex: its recursion would overflow the stack on a large file.
+std::string file_attribute(const std::string& text) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find("file"); at != std::string::npos;
+       at = text.find("file", at + 1)) {
+    std::size_t begin = at;
+    while (begin > 0 && word(text[begin - 1])) --begin;
+    const bool named = begin == at || text[at - 1] == '_';  // "file" or "..._file"
+    if (!named || begin == 0 ||
+        !(std::isspace(static_cast<unsigned char>(text[begin - 1])) || text[begin - 1] == '<'))
+      continue;
+    std::size_t after = at + 4;
+    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= text.size() || text[after] != '=') continue;
+    ++after;
+    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= text.size() || (text[after] != '"' && text[after] != '\'')) continue;
+    const long line = long(std::count(text.begin(), text.begin() + long(at), '\n')) + 1;
+    return "line " + std::to_string(line) + ": " + text.substr(begin, at + 4 - begin) + "=";
+  }
+  return "";
+}
+
 }  // namespace
 
 bool is_simgrid_platform_file(const std::string& path) {
-  std::ifstream in(path);
+  // Either kind of platform file, up to the larger limit: only its first character is read.
+  InputStream in(path, InputKind{kPlatformFile.what, kSimgridPlatformFile.max_bytes});
   char c = 0;
   while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
   }
@@ -38,8 +64,18 @@ bool is_simgrid_platform_file(const std::string& path) {
 PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments) {
   simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
+  // SimGrid reads the descriptor the gate opened and checked, not the path again.
+  InputFile file(path, kSimgridPlatformFile);
+  // SimGrid would open the files an XML platform names (a host's speed_file, a link's
+  // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
+  const std::string text = file.read_all();
+  const std::string attribute = file_attribute(text);
+  if (!attribute.empty())
+    throw InputError(path + ": " + attribute +
+                     ": names a file, which SimGrid would read outside the input gate (files "
+                     "a platform names are not read: docs/cli.md, \"Input files\")");
   try {
-    engine.load_platform(path);
+    engine.load_platform(file.descriptor_path());
   } catch (const std::exception& e) {
     throw InputError(path + ": not a SimGrid platform file: " + e.what());
   }

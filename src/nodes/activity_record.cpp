@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -66,8 +67,7 @@ void ActivityRecord::write(const std::string& path) const {
 }
 
 ActivityRecord ActivityRecord::read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read the activity record");
+  InputStream in(path, kActivityRecord);
   char header[sizeof kHeader - 1];
   if (!in.read(header, sizeof header) || std::memcmp(header, kHeader, sizeof header) != 0)
     throw std::runtime_error(path + ": not an activity record (no \"ncube-activities 1\" line)");

@@ -94,6 +94,16 @@ int simulate(int argc, char** argv) {
   const ncube::PlatformConfig platform =
       ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
+  std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
+  for (const std::string& file : imported.files)
+    if (file != options.scene_file) scene_parts.push_back(file);
+  const ncube::RunInputs inputs{options.command_line, options.scene_file,
+                                options.config.platform_file, options.config.cost_model_file,
+                                scene_parts};
+  if (options.list_inputs) {
+    std::cout << ncube::input_listing(inputs, platform).dump(1) << "\n";
+    return ncube::kExitOk;
+  }
   ncube::check_configuration(scene, options.config, platform);
   ncube::OutputFiles outputs({{"--json", options.json_file},
                               {"--trace", options.trace_file},
@@ -115,13 +125,7 @@ int simulate(int argc, char** argv) {
       ncube::run_simulation(scene, options.config, platform, costs);
   progress.reset();
   nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
-  std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
-  for (const std::string& file : imported.files)
-    if (file != options.scene_file) scene_parts.push_back(file);
-  result_json["provenance"] = ncube::provenance_to_json(
-      {options.command_line, options.scene_file, options.config.platform_file,
-       options.config.cost_model_file, scene_parts},
-      scene, platform, costs, result);
+  result_json["provenance"] = ncube::provenance_to_json(inputs, scene, platform, costs, result);
   if (!options.quiet && model)
     std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
                  "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "
