@@ -5,7 +5,7 @@
 
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
-#include "util/text_file.h"
+#include "util/input_file.h"
 
 namespace ncube::models {
 
@@ -51,7 +51,7 @@ std::string glb_json(const std::string& bytes) {
 }  // namespace
 
 void check_gltf_nesting(const std::string& path, bool binary) {
-  const std::string bytes = read_text_file(path, kMaxSceneFileBytes, "model file");
+  const std::string bytes = read_input_file(path, kModelFile);
   const std::string json = binary ? glb_json(bytes) : bytes;
   const std::size_t at = too_deep_at(json, kMaxNestingDepth);
   if (at < json.size())
