@@ -56,7 +56,7 @@ def test_validation(work):
         "unknown scene": ({"scene": "nowhere"}, "'scene'"),
         # SimGrid settings are asked of ./simulate --check-settings before anything runs.
         "unknown SimGrid setting": ({"cfg": {"bogus/name": "1"}}, "Bad config key: bogus/name"),
-        "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "Valid models are"),
+        "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "network/model must be one of LV08"),
         "empty SimGrid value": ({"cfg": {"network/model": ""}}, "NAME:VALUE"),
     }
     for what, (change, expected) in cases.items():

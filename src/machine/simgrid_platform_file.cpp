@@ -4,9 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <simgrid/s4u/Engine.hpp>
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <memory>
 #include <simgrid/s4u/NetZone.hpp>
 
 #include "machine/simgrid_session.h"
+#include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
 
@@ -50,6 +54,47 @@ std::string file_attribute(const std::string& text) {
   return "";
 }
 
+// An attribute's text ("" when absent).
+std::string attribute(xmlNode* node, const char* name) {
+  xmlChar* value = xmlGetProp(node, reinterpret_cast<const xmlChar*>(name));
+  if (!value) return "";
+  std::string text(reinterpret_cast<const char*>(value));
+  xmlFree(value);
+  return text;
+}
+
+bool named(const xmlNode* node, const char* name) {
+  return node && node->type == XML_ELEMENT_NODE &&
+         xmlStrEqual(node->name, reinterpret_cast<const xmlChar*>(name));
+}
+
+// The file's <config><prop id= value=/></config> settings are SimGrid settings like --cfg, and
+// SimGrid applies them while it loads the file (a network model that cannot build the
+// platform aborts there): each is held to src/machine/simgrid_setting_ranges.h first. Read
+// with libxml2, without the network (the DOCTYPE's DTD is not fetched), without entities, and
+// recovering as far as it can from what SimGrid's lenient reader takes (a "--" in a comment).
+// `text` is the file as the input gate read it (libxml2 never opens the path itself).
+void check_config_tags(const std::string& path, const std::string& text) {
+  const std::unique_ptr<xmlDoc, void (*)(xmlDoc*)> document(
+      xmlReadMemory(text.data(), int(text.size()), path.c_str(), nullptr,
+                  XML_PARSE_NONET | XML_PARSE_RECOVER | XML_PARSE_NOERROR | XML_PARSE_NOWARNING),
+      xmlFreeDoc);
+  if (!document) return;  // SimGrid's own reader names what is wrong with the file
+  const xmlNode* platform = xmlDocGetRootElement(document.get());
+  for (xmlNode* config = platform ? platform->children : nullptr; config; config = config->next) {
+    if (!named(config, "config")) continue;
+    for (xmlNode* prop = config->children; prop; prop = prop->next) {
+      if (!named(prop, "prop")) continue;
+      const std::string name = attribute(prop, "id"), value = attribute(prop, "value");
+      const SimgridSettingRange* range = simgrid_setting_range(name);
+      const std::string problem = range ? setting_range_problem(*range, value) : "";
+      if (!problem.empty())
+        throw InputError(path + ": <config> <prop id=\"" + name + "\" value=\"" + value +
+                         "\">: " + problem);
+    }
+  }
+}
+
 }  // namespace
 
 bool is_simgrid_platform_file(const std::string& path) {
@@ -63,12 +108,13 @@ bool is_simgrid_platform_file(const std::string& path) {
 
 PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments) {
-  simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
   // SimGrid reads the descriptor the gate opened and checked, not the path again.
   InputFile file(path, kSimgridPlatformFile);
   // SimGrid would open the files an XML platform names (a host's speed_file, a link's
   // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
   const std::string text = file.read_all();
+  check_config_tags(path, text);
+  simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
   const std::string attribute = file_attribute(text);
   if (!attribute.empty())
     throw InputError(path + ": " + attribute +
