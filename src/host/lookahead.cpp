@@ -122,12 +122,16 @@ void Lookahead::work() {
       });
       if (stopping_) return;
     }
-    if (block) {
-      compute(*shot, *block);
-      finish(*block);
-    } else {
-      compute_guess(guess);
+    try {
+      if (block)
+        compute(*shot, *block);
+      else
+        compute_guess(guess);
+    } catch (const std::exception&) {  // not out of this thread: std::terminate would end all
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!failure_) failure_ = std::current_exception();
     }
+    if (block) finish(*block);
   }
 }
 
@@ -267,6 +271,12 @@ void Lookahead::finish(Block& block) {
 }
 
 void Lookahead::complete(Shot& shot, Block& block) {
+  complete_or_wait(shot, block);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (failure_) std::rethrow_exception(failure_);  // this block or another is unfinished
+}
+
+void Lookahead::complete_or_wait(Shot& shot, Block& block) {
   int expected = Block::kNotStarted;
   if (block.state.compare_exchange_strong(expected, Block::kStarted)) {
     compute(shot, block);

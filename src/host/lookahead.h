@@ -29,6 +29,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -108,7 +109,9 @@ class Lookahead : public ThreadedAssist {
                      const std::vector<std::shared_ptr<const FastOccluders::TargetSides>>& sides,
                      const PointBlock& block, PartMask* answers, WorkCounts* counts) const;
   void finish(Block& block);                               // done: wake those waiting
-  void complete(Shot& shot, Block& block);                 // done when it returns
+  // Done when it returns; rethrows a worker's exception (failure_).
+  void complete(Shot& shot, Block& block);
+  void complete_or_wait(Shot& shot, Block& block);
   // Under mutex_: the next block of a guessed shot (false: no guess to work on).
   struct GuessBlock {
     std::shared_ptr<const Shooter> shooter;
@@ -132,6 +135,9 @@ class Lookahead : public ThreadedAssist {
   std::mutex mutex_;
   std::condition_variable work_to_do_, block_done_;
   bool stopping_ = false;
+  // The first exception a worker thread met (the host out of memory): its block is marked
+  // done unfinished, and the node program that needs a block rethrows it (complete()).
+  std::exception_ptr failure_;
   std::vector<std::shared_ptr<Shot>> active_;  // shots with blocks nobody has started, oldest first
   struct Posted {
     std::weak_ptr<Shot> shot;  // expired once nobody holds the shot

@@ -4,6 +4,9 @@
 // relative to the face's diameter, so a model's units do not matter.
 #pragma once
 
+#include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -21,6 +24,9 @@ constexpr double kPlanarity = 1e-7;
 constexpr double kTurn = 1e-9;
 constexpr double kFlat = 1e-10;
 constexpr double kSame = 1e-12;
+// Faces of more corners are refused: the tests and the cutting of a face take time growing
+// with the square of its corners (about 25 ms for a face of this many).
+constexpr unsigned kMaxFaceCorners = 1024;
 
 // A vector's length without underflow or overflow of its squares.
 double norm(const Point& v);
@@ -30,8 +36,17 @@ double diameter(const std::vector<Point>& corners);
 Point newell(const std::vector<Point>& corners);
 // A quad kept as one patch: planar within kPlanarity, every corner turning the same way.
 bool planar_convex_quad(const std::vector<Point>& q);
+// Two edges of the face, projected on its best plane, that cross (edge i runs from corner i to
+// corner i + 1), or none. Edges that only touch (a corner on another edge, a bridge traversed
+// twice) do not cross. O(corners^2).
+std::optional<std::pair<std::size_t, std::size_t>> crossing_edges(const std::vector<Point>& corners);
 // Triangles, in the face's own winding, of a face that is not kept as it is.
 std::vector<std::vector<Point>> split(const std::vector<Point>& corners);
+// Whether a face whose net area is flat still has corners that span a plane: some triangle of
+// corner 0 and two consecutive corners has an area over kSpan of the diameter squared. Such
+// a face folds over itself (a bow-tie of two equal halves), which is no degenerate face.
+constexpr double kSpan = 1e-6;
+bool spans_plane(const std::vector<Point>& corners);
 // Whether a polygon's area is at most kFlat of its diameter squared (degenerate).
 bool flat(const std::vector<Point>& polygon);
 

@@ -14,6 +14,7 @@
 #include "models/element_grid.h"
 #include "models/face_shapes.h"
 #include "models/gltf_extras.h"
+#include "models/json_nesting.h"
 #include "models/model_material.h"
 #include "models/mtl_file.h"
 #include "models/ply_file.h"
@@ -59,6 +60,8 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
     throw InputError("--scale: must be from 1e-100 to 1e100");
 
   if (lower_extension(path) == ".ply") check_ply_length(path);
+  if (lower_extension(path) == ".gltf" || lower_extension(path) == ".glb")
+    check_gltf_nesting(path, lower_extension(path) == ".glb");
   Assimp::Importer importer;
   std::vector<std::string> read, problems;  // this import's files (a summary may hold others)
   importer.SetIOHandler(new RecordingIOSystem(path, options.model_folders, read,
@@ -146,6 +149,10 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
       if (face.mNumIndices < 3)
         throw InputError(at + ": " + std::to_string(face.mNumIndices) +
                          " corners (points and lines are not surfaces)");
+      if (face.mNumIndices > kMaxFaceCorners)
+        throw InputError(at + ": " + std::to_string(face.mNumIndices) + " corners, more than " +
+                         std::to_string(kMaxFaceCorners) + " (the limit; triangulate it in the "
+                         "modelling tool)");
       std::vector<Point> corners;
       Point colour(0.0);
       for (unsigned k = 0; k < face.mNumIndices; ++k) {
@@ -172,21 +179,46 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
             throw InputError(at + (face_colours.empty() ? ": vertex colour " : ": face colour ") + show(colour) +
                              ": each channel must be in [0, 1) (a white of 255 is 1)");
       }
-      if (options.flip_faces != mirrored) std::reverse(corners.begin(), corners.end());
+      // The face's corner numbers as the file gives them, for messages.
+      std::vector<unsigned> number(corners.size());
+      for (unsigned k = 0; k < number.size(); ++k) number[k] = k;
+      if (options.flip_faces != mirrored) {
+        std::reverse(corners.begin(), corners.end());
+        std::reverse(number.begin(), number.end());
+      }
       // Repeated corners (consecutive, within kSame of the face's size) are one corner.
       const double d = diameter(corners);
       std::vector<Point> distinct;
-      for (const Point& p : corners)
-        if (distinct.empty() || norm(p - distinct.back()) > kSame * d) distinct.push_back(p);
+      std::vector<unsigned> distinct_number;
+      for (std::size_t k = 0; k < corners.size(); ++k)
+        if (distinct.empty() || norm(corners[k] - distinct.back()) > kSame * d) {
+          distinct.push_back(corners[k]);
+          distinct_number.push_back(number[k]);
+        }
       while (distinct.size() > 1 && norm(distinct.front() - distinct.back()) <= kSame * d)
         distinct.pop_back();
       if (distinct.size() < 3 || flat(distinct)) {
+        if (distinct.size() >= 4 && spans_plane(distinct))
+          throw InputError(at + ": self-intersecting face: its " + std::to_string(distinct.size()) +
+                           " corners span a plane but enclose no net area (a bow-tie of two equal "
+                           "halves; split it into simple polygons)");
         ++summary.degenerate;
         continue;
       }
       if (distinct.size() == 3 || (distinct.size() == 4 && planar_convex_quad(distinct))) {
         patches.push_back({distinct, this_face});
         continue;
+      }
+      // A face whose outline crosses itself (a pentagram) has no one inside: refused rather
+      // than cut into pieces that overlap and face both ways.
+      if (const auto crossing = crossing_edges(distinct)) {
+        const auto edge = [&](std::size_t i) {
+          return std::to_string(distinct_number[i]) + "-" +
+                 std::to_string(distinct_number[(i + 1) % distinct.size()]);
+        };
+        throw InputError(at + ": self-intersecting face: its edges between corners " +
+                         edge(crossing->first) + " and " + edge(crossing->second) +
+                         " cross (corners counted from 0; split it into simple polygons)");
       }
       ++summary.split;
       for (std::vector<Point>& triangle : split(distinct))

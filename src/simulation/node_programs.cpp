@@ -38,6 +38,7 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
   build_host_machinery(programs.host, scene, patch_sets, setup.options, V, R, setup.block_size,
                        setup.loads_change());
   const OccluderSet* all = V == 0 ? programs.host.occluders.front().get() : nullptr;
+  ActorExceptions::check_stacks(std::size_t(R) * std::size_t(V + 1));
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
@@ -45,14 +46,16 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
     radiosity.use_host_assist(programs.host.assist.get(), rank);
     RadiosityProcessor& rp = programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
     simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
-                                hosts[setup.placement.radiosity_node(rank)], [&rp] { rp.run(); });
+                                hosts[setup.placement.radiosity_node(rank)],
+                                programs.exceptions.guard([&rp] { rp.run(); }));
     for (int j = 0; j < V; ++j) {
       const OccluderSet& share = *programs.host.occluders[std::size_t(j)];
       VisibilityProcessor& vp =
           programs.visibility.emplace_back(setup, programs.runtimes[next_runtime++], share);
       simgrid::s4u::Actor::create(
           "visibility-" + std::to_string(rank) + "." + std::to_string(j),
-          hosts[setup.placement.visibility_node(rank, j)], [&vp] { vp.run(); });
+          hosts[setup.placement.visibility_node(rank, j)],
+          programs.exceptions.guard([&vp] { vp.run(); }));
     }
   }
 }

@@ -17,6 +17,7 @@
 #include "nodes/program_setup.h"
 #include "nodes/radiosity_processor.h"
 #include "nodes/visibility_processor.h"
+#include "simulation/actor_exceptions.h"
 #include "radiosity/radiosity_engine.h"
 #include "simulation/host_machinery.h"
 #include "simulation/simulation_config.h"
@@ -32,6 +33,8 @@ struct NodePrograms {
   std::deque<RadiosityEngine> engines;
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
+  // An exception a node program threw (the host out of memory), rethrown after the run.
+  ActorExceptions exceptions;
   // The occluder sets and the engines' host help (host_machinery.h); last, so that the
   // host's threads stop first.
   HostMachinery host;

@@ -7,6 +7,7 @@
 
 #include "nodes/placement.h"
 #include "nodes/render_processor.h"
+#include "simulation/actor_exceptions.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -55,6 +56,8 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
       }
   std::deque<NodeRuntime> runtimes;
   std::deque<RenderProcessor> programs;
+  ActorExceptions::check_stacks(std::size_t(N));
+  ActorExceptions exceptions;  // a program's exception (the host out of memory), rethrown
   for (int node = 0; node < N; ++node) {
     const bool radiosity = node % (V + 1) == 0;
     NodeRuntime& runtime = runtimes.emplace_back(node, radiosity ? NodeRole::kRadiosity : NodeRole::kVisibility,
@@ -62,11 +65,12 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
     runtime.set_memory(memory[std::size_t(node)]);
     RenderProcessor& program = programs.emplace_back(setup, node, runtime);
     simgrid::s4u::Actor::create("render-" + std::to_string(node), hosts[std::size_t(node)],
-                                [&program] { program.run(); });
+                                exceptions.guard([&program] { program.run(); }));
   }
   result.ran = true;
   const double start = simgrid::s4u::Engine::get_clock();
   simgrid::s4u::Engine::get_instance()->run();
+  exceptions.rethrow_first();
   result.simulated_seconds = simgrid::s4u::Engine::get_clock() - start;
   double sum = 0.0, max = 0.0;
   for (int node = 0; node < N; ++node) {

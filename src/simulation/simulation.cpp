@@ -67,6 +67,7 @@ void run_programs(const Scene& scene, const SimulationConfig& config,
   launch_node_programs(programs, setup, owned, hosts);
   report_iterations(programs, config, setup.emitted_power);
   simgrid::s4u::Engine::get_instance()->run();
+  programs.exceptions.rethrow_first();  // before anything is written
   result.simulated_seconds = simgrid::s4u::Engine::get_clock();
   if (programs.activities) programs.activities->write(ActivityRecord::requested_path());
   const RadiosityProcessor& master = programs.radiosity.front();
