@@ -17,6 +17,7 @@ import xml.etree.ElementTree as ElementTree
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
+from . import input_file
 from . import options as opts
 from . import paths
 from .results import MEASURES
@@ -63,8 +64,20 @@ class SweepError(Exception):
     """A sweep file that cannot be run; the message names the file, the cell and the key."""
 
 
-def file_sha256(path):
-    return "sha256:" + hashlib.sha256(Path(path).read_bytes()).hexdigest()
+def read_input(path, what, max_bytes, text=True):
+    """PATH read through the sweep tool's input gate (ncube.input_file): a SweepError naming
+    the file for anything but a regular file within MAX_BYTES."""
+    try:
+        if text:
+            return input_file.read_input_text(path, what, max_bytes)
+        return input_file.read_input_bytes(path, what, max_bytes)
+    except input_file.InputFileError as e:
+        raise SweepError(str(e)) from None
+
+
+def file_sha256(path, what="file"):
+    data = read_input(path, what, input_file.SCENE_FILE_BYTES, text=False)
+    return "sha256:" + hashlib.sha256(data).hexdigest()
 
 
 @dataclass
@@ -154,22 +167,28 @@ class Sweep:
 
 
 def read_document(path):
-    text = Path(path).read_text()
+    text = read_input(path, "sweep file", input_file.SWEEP_FILE_BYTES)
     if Path(path).suffix in (".yaml", ".yml"):
         import yaml
         try:
             return yaml.safe_load(text)
         except yaml.YAMLError as e:
             raise SweepError(f"{path}: not valid YAML: {e}") from None
+        except RecursionError:
+            raise SweepError(f"{path}: nested too deeply to read (a sweep file is a few "
+                             "levels of mappings and lists)") from None
     try:
         return json.loads(text)
     except ValueError as e:
         raise SweepError(f"{path}: not valid JSON: {e}") from None
+    except RecursionError:
+        raise SweepError(f"{path}: nested too deeply to read (a sweep file is a few levels of "
+                         "mappings and lists)") from None
 
 
 def platform_nodes(path):
     """Nodes of a platform file: 2^dimension (JSON), the hosts node-0... (SimGrid XML)."""
-    text = Path(path).read_text()
+    text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)
     if text.lstrip().startswith("<"):
         root = ElementTree.fromstring(text)
         names = {h.get("id") for h in root.iter("host")}
@@ -205,7 +224,8 @@ def _imported(path):
 
 def scene_summary(path):
     """(name, patches) of a scene file, or of a model as imported."""
-    scene = _imported(str(path)) if is_model(path) else json.loads(Path(path).read_text())
+    scene = (_imported(str(path)) if is_model(path)
+             else json.loads(read_input(path, "scene file", input_file.SCENE_FILE_BYTES)))
     return scene.get("name", Path(path).stem), len(scene.get("patches", []))
 
 
@@ -359,9 +379,12 @@ def _cell(spec, label, sweep_name, base, where):
 
 def load(path):
     """Reads and validates a sweep file; raises SweepError naming the file, cell and key."""
-    path = Path(path).resolve()
+    try:
+        path = Path(path).resolve()
+    except (RuntimeError, OSError):  # Python 3.11 says a link loop with RuntimeError
+        raise SweepError(f"{path}: cannot open sweep file: a loop of symbolic links") from None
     where = str(path)
-    if not path.is_file():
+    if not path.exists():
         raise SweepError(f"{where}: no such file")
     document = read_document(path)
     if not isinstance(document, dict):

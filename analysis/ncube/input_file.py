@@ -1,0 +1,57 @@
+"""The sweep tool's gate for the files it reads itself (sweep files, scene and platform files,
+the files it hashes): the same rule as ./simulate's (src/util/input_file.h, docs/cli.md "Input
+files"). Opened without blocking (a FIFO never waits for a writer), the descriptor checked to be
+a regular file, and read at most one byte past the limit, so a device, a folder, a link loop or
+an endless file is one clear SweepError instead of a hang, a traceback or gigabytes of memory."""
+import errno
+import os
+import stat
+
+MIB = 1 << 20
+SWEEP_FILE_BYTES = 1 * MIB       # a sweep file: a few hundred lines of YAML or JSON
+SCENE_FILE_BYTES = 256 * MIB     # as ./simulate's kSceneFile
+PLATFORM_FILE_BYTES = 64 * MIB   # as ./simulate's kSimgridPlatformFile (the larger platform limit)
+
+_KINDS = {stat.S_IFIFO: "a FIFO", stat.S_IFCHR: "a character device", stat.S_IFBLK: "a block device",
+          stat.S_IFDIR: "a folder", stat.S_IFSOCK: "a socket"}
+
+
+class InputFileError(ValueError):
+    """A file that cannot be read under the rule; the message names the file and why."""
+
+
+def read_input_bytes(path, what, max_bytes):
+    """The bytes of regular file PATH (a WHAT, e.g. "sweep file"), at most MAX_BYTES."""
+    try:
+        descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC)
+    except OSError as e:
+        reason = "a loop of symbolic links" if e.errno == errno.ELOOP else e.strerror
+        raise InputFileError(f"{path}: cannot open {what}: {reason}") from None
+    try:
+        mode = os.fstat(descriptor).st_mode
+        if not stat.S_ISREG(mode):
+            raise InputFileError(f"{path}: {what} is {_KINDS.get(stat.S_IFMT(mode), 'not a file')}, "
+                                 "not a regular file")
+        pieces, size = [], 0
+        while size <= max_bytes:
+            piece = os.read(descriptor, min(MIB, max_bytes + 1 - size))
+            if not piece:
+                break
+            pieces.append(piece)
+            size += len(piece)
+        if size > max_bytes:
+            raise InputFileError(f"{path}: {what} is larger than {max_bytes} bytes (the limit)")
+        return b"".join(pieces)
+    except OSError as e:
+        raise InputFileError(f"{path}: cannot read {what}: {e.strerror}") from None
+    finally:
+        os.close(descriptor)
+
+
+def read_input_text(path, what, max_bytes):
+    """The text of PATH as UTF-8; bytes that are not UTF-8 are an InputFileError."""
+    data = read_input_bytes(path, what, max_bytes)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise InputFileError(f"{path}: {what} is not UTF-8 text (byte {e.start})") from None
