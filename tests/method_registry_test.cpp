@@ -114,7 +114,8 @@ TEST(VisibilityMethods, EveryMethodsHostVersionAnswersAndCountsAsItsDefinition) 
   for (const VisibilityMethod& method : visibility_methods().all()) {
     for (const int V : {0, 2}) {
       std::vector<std::vector<int>> sets;
-      for (int j = 0; j < std::max(V, 1); ++j) sets.push_back(visibility_share(scene, std::max(V, 1), j));
+      const int shares = std::max(V, 1);
+      for (int j = 0; j < shares; ++j) sets.push_back(visibility_share(scene, shares, j));
       for (const int threads : {1, 2}) {
         for (const bool reference : {false, true}) {
           const std::string where = method.name + ", V = " + std::to_string(V) + ", " +
@@ -180,8 +181,9 @@ TEST(VisibilityMethods, EveryMethodsSearchStructureIsInTheMemoryPlan) {
           expected = method.reference(scene, visibility_share(scene, 1, 0), RayTestPolicy{})
                          ->structure_bytes(costs);
         else if (with[n].role == NodeRole::kVisibility)
-          expected = method.reference(scene, visibility_share(scene, V, (with[n].node - 1) % (V + 1)),
-                                      RayTestPolicy{})
+          expected = method
+                         .reference(scene, visibility_share(scene, V, (with[n].node - 1) % (V + 1)),
+                                    RayTestPolicy{})
                          ->structure_bytes(costs);
         EXPECT_DOUBLE_EQ(with[n].bytes - none[n].bytes, expected)
             << method.name << ", V = " << V << ", node " << with[n].node;
