@@ -5,8 +5,7 @@
 // finding that out cost the node (the counts it is charged for).
 //
 // The readable definitions are the paper's brute-force loop (brute_force_occluders.h) and the
-// octree walk of section 6 (octree.h), each registered once as a visibility method
-// (visibility_methods.h). The host computes the same answers and the same counts
+// octree walk of section 6 (octree.h). The host computes the same answers and the same counts
 // faster behind this interface (src/host/: fast_occluders.h, threaded_occluders.h); those
 // implementations may change no answer and no count, and `--reference-visibility` runs the
 // readable definitions alone so that whole result files can be compared (tests/seam_test.sh).
@@ -28,6 +27,7 @@ enum class RayTestPolicy {
 
 struct CostModel;
 
+// Each readable definition is registered once as a visibility method (visibility_methods.h).
 class OccluderSet {
  public:
   virtual ~OccluderSet() = default;
