@@ -6,6 +6,7 @@
 
 #include "hand_counted_scene.h"
 #include "machine/cost_model.h"
+#include "visibility/octree.h"
 
 namespace ncube {
 namespace {
@@ -87,7 +88,7 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
   EXPECT_DOUBLE_EQ(c.octree_reference_bytes, 4);
   const Scene scene = hand_counted_scene();
   ProgressiveOptions octree = sixteen_samples();
-  octree.visibility = VisibilityMethod::kOctree;
+  octree.visibility = "octree";
   for (const int V : {0, 2}) {
     const auto partition = partition_patches_by_elements(scene, 2);
     const auto brute = plan_memory(ProgramSetup{scene, Placement{2, V}, program_options(sixteen_samples(), 3, false), 1.0},
@@ -100,7 +101,7 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
     }
   }
   // Any 2 patches share the root with the default parameters: 1 cell, 2 references.
-  EXPECT_DOUBLE_EQ(octree_bytes(scene, {1, 3}, c), 64 + 2 * 4);
+  EXPECT_DOUBLE_EQ(Octree(scene, {1, 3}).structure_bytes(c), 64 + 2 * 4);
 }
 
 }  // namespace

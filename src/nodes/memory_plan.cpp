@@ -1,14 +1,14 @@
 #include "nodes/memory_plan.h"
 
 #include "nodes/messages.h"
-#include "visibility/octree.h"
+#include "visibility/visibility_methods.h"
 
 namespace ncube {
 
-double octree_bytes(const Scene& scene, const std::vector<int>& patches, const CostModel& costs) {
-  const OctreeBuildCounts built = Octree(scene, patches).build_counts();
-  return double(built.cells) * costs.octree_cell_bytes +
-         double(built.patch_references) * costs.octree_reference_bytes;
+double search_structure_bytes(const ProgramSetup& setup, const std::vector<int>& patches,
+                              const CostModel& costs) {
+  const VisibilityMethod& method = visibility_methods().at(setup.options.visibility);
+  return method.reference(setup.scene, patches, setup.options.ray_policy)->structure_bytes(costs);
 }
 
 std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
@@ -22,16 +22,16 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   const double in_flight = setup.pipelined ? 2.0 : 1.0;
   // Two shooter records: the one being shot and the one being chosen.
   const double records = 2.0 * costs.shooter_record_bytes;
-  // Section 6: with octree visibility, a node that tests rays also holds the octree over
-  // its set (the whole scene, or its share); shares are the same for every group.
-  const bool octree = setup.options.visibility == VisibilityMethod::kOctree;
-  const double whole_octree =
-      octree && V == 0 ? octree_bytes(setup.scene, visibility_share(setup.scene, 1, 0), costs) : 0.0;
-  std::vector<double> share_octree(std::size_t(V), 0.0), share_patches(std::size_t(V), 0.0);
+  // A node that tests rays also holds its visibility method's search structure over its set
+  // (the whole scene, or its share; section 6: the octree); shares are the same for every
+  // group.
+  const double whole_structure =
+      V == 0 ? search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs) : 0.0;
+  std::vector<double> share_structure(std::size_t(V), 0.0), share_patches(std::size_t(V), 0.0);
   for (int j = 0; j < V; ++j) {
     const std::vector<int> share = visibility_share(setup.scene, V, j);
     share_patches[std::size_t(j)] = double(share.size());
-    if (octree) share_octree[std::size_t(j)] = octree_bytes(setup.scene, share, costs);
+    share_structure[std::size_t(j)] = search_structure_bytes(setup, share, costs);
   }
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < p.radiosity_processors; ++rank) {
@@ -42,7 +42,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
     NodeMemory rp{p.radiosity_node(rank), NodeRole::kRadiosity, rank, costs.node_reserve_bytes + records};
     // Section 2.2: without visibility processors every radiosity processor holds the
     // geometry of all patches; section 3: with them, only its own.
-    rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes + whole_octree;
+    rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes + whole_structure;
     rp.bytes += owned * costs.patch_radiosity_bytes + owned_elements * costs.element_bytes;
     if (V > 0)  // a block of points out, V blocks of answers in
       rp.bytes += in_flight * block * (costs.point_bytes + V * mask_bytes);
@@ -52,7 +52,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
       NodeMemory vp{p.visibility_node(rank, j), NodeRole::kVisibility, rank,
                     costs.node_reserve_bytes + records + share * costs.patch_geometry_bytes +
                         in_flight * block * (costs.point_bytes + mask_bytes) +
-                        share_octree[std::size_t(j)]};
+                        share_structure[std::size_t(j)]};
       nodes.push_back(vp);
     }
   }

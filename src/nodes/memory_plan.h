@@ -21,8 +21,10 @@ struct NodeMemory {
   double bytes = 0.0;
 };
 
-// The octree (section 6) over `patches`: its cells and its leaves' patch lists.
-double octree_bytes(const Scene& scene, const std::vector<int>& patches, const CostModel& costs);
+// The search structure of the run's visibility method over `patches`
+// (OccluderSet::structure_bytes; section 6: the octree's cells and its leaves' patch lists).
+double search_structure_bytes(const ProgramSetup& setup, const std::vector<int>& patches,
+                              const CostModel& costs);
 
 // One entry per node in use, in node order.
 std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,

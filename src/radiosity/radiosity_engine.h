@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "radiosity/element_store.h"
@@ -108,7 +109,8 @@ struct ProgressiveOptions {
   int samples = 64;                    // M, parts of the shooter (the calibrated setup,
                                        // docs/reproduce.md; simulate's default)
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
-  VisibilityMethod visibility = VisibilityMethod::kBruteForce;  // --visibility (section 6)
+  std::string visibility = "brute-force";  // --visibility: a name in visibility_methods()
+                                          // (visibility/visibility_methods.h; section 6)
   bool skip_facing_away = false;       // true: receivers that cannot see the shooter trace no rays
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged

@@ -3,9 +3,10 @@
 // and what help the engines get (radiosity/host_assist.h).
 //
 // By default the host's fast implementations answer (src/host/: FastOccluders, the octree
-// over host threads, the threads computing ahead); with `reference_visibility` the readable
-// definitions answer alone (BruteForceOccluders, Octree), on one thread, with no answer
-// cache and no lookahead. Both give the same result files byte for byte apart from host
+// over host threads, the threads computing ahead), each registered in host_machinery.cpp
+// under its visibility method's name (visibility/visibility_methods.h); with
+// `reference_visibility` the method's readable definition answers alone (BruteForceOccluders,
+// Octree), on one thread, with no answer cache and no lookahead. Both give the same result files byte for byte apart from host
 // fields (tests/seam_test.sh), which is the contract of every host component.
 #pragma once
 
@@ -29,7 +30,9 @@ struct HostMachinery {
 };
 
 // Builds the occluder sets for `patch_sets` (each in loop order) and the engines' help for a
-// run of `radiosity_processors` ranks with `visibility_processors` per rank.
+// run of `radiosity_processors` ranks with `visibility_processors` per rank, for the method
+// `options.visibility` names (std::logic_error when it has no registration here or in
+// visibility_methods()).
 void build_host_machinery(HostMachinery& machinery, const Scene& scene,
                           const std::vector<std::vector<int>>& patch_sets,
                           const ProgressiveOptions& options, int visibility_processors,

@@ -1,6 +1,7 @@
 #include "simulation/result_file.h"
 
 #include "simulation/iteration_time.h"
+#include "visibility/visibility_methods.h"
 
 namespace ncube {
 
@@ -67,9 +68,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"nodes", config.node_count()},
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
-                 {"visibility", config.options.visibility == VisibilityMethod::kOctree
-                                    ? "octree"
-                                    : "brute-force"},
+                 {"visibility", visibility_methods().at(config.options.visibility).name},
                  {"skip_facing_away", config.options.skip_facing_away},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},

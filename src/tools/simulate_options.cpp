@@ -10,6 +10,7 @@
 #include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
+#include "visibility/visibility_methods.h"
 
 namespace ncube {
 
@@ -33,7 +34,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.platform_file = root + "/platforms/ncube2.json";
   config.cost_model_file = root + "/platforms/cost_model.json";
   std::string ray_test = "all";
-  std::string visibility = "brute-force";
   std::string render_parallel = "off", render_distribution = "hypercube";
 
   CLI::App app{"Simulates the parallel progressive radiosity of Stuerzlinger & Wild (1994) on a "
@@ -65,10 +65,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "how far the brute-force loop runs per ray: all (every other patch, "
                "section 2.2) or first-blocker",
                "ray_test");
-  table.choice("--visibility", visibility, {"brute-force", "octree"},
-               "how rays find their blockers: brute-force (every patch, sections 2.2 and 3; "
-               "the calibrated setup) or octree (section 6: an octree over each node's "
-               "patches, the walk stops at the first blocker; --ray-test has no effect)",
+  table.choice("--visibility", config.options.visibility, visibility_methods().names(),
+               "how rays find their blockers: " + visibility_methods().described(),
                "visibility");
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
@@ -231,8 +229,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
-  config.options.visibility =
-      visibility == "octree" ? VisibilityMethod::kOctree : VisibilityMethod::kBruteForce;
   options.scene_file = resolve_scene_path(options.scene_file);
   options.quiet = quiet;
   config.render.enabled = render_parallel != "off";

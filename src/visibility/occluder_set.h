@@ -26,11 +26,9 @@ enum class RayTestPolicy {
   kStopAtFirstBlocker,    // the loop ends at the first patch, in set order, that blocks
 };
 
-// How the node program finds a ray's blockers: the paper's loop over all patches (sections
-// 2.2, 3; the calibrated default) or an octree walk (section 6, octree.h; the ray policy then
-// has no effect: the walk always stops at the first blocker). The answers are the same.
-enum class VisibilityMethod { kBruteForce, kOctree };
+struct CostModel;
 
+// Each readable definition is registered once as a visibility method (visibility_methods.h).
 class OccluderSet {
  public:
   virtual ~OccluderSet() = default;
@@ -43,6 +41,12 @@ class OccluderSet {
   // The work of building the set's search structure, charged once when the node program
   // starts (none for the brute-force loop).
   virtual WorkCounts build_work() const { return {}; }
+  // The bytes a node holds for the set's search structure beside the patches' geometry
+  // (which every method needs and memory_plan.h counts): none for the brute-force loop.
+  virtual double structure_bytes(const CostModel& costs) const {
+    static_cast<void>(costs);
+    return 0.0;
+  }
   // The scene patches of the set, in the order the loop (or the octree's leaves) lists them.
   virtual const std::vector<int>& patch_indices() const = 0;
 

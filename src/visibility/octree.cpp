@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "machine/cost_model.h"
 
 namespace ncube {
 
@@ -155,6 +156,11 @@ WorkCounts Octree::build_work() const {
   work.octree_overlap_tests = build_.overlap_tests;
   work.octree_cells_built = build_.cells;
   return work;
+}
+
+double Octree::structure_bytes(const CostModel& costs) const {
+  return double(build_.cells) * costs.octree_cell_bytes +
+         double(build_.patch_references) * costs.octree_reference_bytes;
 }
 
 }  // namespace ncube

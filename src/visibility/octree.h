@@ -54,6 +54,9 @@ class Octree : public OccluderSet {
   using OccluderSet::unblocked_parts;
   // Building it: the overlap tests and the cells made.
   WorkCounts build_work() const override;
+  // Its cells and the leaves' patch lists, at the cost model's sizes (section 6: a node that
+  // tests rays holds the octree over its set).
+  double structure_bytes(const CostModel& costs) const override;
   const std::vector<int>& patch_indices() const override { return patch_indices_; }
 
   const OctreeBuildCounts& build_counts() const { return build_; }
