@@ -9,8 +9,10 @@
 #include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/Host.hpp>
 #include <simgrid/s4u/NetZone.hpp>
+#include <xbt/config.hpp>
 #include <xbt/log.h>
 
+#include "machine/simgrid_outputs.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -36,12 +38,14 @@ std::string syntax_problem(const std::string& argument) {
 [[noreturn]] void try_in_child(const std::string& argument, int error_pipe) {
   dup2(error_pipe, STDERR_FILENO);
   dup2(error_pipe, STDOUT_FILENO);  // --cfg=help and the like print their text here
-  std::vector<std::string> storage{"simulate", argument};
-  std::vector<char*> argv{storage[0].data(), storage[1].data(), nullptr};
+  std::vector<std::string> storage{"simulate", ""};
   int argc = 2;
   try {
+    storage[1] = simgrid_argument_for_check(argument);  // never the user's files
+    std::vector<char*> argv{storage[0].data(), storage[1].data(), nullptr};
     xbt_log_control_set("root.thresh:critical");
     simgrid::s4u::Engine engine(&argc, argv.data());
+    simgrid::config::set_value("tracing/filename", std::string("/dev/null"));  // nor simgrid.trace
     auto* zone = simgrid::s4u::create_full_zone("check");
     zone->create_host("check", 1e6);
     zone->seal();

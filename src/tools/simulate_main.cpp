@@ -7,12 +7,19 @@
 #include <iostream>
 #include <optional>
 #include <new>
+#include <string_view>
+
+#include <xbt/virtu.h>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "machine/simgrid_outputs.h"
+#include "machine/simgrid_platform_file.h"
+#include "machine/simgrid_session.h"
 #include "machine/simgrid_settings.h"
 #include "models/model_import.h"
 #include "models/solution_mesh.h"
+#include "nodes/activity_record.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
@@ -63,9 +70,22 @@ int simulate(int argc, char** argv) {
   ncube::SimulateOptions options;
   const int parse_status = ncube::parse_simulate_options(argc, argv, options);
   if (parse_status >= 0) return parse_status;
+  // The files SimGrid would write (log appenders, the trace) are outputs like --json.
+  const ncube::SimgridOutputs simgrid_outputs(options.config.simgrid_arguments);
+  std::vector<ncube::OutputFiles::Output> simgrid_files;
+  for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
+    simgrid_files.push_back({output.setting, output.path});
   // SimGrid ends the process on a setting it refuses: each is tried in a child first.
   ncube::check_simgrid_settings(options.config.simgrid_arguments);
-  if (options.check_settings) return ncube::kExitOk;
+  if (options.check_settings) {
+    // Their paths as a run checks them, against the files the command line names.
+    std::vector<std::string> named = simgrid_outputs.inputs();
+    for (const std::string* file : {&options.scene_file, &options.config.platform_file,
+                                    &options.config.cost_model_file})
+      if (!file->empty()) named.push_back(*file);
+    ncube::OutputFiles checked(simgrid_files, named);
+    return ncube::kExitOk;
+  }
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
   // A model file is imported into the project's scene JSON, then loaded (and checked) as a
@@ -91,17 +111,38 @@ int simulate(int argc, char** argv) {
   };
   ncube::Scene scene =
       model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
+  // Every output is checked (and its temporary file made) before SimGrid's Engine exists: it
+  // opens log files as it starts. No output may be a file the run reads.
+  std::vector<std::string> inputs = {options.scene_file, options.config.platform_file,
+                                     options.config.cost_model_file};
+  inputs.insert(inputs.end(), imported.files.begin(), imported.files.end());
+  inputs.insert(inputs.end(), simgrid_outputs.inputs().begin(), simgrid_outputs.inputs().end());
+  std::vector<ncube::OutputFiles::Output> wanted = {
+      {"--json", options.json_file},
+      {"--trace", options.trace_file},
+      {"--image", options.image_file},
+      {"--mesh", options.mesh_file},
+      {"--export-scene", options.export_scene_file},
+      {"NCUBE_RECORD_ACTIVITIES", ncube::ActivityRecord::requested_path()}};
+  wanted.insert(wanted.end(), simgrid_files.begin(), simgrid_files.end());
+  ncube::OutputFiles outputs(wanted, inputs);
+  // SimGrid writes its files to their temporary files; the arguments the result file records
+  // stay the user's. A SimGrid platform file is read by the Engine; a JSON one's settings are
+  // checked in child processes, which needs the Engine not to exist yet.
+  const auto start_simgrid = [&] {
+    ncube::simgrid_engine(simgrid_outputs.engine_arguments(
+        [&outputs](const std::string& setting) { return outputs.writer_path(setting); }));
+    // The command line a Paje trace's header shows: the user's settings, not temporary files.
+    simgrid::xbt::cmdline = {"simulate"};
+    for (const std::string& argument : options.config.simgrid_arguments)
+      simgrid::xbt::cmdline.push_back(argument);
+  };
+  if (ncube::is_simgrid_platform_file(options.config.platform_file)) start_simgrid();
   const ncube::PlatformConfig platform =
       ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
+  if (!simgrid::s4u::Engine::is_initialized()) start_simgrid();
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
   ncube::check_configuration(scene, options.config, platform);
-  ncube::OutputFiles outputs({{"--json", options.json_file},
-                              {"--trace", options.trace_file},
-                              {"--image", options.image_file},
-                              {"--mesh", options.mesh_file},
-                              {"--export-scene", options.export_scene_file}},
-                             {options.scene_file, options.config.platform_file,
-                              options.config.cost_model_file});
   if (!options.config.memory_cap ||
       ncube::first_node_out_of_memory(scene, options.config, platform, costs).node < 0)
     scene.build_elements();
@@ -140,6 +181,9 @@ int simulate(int argc, char** argv) {
                                  options.config.render.outline_elements)));
   if (!options.export_scene_file.empty())
     outputs.write("--export-scene", imported_text);
+  if (result.activities)
+    result.activities->write(
+        [&outputs](std::string_view bytes) { outputs.write("NCUBE_RECORD_ACTIVITIES", bytes); });
   if (!options.mesh_file.empty() && result.status == ncube::RunStatus::kOk)
     outputs.write("--mesh", ncube::solution_mesh_ply(
                                 scene, result.solution,
