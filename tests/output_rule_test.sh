@@ -38,11 +38,11 @@ run_with() {
   local aside=--json
   [ "$1" = json ] && aside=--trace
   if [ "$1" = record ]; then
-    NCUBE_RECORD_ACTIVITIES=$2 "$simulate" room.obj --iterations 2 --quiet $aside aside.json \
+    NCUBE_RECORD_ACTIVITIES=$2 timeout 60 "$simulate" room.obj --iterations 2 --quiet $aside aside.json \
       2>"$work/stderr"
   else
     # shellcheck disable=SC2046
-    "$simulate" room.obj --iterations 2 --quiet $aside aside.json $(output_words "$1" "$2") \
+    timeout 60 "$simulate" room.obj --iterations 2 --quiet $aside aside.json $(output_words "$1" "$2") \
       2>"$work/stderr"
   fi
   status=$?
