@@ -118,6 +118,27 @@ done
 [ "$(sum scene0.json)" = "$before_scene" ] || fail "the settings check truncated the log file"
 [ -e simgrid.trace ] && fail "the settings check wrote simgrid.trace"
 
+# A platform file that turns tracing on: a JSON one's trace is an output like the others (here
+# aimed at the scene: exit 2); a SimGrid XML one's <config> cannot name the trace: none is written.
+/usr/bin/python3 - "$root/platforms/ncube2.json" > traced.json <<'PY'
+import json, sys
+platform = json.load(open(sys.argv[1]))
+platform.setdefault("simgrid_config", {}).update({"tracing": "yes", "tracing/filename": "scene0.json"})
+print(json.dumps(platform))
+PY
+"$simulate" scene0.json --iterations 2 --quiet --platform traced.json 2>/dev/null
+status=$?
+[ $status -eq 2 ] || fail "a JSON platform's trace at the scene: exit $status, expected 2"
+[ "$(sum scene0.json)" = "$before_scene" ] || fail "a JSON platform's trace changed the scene"
+cp "$root/scenes/scene0.json" .
+sed 's|<platform version="4.1">|&<config><prop id="tracing" value="yes"/></config>|' \
+  "$root/platforms/ncube2.xml" > traced.xml
+grep -q 'id="tracing"' traced.xml || fail "the XML platform was not given a <config> tag"
+"$simulate" scene0.json --iterations 2 --quiet --platform traced.xml 2>/dev/null \
+  || fail "an XML platform turning tracing on: exit $?"
+[ -e simgrid.trace ] && fail "an XML platform's <config> wrote simgrid.trace"
+no_temporaries "platform tracing"
+
 # Killed while its outputs are open: once the process holds a temporary file of this folder
 # (an open file whose name, if any, is here), the signal comes; nothing may be left.
 for signal in SEGV ABRT TERM INT; do

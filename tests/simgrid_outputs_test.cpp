@@ -71,6 +71,13 @@ TEST(SimgridOutputs, GivesSimGridTheTemporaryFiles) {
                                       "--cfg=tracing/filename:/proc/self/fd/8"}));
 }
 
+TEST(SimgridOutputs, NoTraceAskedForGoesNowhere) {
+  EXPECT_EQ(SimgridOutputs({"--cfg=tracing/filename:t.trace"}).engine_arguments([](const std::string&) {
+    return "/proc/self/fd/9";
+  }),
+            std::vector<std::string>{"--cfg=tracing/filename:/dev/null"});
+}
+
 TEST(SimgridOutputs, TheSettingsCheckWritesNothing) {
   EXPECT_EQ(simgrid_argument_for_check("--log=root.app:file:scene.json"), "--log=\"root.app:file:/dev/null\"");
   EXPECT_EQ(simgrid_argument_for_check("--log=root.app:rollfile:10:scene.json"),

@@ -167,9 +167,10 @@ std::vector<std::string> SimgridOutputs::engine_arguments(
       if (name_of(setting) != "tracing/filename") kept += (kept.empty() ? "" : ",") + setting;
     if (!kept.empty()) engine.push_back(kCfg + kept);
   }
+  std::string trace = "/dev/null";  // a trace nobody asked for here (a platform's <config>)
   for (const SimgridOutput& output : outputs_)
-    if (output.setting.rfind(kCfg, 0) == 0)
-      engine.push_back(kCfg + "tracing/filename:" + path_of(output.setting));
+    if (output.setting.rfind(kCfg, 0) == 0) trace = path_of(output.setting);
+  engine.push_back(kCfg + "tracing/filename:" + trace);
   return engine;
 }
 

@@ -34,7 +34,9 @@ class SimgridOutputs {
   // Files SimGrid reads for these settings (tracing/comment-file): never an output.
   const std::vector<std::string>& inputs() const { return inputs_; }
   // The arguments for SimGrid's Engine: each output's path replaced by path_of(its setting)
-  // (the output's temporary file); a trace with no tracing/filename gets one.
+  // (the output's temporary file), and always a tracing/filename: the trace's temporary file,
+  // or /dev/null when these settings write no trace (a SimGrid platform file's <config> tags
+  // cannot override it, so a platform turning tracing on writes nowhere).
   std::vector<std::string> engine_arguments(
       const std::function<std::string(const std::string& setting)>& path_of) const;
 

@@ -111,12 +111,28 @@ int simulate(int argc, char** argv) {
   };
   ncube::Scene scene =
       model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
-  // Every output is checked (and its temporary file made) before SimGrid's Engine exists: it
-  // opens log files as it starts. No output may be a file the run reads.
+  // A JSON platform is read before any Engine exists (its settings are checked in child
+  // processes); its own tracing settings then join the command line's, so that a trace it
+  // turns on is an output like the others. A SimGrid platform file is read by the Engine,
+  // after the outputs are checked (SimGrid opens log files as its Engine starts).
+  const bool simgrid_platform = ncube::is_simgrid_platform_file(options.config.platform_file);
+  std::optional<ncube::PlatformConfig> json_platform;
+  std::vector<std::string> run_settings;
+  if (!simgrid_platform) {
+    json_platform =
+        ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
+    for (const auto& [name, value] : json_platform->simgrid_config)
+      if (name.rfind("tracing", 0) == 0) run_settings.push_back("--cfg=" + name + ":" + value);
+  }
+  run_settings.insert(run_settings.end(), options.config.simgrid_arguments.begin(),
+                      options.config.simgrid_arguments.end());
+  const ncube::SimgridOutputs run_simgrid_outputs(run_settings);
+  // Every output is checked (and its temporary file made) before SimGrid's Engine exists. No
+  // output may be a file the run reads.
   std::vector<std::string> inputs = {options.scene_file, options.config.platform_file,
                                      options.config.cost_model_file};
   inputs.insert(inputs.end(), imported.files.begin(), imported.files.end());
-  inputs.insert(inputs.end(), simgrid_outputs.inputs().begin(), simgrid_outputs.inputs().end());
+  inputs.insert(inputs.end(), run_simgrid_outputs.inputs().begin(), run_simgrid_outputs.inputs().end());
   std::vector<ncube::OutputFiles::Output> wanted = {
       {"--json", options.json_file},
       {"--trace", options.trace_file},
@@ -124,23 +140,21 @@ int simulate(int argc, char** argv) {
       {"--mesh", options.mesh_file},
       {"--export-scene", options.export_scene_file},
       {"NCUBE_RECORD_ACTIVITIES", ncube::ActivityRecord::requested_path()}};
-  wanted.insert(wanted.end(), simgrid_files.begin(), simgrid_files.end());
+  for (const ncube::SimgridOutput& output : run_simgrid_outputs.outputs())
+    wanted.push_back({output.setting, output.path});
   ncube::OutputFiles outputs(wanted, inputs);
   // SimGrid writes its files to their temporary files; the arguments the result file records
-  // stay the user's. A SimGrid platform file is read by the Engine; a JSON one's settings are
-  // checked in child processes, which needs the Engine not to exist yet.
-  const auto start_simgrid = [&] {
-    ncube::simgrid_engine(simgrid_outputs.engine_arguments(
-        [&outputs](const std::string& setting) { return outputs.writer_path(setting); }));
-    // The command line a Paje trace's header shows: the user's settings, not temporary files.
-    simgrid::xbt::cmdline = {"simulate"};
-    for (const std::string& argument : options.config.simgrid_arguments)
-      simgrid::xbt::cmdline.push_back(argument);
-  };
-  if (ncube::is_simgrid_platform_file(options.config.platform_file)) start_simgrid();
+  // stay the user's.
+  ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
+      [&outputs](const std::string& setting) { return outputs.writer_path(setting); }));
+  // The command line a Paje trace's header shows: the user's settings, not temporary files.
+  simgrid::xbt::cmdline = {"simulate"};
+  for (const std::string& argument : options.config.simgrid_arguments)
+    simgrid::xbt::cmdline.push_back(argument);
   const ncube::PlatformConfig platform =
-      ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
-  if (!simgrid::s4u::Engine::is_initialized()) start_simgrid();
+      simgrid_platform ? ncube::load_platform_config(options.config.platform_file,
+                                                     options.config.simgrid_arguments)
+                       : *json_platform;
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
   ncube::check_configuration(scene, options.config, platform);
   if (!options.config.memory_cap ||
