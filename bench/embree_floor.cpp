@@ -17,7 +17,6 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -27,6 +26,8 @@
 #include "plain_quads.h"
 #include "radiosity/shooter.h"
 #include "scene/scene_loader.h"
+#include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace {
 
@@ -58,12 +59,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: embree_floor RESULT.json [first-hit|to-the-end]\n");
     return 2;
   }
-  std::ifstream in(argv[1]);
-  if (!in) {
-    std::fprintf(stderr, "embree_floor: cannot read %s\n", argv[1]);
+  std::string text;
+  try {
+    text = ncube::read_input_file(argv[1], ncube::kResultFile);
+  } catch (const ncube::InputError& e) {
+    std::fprintf(stderr, "embree_floor: %s\n", e.what());
     return 3;
   }
-  const nlohmann::json result = nlohmann::json::parse(in);
+  const nlohmann::json result = nlohmann::json::parse(text);
   const ncube::Scene scene = ncube::load_scene(result["provenance"]["scene"]["file"].get<std::string>());
   const int samples = result["config"]["samples"].get<int>();
   const std::vector<int> shots = result["shooters"].get<std::vector<int>>();

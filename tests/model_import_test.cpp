@@ -113,6 +113,26 @@ TEST(ModelImport, ElementGridFollowsTheEdges) {
   EXPECT_EQ(scene["patches"][1]["elements"], nlohmann::json::parse("[2,2]"));
 }
 
+// Shares and grids are rounded, not floored (worked out by hand, each case one where floor and
+// round differ): budget 7 over a 2 x 1 rectangle and a unit square is 14/3 = 4.67 -> 5 and
+// 7/3 = 2.33 -> 2 elements; the rectangle's 5 are sqrt(5 x 2) = 3.16 -> 3 along its long edge
+// by 5/3 = 1.67 -> 2 (floored: 4 elements, 3 x 1), the square's 2 are 1 x 2. Budget 5 on a
+// 3 x 1 rectangle alone: sqrt(15) = 3.87 -> 4 by 5/4 = 1.25 -> 1 (floored: 3 x 2).
+TEST(ModelImport, ElementBudgetIsRoundedNotFloored) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.element_budget = 7;
+  const nlohmann::json two = import_text(
+      "rounded", "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+      "f 1 2 3 4\nf 5 6 7 8\n", options, summary);
+  EXPECT_EQ(two["patches"][0]["elements"], nlohmann::json::parse("[3,2]"));
+  EXPECT_EQ(two["patches"][1]["elements"], nlohmann::json::parse("[1,2]"));
+  options.element_budget = 5;
+  const nlohmann::json one = import_text(
+      "rounded_alone", "v 0 0 0\nv 3 0 0\nv 3 1 0\nv 0 1 0\nf 1 2 3 4\n", options, summary);
+  EXPECT_EQ(one["patches"][0]["elements"], nlohmann::json::parse("[4,1]"));
+}
+
 // --merge-coplanar merges only pairs that make a planar convex quad: a pair folded along its
 // shared edge (the second triangle's far corner 0.5 out of the plane) and a pair that makes a
 // concave quad (its corner (1, 0.5) turns the other way) stay two triangles each.
@@ -130,6 +150,27 @@ TEST(ModelImport, MergesOnlyPlanarConvexPairs) {
       "square", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n", options, summary);
   EXPECT_EQ(square["patches"].size(), 1u);
   EXPECT_EQ(summary.merged, 1);
+}
+
+// --merge-coplanar merges one material's halves only: two triangles of a unit square with the
+// same reflectance, one emitting and one not, stay two patches, and only the first emits.
+TEST(ModelImport, MergesNoEmitterWithANonEmitterOfTheSameColour) {
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_merge_emitter";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.mtl") << "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n"
+                                  "newmtl wall\nKd 0.5 0.5 0.5\n";
+  std::ofstream(dir / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                  "usemtl lamp\nf 1 2 3\nusemtl wall\nf 1 3 4\n";
+  ImportSummary summary;
+  ImportOptions options;
+  options.merge_coplanar = true;
+  const nlohmann::json scene = import_model((dir / "a.obj").string(), options, summary);
+  fs::remove_all(dir);
+  EXPECT_EQ(summary.merged, 0);
+  ASSERT_EQ(scene["patches"].size(), 2u);
+  EXPECT_EQ(scene["patches"][0]["emission"], nlohmann::json::parse("[1,1,1]"));
+  EXPECT_FALSE(scene["patches"][1].contains("emission"));
+  EXPECT_EQ(scene["patches"][0]["reflectance"], scene["patches"][1]["reflectance"]);
 }
 
 // A colour the file does not give is the documented 0.5 grey, not Assimp's stand-ins: 0.6
@@ -313,6 +354,18 @@ TEST(ModelImport, ReadsTheGltfCameraAndEmissiveStrength) {
   EXPECT_EQ(summary.merged, 1);
 }
 
+// --scale moves the whole camera with the model: lamp.gltf at twice its size has its eye at
+// (1, 2, 6) and looks at (1, 2, 4), one unit of the model (two now) down -z; up stays a direction.
+TEST(ModelImport, ScaleMovesTheGltfCameraEyeAndTarget) {
+  ImportSummary summary;
+  ImportOptions options;
+  options.scale = 2.0;
+  const nlohmann::json scene = import_model(model("lamp.gltf"), options, summary);
+  EXPECT_EQ(scene["camera"]["eye"], nlohmann::json::parse("[1,2,6]"));
+  EXPECT_EQ(scene["camera"]["look_at"], nlohmann::json::parse("[1,2,4]"));
+  EXPECT_EQ(scene["camera"]["up"], nlohmann::json::parse("[0,1,0]"));
+}
+
 // The same lamp as a .glb (the binary container: a JSON chunk, then the buffer as a BIN chunk),
 // written here from lamp.gltf: the camera, the strength (read from the JSON chunk) and the
 // patches are the .gltf's.
@@ -395,6 +448,39 @@ TEST(ModelImport, MirroredNodeKeepsTheFrontSide) {
   EXPECT_LT(normal_y(1), 0.0);  // the ceiling faces down
 }
 
+// --flip-faces turns a mirrored node's faces around too: two-quads.gltf mirrored in x (whose
+// floor faces up without the option, above) has its floor facing down and its ceiling up.
+TEST(ModelImport, FlipFacesTurnsAMirroredNodeAround) {
+  nlohmann::json document = nlohmann::json::parse(std::ifstream(model("two-quads.gltf")));
+  document["nodes"][0]["scale"] = {-1, 1, 1};
+  const fs::path dir = fs::path(testing::TempDir()) / "model_import_mirror_flip";
+  fs::create_directories(dir);
+  std::ofstream(dir / "two-quads.gltf") << document.dump();
+  ImportSummary summary;
+  ImportOptions options;
+  options.flip_faces = true;
+  const nlohmann::json scene = import_model((dir / "two-quads.gltf").string(), options, summary);
+  fs::remove_all(dir);
+  // Newell's y component of each patch: twice its area (1/2: without --merge-coplanar each
+  // triangle is a patch) times n.y. The floor's two triangles come first, then the ceiling's.
+  const auto normal_y = [&scene](std::size_t k) {
+    const nlohmann::json& v = scene["patches"][k]["vertices"];
+    double y = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const nlohmann::json& a = v[i];
+      const nlohmann::json& b = v[(i + 1) % v.size()];
+      y += (a[2].get<double>() - b[2].get<double>()) * (a[0].get<double>() + b[0].get<double>());
+    }
+    return y;
+  };
+  ASSERT_EQ(scene["patches"].size(), 4u);
+  for (std::size_t k : {0u, 1u}) {
+    EXPECT_NEAR(normal_y(k), -1.0, 1e-12) << "floor triangle " << k << " must face down";
+    EXPECT_LE(scene["patches"][k]["vertices"][0][0].get<double>(), 0.0);  // mirrored: x <= 0
+  }
+  for (std::size_t k : {2u, 3u}) EXPECT_NEAR(normal_y(k), 1.0, 1e-12) << "ceiling triangle " << k;
+}
+
 struct BadModel : testing::Test {
   fs::path dir;
   void SetUp() override {
@@ -432,7 +518,7 @@ TEST_F(BadModel, NanCoordinate) {
 
 TEST_F(BadModel, MissingMaterialLibrary) {
   EXPECT_NE(refusal("a.obj", std::string("mtllib gone.mtl\n") + kTriangle + "usemtl x\nf 1 2 3\n")
-                .find("gone.mtl, which cannot be opened"),
+                .find("gone.mtl: cannot open model part: No such file or directory"),
             std::string::npos);
 }
 
@@ -560,7 +646,7 @@ TEST_F(BadModel, TooLargeBufferIsRefusedBeforeReading) {
       R"("componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],)"
       R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],)"
       R"("scenes":[{"nodes":[0]}],"scene":0})";
-  EXPECT_NE(refusal("a.gltf", gltf).find("huge.bin, which is larger than"), std::string::npos);
+  EXPECT_NE(refusal("a.gltf", gltf).find("huge.bin: model part is larger than 268435456 bytes (the limit)"), std::string::npos);
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ TEST(ParameterFile, MissingFileIsNamed) {
     load_cost_model("/nonexistent/cost.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/cost.json: cannot open file: No such file or directory"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/cost.json: cannot open cost model: No such file or directory"), std::string::npos);
   }
 }
 

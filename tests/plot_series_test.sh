@@ -18,7 +18,8 @@ for balance in (False, True):
     for V in (0, 1):
         for R in (2, 4):
             row = {name: option.default for name, option in opts.OPTIONS.items()}
-            row.update(scene="cornell-box", R=R, V=V, nodes=R * (V + 1), subdivide=True,
+            row.update(scene="cornell-box", scene_label="cornell-box",
+                       scene_file="scenes/cornell-box.json", R=R, V=V, nodes=R * (V + 1), subdivide=True,
                        balance=balance, platform="ncube2.json", cost_model="cost_model.json",
                        cfg="", value=1.0 + R + 10 * V + 100 * balance, speedup=1.0,
                        efficiency=1.0)

@@ -145,10 +145,10 @@ TEST(SceneLoaderError, MissingFile) {
 
 TEST(SceneLoaderError, UnreadableFile) {
   try {
-    load_scene(testing::TempDir());  // a directory opens but cannot be read
+    load_scene(testing::TempDir());  // a folder is refused as soon as it is opened
     FAIL() << "no error";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find(": cannot read scene file: Is a directory"),
+    EXPECT_NE(std::string(error.what()).find(": scene file is a folder, not a regular file"),
               std::string::npos)
         << error.what();
   }
@@ -418,13 +418,15 @@ TEST(SceneLoaderLimits, ValuesAndKeysInMessagesAreCutShort) {
   EXPECT_NE(newline.find("\"bad\\nkey\""), std::string::npos) << newline;
 }
 
-TEST(SceneLoaderLimits, EndlessFileIsRejectedAtTheSizeLimit) {
+// An endless device is refused by what it is, before a byte is read (the limit while
+// reading: tests/input_file_test.cpp).
+TEST(SceneLoaderLimits, EndlessFileIsRefused) {
   try {
     load_scene("/dev/zero");
     FAIL() << "no error";
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "/dev/zero: scene file is larger than 268435456 bytes (the limit)");
+              "/dev/zero: scene file is a character device, not a regular file");
   }
 }
 

@@ -175,6 +175,72 @@ TEST_F(SolutionMesh, HasNoTJunctionCracks) {
   EXPECT_EQ(cracks, 0);
 }
 
+// Newell's normal of a polygon's corners: twice its vector area, along its front side's normal
+// for corners counter-clockwise seen from the front.
+std::array<double, 3> newell(const std::vector<std::array<double, 3>>& corners) {
+  std::array<double, 3> n{0, 0, 0};
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const auto& a = corners[i];
+    const auto& b = corners[(i + 1) % corners.size()];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return n;
+}
+
+// Every face is wound counter-clockwise seen from its patch's front (src/models/solution_mesh.h),
+// the front being the side the scene file's corners give (docs/scene-format.md), read here
+// from scenes/cornell-box.json itself: each face's normal points along its patch's, and its
+// area is the face's own (no face folded over).
+TEST_F(SolutionMesh, FacesAreWoundAsTheirPatchFaces) {
+  std::ifstream in(std::string(NCUBE_SOURCE_DIR) + "/scenes/cornell-box.json");
+  const nlohmann::json scene = nlohmann::json::parse(in);
+  std::vector<std::array<double, 3>> patch_normal;
+  for (const nlohmann::json& patch : scene["patches"])
+    patch_normal.push_back(newell(patch["vertices"].get<std::vector<std::array<double, 3>>>()));
+  ASSERT_EQ(patch_normal.size(), result["patch_radiosity"].size());
+  for (std::size_t f = 0; f < ply.faces.size(); ++f) {
+    const PlyFace& face = ply.faces[f];
+    std::vector<std::array<double, 3>> corners;
+    for (int v : face.vertices) corners.push_back(ply.vertices[std::size_t(v)].position);
+    const std::array<double, 3> n = newell(corners);
+    const std::array<double, 3>& p = patch_normal[std::size_t(face.patch)];
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double patch_length = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    // cos(angle) between the face's and the patch's normal: 1 for a planar patch's faces
+    // (the Cornell box's bent wall is cut into planar triangles, so its faces too).
+    EXPECT_GT((n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / (length * patch_length), 0.99)
+        << "face " << f << " of patch " << face.patch << " is wound backwards";
+    EXPECT_NEAR(0.5 * length, area(ply, face), 1e-9 * area(ply, face)) << "face " << f;
+  }
+}
+
+// A vertex belongs to one patch (each patch has its own nodal radiosities): where two patches
+// meet (the Cornell box's floor and walls share corners) each has its own vertex at the same
+// position.
+TEST_F(SolutionMesh, VerticesAreNotSharedAcrossPatches) {
+  std::vector<int> patch_of_vertex(ply.vertices.size(), -1);
+  for (const PlyFace& f : ply.faces)
+    for (int v : f.vertices) {
+      int& owner = patch_of_vertex[std::size_t(v)];
+      EXPECT_TRUE(owner == -1 || owner == f.patch)
+          << "vertex " << v << " is used by patches " << owner << " and " << f.patch;
+      owner = f.patch;
+    }
+  std::map<std::array<double, 3>, std::vector<int>> patches_at;
+  for (std::size_t v = 0; v < ply.vertices.size(); ++v)
+    patches_at[ply.vertices[v].position].push_back(patch_of_vertex[v]);
+  int shared_positions = 0;
+  for (const auto& [position, patches] : patches_at) {
+    std::map<int, int> count;
+    for (int patch : patches) ++count[patch];
+    for (const auto& [patch, n] : count) EXPECT_EQ(n, 1) << "patch " << patch << " repeats a vertex";
+    shared_positions += count.size() > 1;
+  }
+  EXPECT_GT(shared_positions, 0) << "no two patches meet: the test would prove nothing";
+}
+
 // Each vertex's radiosity is a mean of the elements around it: within the range of its
 // faces' radiosities. Its colour is the picture's tone mapping of that radiosity.
 TEST_F(SolutionMesh, VerticesAreNodalMeansColouredAsThePicture) {

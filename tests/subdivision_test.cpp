@@ -127,5 +127,39 @@ TEST(Subdivision, OffByDefaultAndBoundedByTheRoomGiven) {
   EXPECT_EQ(counts.elements_created, 4u);
 }
 
+// A cut takes 4 element records, and the floor under the shadow edge wants 2 cuts: room for
+// 3 records makes none, for exactly 4 one, for 7 still one, for exactly 8 both with nothing
+// more wanted.
+TEST(Subdivision, RoomForExactlyOneCutMakesIt) {
+  const Scene s = shadow_scene();
+  std::vector<int> all{0, 1, 2};
+  const FastOccluders occluders(s, all, RayTestPolicy::kTestAllPatches);
+  ProgressiveOptions options;
+  options.samples = 16;
+  options.max_iterations = 1;
+  SubdivisionOptions o;
+  o.enabled = true;
+  std::vector<ElementRef> floor;
+  for (int k = 0; k < 4; ++k) floor.push_back({1, k});
+  const auto cut_with_room = [&](long room, bool& out_of_room) {
+    RadiosityEngine engine(s, all);
+    run_progressive(engine, occluders, options);
+    WorkCounts counts;
+    out_of_room = false;
+    return engine.subdivide(floor, o, room, out_of_room, counts).size();
+  };
+  bool out_of_room = false;
+  ASSERT_EQ(cut_with_room(1L << 40, out_of_room), 8u);  // 2 cuts, 4 children each
+  ASSERT_FALSE(out_of_room);
+  EXPECT_EQ(cut_with_room(3, out_of_room), 0u);
+  EXPECT_TRUE(out_of_room);
+  EXPECT_EQ(cut_with_room(4, out_of_room), 4u);
+  EXPECT_TRUE(out_of_room);
+  EXPECT_EQ(cut_with_room(7, out_of_room), 4u);
+  EXPECT_TRUE(out_of_room);
+  EXPECT_EQ(cut_with_room(8, out_of_room), 8u);
+  EXPECT_FALSE(out_of_room);
+}
+
 }  // namespace
 }  // namespace ncube

@@ -56,7 +56,7 @@ def test_validation(work):
         "unknown scene": ({"scene": "nowhere"}, "'scene'"),
         # SimGrid settings are asked of ./simulate --check-settings before anything runs.
         "unknown SimGrid setting": ({"cfg": {"bogus/name": "1"}}, "Bad config key: bogus/name"),
-        "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "Valid models are"),
+        "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "network/model must be one of LV08"),
         "empty SimGrid value": ({"cfg": {"network/model": ""}}, "NAME:VALUE"),
     }
     for what, (change, expected) in cases.items():
@@ -171,8 +171,49 @@ def test_local_sweep(work):
           "a finished cell is not run again")
 
 
+def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None):
+    """Runs the sweep with cell jobs held at chosen instants (ncube.run_cell's test hook,
+    NCUBE_TEST_PAUSE: {point: cell}), waits until every one is reached, calls before_stop and
+    stops the sweep with SIGTERM, as Ctrl-C or a scheduler would: the instant of the stop is
+    driven, not raced. Returns whether every pause was reached."""
+    signals_dir.mkdir()
+    environment = dict(os.environ, NCUBE_TEST_PAUSE=",".join(f"{point}:{cell.file}" for point, cell
+                                                             in pauses.items()),
+                       NCUBE_TEST_PAUSE_DIR=str(signals_dir))
+    process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir)],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               env=environment)
+    deadline = time.monotonic() + 240
+    while (not all((signals_dir / point).exists() for point in pauses) and
+           process.poll() is None and time.monotonic() < deadline):
+        time.sleep(0.05)
+    reached = all((signals_dir / point).exists() for point in pauses)
+    if before_stop:
+        before_stop()
+    process.send_signal(signal.SIGTERM)
+    process.wait(timeout=60)
+    time.sleep(0.5)
+    return reached
+
+
+def file_state(path):
+    """What a rerun of the cell would change: the inode (a new file is renamed into place), the
+    modification time and the bytes (host-time fields differ between runs)."""
+    try:
+        status = path.stat()
+        return status.st_ino, status.st_mtime_ns, path.read_bytes()
+    except OSError:
+        return None
+
+
+def jobs_run(log, cell):
+    """Whether the sweep's log shows a job making the cell's result file."""
+    return f"output: {cell.file}" in log
+
+
 def test_kill_and_resume(work):
-    # The slow cell runs about 10 s on one host thread: long enough to be caught running.
+    # The slow cell runs about 10 s on one host thread: its simulation is running when the
+    # quick cell's job reaches its pause.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
@@ -180,38 +221,76 @@ def test_kill_and_resume(work):
     results_dir = work / "killed"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow = loaded.cells
-    process = subprocess.Popen(SWEEP + [str(work / "kill.yaml"), "--results", str(results_dir)],
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline and not any(
-            "simulate" in c and slow.id in c for c in processes_mentioning(str(results_dir))):
-        time.sleep(0.05)
-    running = any("simulate" in c for c in processes_mentioning(str(results_dir)))
-    # Stop the sweep the moment the quick cell's file appears: its job is then still exiting,
-    # the case where Snakemake would delete a verified result (runner.py, --keep-incomplete).
-    while time.monotonic() < deadline and not (results_dir / quick.file).exists():
-        time.sleep(0.002)
-    check((results_dir / quick.file).exists() and running, "one cell done, the other running")
-    stamp = (results_dir / quick.file).stat().st_mtime_ns
-    # A lock as a Snakemake stopped between a job's end and its bookkeeping leaves behind
-    # (seen once in CI): the stopped sweep must clear it, or the resume refuses the folder.
-    (results_dir / ".snakemake" / "locks").mkdir(parents=True, exist_ok=True)
-    (results_dir / ".snakemake" / "locks" / "9.output.lock").write_text(str(results_dir / slow.file) + "\n")
-    process.send_signal(signal.SIGTERM)
-    process.wait(timeout=30)
-    time.sleep(0.5)
+    seen = {}
+
+    def before_stop():
+        seen["running"] = [c for c in processes_mentioning(str(results_dir))
+                           if "simulate" in c and slow.id in c and "run_cell" not in c]
+        # A lock as a Snakemake stopped between a job's end and its bookkeeping leaves
+        # behind (seen once in CI): the stopped sweep must clear it, or the resume refuses
+        # the folder.
+        locks = results_dir / ".snakemake" / "locks"
+        locks.mkdir(parents=True, exist_ok=True)
+        (locks / "9.output.lock").write_text(str(results_dir / slow.file) + "\n")
+
+    # Stopped at the worst instant for the quick cell: its verified file has its final name
+    # but its job has not exited, so Snakemake has not recorded it (marked incomplete, a
+    # failed job's output). On a cluster this is a job cancelled after its file appeared.
+    reached = stopped_sweep(work / "kill.yaml", results_dir, {"written": quick, "started": slow},
+                            work / "kill-signals", before_stop)
+    check(reached and (results_dir / quick.file).exists() and seen["running"],
+          "stopped with one cell's file written (its job not exited) and a simulation running")
+    kept = file_state(results_dir / quick.file)
+    check(kept is not None, "the stopped cell's file is still there")
     left = processes_mentioning(str(results_dir))
     check(not left, f"a killed sweep leaves no simulation or job running ({left[:1]})")
-    check(not (results_dir / slow.file).exists(), "the interrupted cell has no result file")
+    check(not (results_dir / slow.file).exists() and
+          not list((results_dir / "cells").glob("*.running")),
+          "the interrupted cell has no result file and no temporary one")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
     # The next run finishes the interrupted cell only.
-    slow_short = work / "kill.yaml"
-    done = run_sweep(slow_short, "--results", results_dir, timeout=280)
+    done = run_sweep(work / "kill.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
-    check((results_dir / quick.file).stat().st_mtime_ns == stamp, "the finished cell is kept")
-    check(results.mismatch(results.read(results_dir / slow.file), slow) is None,
+    check("1 with a finished result file" in done.stdout and "1 to run" in done.stdout,
+          f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
+    check(file_state(results_dir / quick.file) == kept and not jobs_run(done.stderr, quick),
+          "the finished cell is kept (no job for it; same file, time and bytes)")
+    check(jobs_run(done.stderr, slow) and
+          results.mismatch(results.read(results_dir / slow.file), slow) is None,
           "the interrupted cell is done after the resume")
+    # A job started for a finished cell (a scheduler starting it twice) does not run it.
+    again = subprocess.run([sys.executable, "-m", "ncube.run_cell", "plan.json", quick.file],
+                           cwd=results_dir, capture_output=True, text=True, timeout=60,
+                           env=dict(os.environ, PYTHONPATH=str(ROOT / "analysis")))
+    check(again.returncode == 0 and "not run again" in again.stderr and
+          file_state(results_dir / quick.file) == kept,
+          f"a cell's job leaves a finished result alone ({again.stderr.strip()[:120]})")
+
+    # Stopped a moment earlier: the result verified under its temporary name, not yet given
+    # its final name. Nothing is left that could pass for done, and the cell runs again.
+    (work / "quick.yaml").write_text(
+        "measure: total_seconds\ncells: [{scene: scene0, R: 1, iterations: 1, samples: 4}]\n")
+    results_dir = work / "killed-earlier"
+    reached = stopped_sweep(work / "quick.yaml", results_dir, {"verified": quick},
+                            work / "earlier-signals")
+    check(reached and not (results_dir / quick.file).exists() and
+          not list((results_dir / "cells").glob("*")),
+          "a cell stopped before its file got its name leaves no file at all")
+    done = run_sweep(work / "quick.yaml", "--results", results_dir)
+    check(done.returncode == 0 and jobs_run(done.stderr, quick) and
+          results.mismatch(results.read(results_dir / quick.file), quick) is None,
+          "that cell runs again on the resume")
+
+
+def test_reproduce_check(work):
+    """experiments/reproduce --check lists the paper's cells and writes nothing."""
+    folder = work / "reproduce-check"
+    done = subprocess.run([str(ROOT / "experiments" / "reproduce"), "--results", str(folder),
+                           "--check"], capture_output=True, text=True, timeout=240)
+    check(done.returncode == 0 and "table1:" in done.stdout and "timeline:" in done.stdout
+          and not folder.exists(),
+          f"experiments/reproduce --check lists the cells, writes nothing ({done.stderr[-200:]})")
 
 
 def test_cluster_mode(work):
@@ -231,7 +310,8 @@ def test_cluster_mode(work):
 def main():
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-test-") as folder:
         work = Path(folder)
-        for test in (test_validation, test_local_sweep, test_kill_and_resume, test_cluster_mode):
+        for test in (test_validation, test_local_sweep, test_kill_and_resume,
+                     test_reproduce_check, test_cluster_mode):
             print(f"-- {test.__name__}", flush=True)
             test(work)
     print(f"sweep_test: {len(failures)} failure(s)")

@@ -1,6 +1,6 @@
-"""The plots of any sweep (ncube.summary). One line per configuration: scene, V and every other
-option that varies in the sweep (named in the legend); deterministic output (no dates in the
-PNGs)."""
+"""The plots of any sweep (ncube.summary). One line per configuration: scene file, V and every
+other option that varies in the sweep (named in the legend by the scene's label, unique per
+file: ncube.summary.scene_labels); deterministic output (no dates in the PNGs)."""
 import io
 import json
 
@@ -21,8 +21,11 @@ def save(fig, path):
 
 
 # What makes a cell's configuration, beside R: a line joins only cells equal in all of these.
-CONFIGURATION = (["scene", "V"] + [name for name in opts.OPTIONS if name not in ("R", "V")] +
-                 ["platform", "cost_model", "cfg"])
+# The scene is its file (two files may share a scene name); its label names it in the legend
+# and comes first, so that series sort by what the legend shows.
+CONFIGURATION = (["scene_label", "V"] + [name for name in opts.OPTIONS if name not in ("R", "V")] +
+                 ["platform", "cost_model", "cfg", "scene_file"])
+OTHER_KEYS = CONFIGURATION[2:-1]   # named in the legend when they vary between the series
 
 
 def _hashable(value):
@@ -31,7 +34,7 @@ def _hashable(value):
 
 def _series(table, y):
     """{configuration: [(R, nodes, y)]} over the cells with a value: one series per value of
-    every configuration key (scene, V and every option), so that no line joins cells that
+    every configuration key (scene file, V and every option), so that no line joins cells that
     differ in anything but R."""
     groups = {}
     for row in table:
@@ -43,10 +46,11 @@ def _series(table, y):
 
 
 def _label(key, all_keys):
-    """The scene and V, then every other key whose value differs between the series."""
+    """The scene's label and V, then every other key whose value differs between the series."""
     values = dict(key)
-    varying = [k for k in CONFIGURATION[2:] if len({dict(o).get(k) for o in all_keys}) > 1]
-    return f"{values['scene']} V={values['V']}" + "".join(f", {k}={values[k]}" for k in varying)
+    varying = [k for k in OTHER_KEYS if len({dict(o).get(k) for o in all_keys}) > 1]
+    return f"{values['scene_label']} V={values['V']}" + "".join(f", {k}={values[k]}"
+                                                                  for k in varying)
 
 
 def time_vs_R(table, ylabel, path):
@@ -88,9 +92,9 @@ def ratio_vs_nodes(table, y, path):
     return save(fig, path)
 
 
-def node_breakdown(loaded, path):
+def node_breakdown(loaded, scene_labels, path):
     """Per cell: the mean share of compute, message overhead and waiting of its radiosity and
-    of its visibility processors."""
+    of its visibility processors; a cell named by its scene's label ({scene file: label})."""
     bars = []
     for cell, result in loaded:
         if not result or result.get("status") != "ok":
@@ -99,7 +103,7 @@ def node_breakdown(loaded, path):
             nodes = [n for n in result["nodes"] if n["role"] == role]
             total = sum(n["compute_seconds"] + n["overhead_seconds"] + n["waiting_seconds"] for n in nodes)
             if nodes and total > 0:
-                bars.append((f"{cell.scene} R={cell.R} V={cell.V} {role[:3]}",
+                bars.append((f"{scene_labels[cell.scene_file]} R={cell.R} V={cell.V} {role[:3]}",
                              [sum(n[f"{k}_seconds"] for n in nodes) / total
                               for k in ("compute", "overhead", "waiting")]))
     if not bars:

@@ -9,7 +9,9 @@ Every sweep file is validated first (exit 2 with the file, cell and key at the f
 The cells of all sweeps go to DIR/cells/ (traced ones to DIR/traced/), named after their
 identity, so a cell in several sweeps runs once; DIR/sweeps/<name>/ gets each sweep's CSV and
 plots. Interrupt it (Ctrl-C, SIGTERM) and run it again: finished cells are kept, the running
-ones are stopped with their simulations and start again."""
+ones are stopped with their simulations and start again. A failure ends with one plain line
+saying what happened and what to do, and an exit code (ncube.outcome, docs/sweeps.md); the last
+line names the tables this run wrote."""
 import argparse
 import json
 import os
@@ -19,16 +21,21 @@ import sys
 import time
 from pathlib import Path
 
-from . import output_file, paths, results
+from . import outcome, output_file, paths, results
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
 SNAKEMAKE = "/usr/bin/snakemake"
 
 
-def write_plan(sweeps, results_dir):
+def write_plan(sweeps, results_dir, pending, rerun_finished=False):
+    """The plan Snakemake reads: every sweep with its cells, the result files of the cells to
+    run ("pending"; the Snakefile's cell rules make only those) and whether a cell's job may
+    replace a finished result (only when Snakemake is told to force reruns)."""
     plan = results_dir / "plan.json"
-    text = json.dumps({"sweeps": [s.to_dict() for s in sweeps]}, indent=1) + "\n"
+    text = json.dumps({"sweeps": [s.to_dict() for s in sweeps],
+                       "pending": [c.file for c in pending],
+                       "rerun_finished": rerun_finished}, indent=1) + "\n"
     output_file.write(plan, text)
     return plan
 
@@ -53,13 +60,37 @@ def discard_unfinished(cells, results_dir="."):
     return rejected
 
 
+def cells_to_run(sweeps, results_dir, rerun_all=False):
+    """The sweep's own decision of what runs, made from the result files before Snakemake
+    starts: a cell runs unless its verified result file is there (discard_unfinished moves any
+    other file aside first). A cell that is not to run is no job's output, so Snakemake's own
+    bookkeeping (an incomplete mark left by a stop at any instant, a touch, the deletion of a
+    failed job's outputs) can neither run it again nor delete its file. A sweep's table is made
+    again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or
+    --forcerun asked for) hands every cell to Snakemake, which then decides."""
+    cells = list({c.id: c for s in sweeps for c in s.cells}.values())
+    discard_unfinished(cells, results_dir)
+    missing = {c.file for c in cells if not (Path(results_dir) / c.file).exists()}
+    for sweep in sweeps:
+        if any(c.file in missing for c in sweep.cells):
+            (Path(results_dir) / "sweeps" / sweep.name / "cells.csv").unlink(missing_ok=True)
+    return [c for c in cells if rerun_all or c.file in missing]
+
+
+FORCING = ("-F", "--forceall", "-R", "--forcerun")
+
+
+def forces_reruns(snakemake_arguments):
+    return any(a in FORCING or a.startswith("--forcerun=") for a in snakemake_arguments)
+
+
 def snakemake_command(plan, results_dir, args):
-    # --ignore-incomplete: a cell's file appears only once it is verified (ncube.run_cell) and
-    # every existing file is verified again before the run (discard_unfinished), so Snakemake's
-    # own bookkeeping must not rerun a cell that finished just before an interruption.
-    # --keep-incomplete: for the same reason, a job stopped by an interruption between giving
-    # its verified file the final name and exiting must not have that file deleted (Snakemake
-    # deletes the outputs of every job it sees fail, and a stopped job is one).
+    # Which cells run is decided before (cells_to_run); Snakemake's own bookkeeping only
+    # concerns the cells to run and the tables. --ignore-incomplete: a cell's file appears only
+    # verified (ncube.run_cell), so an incomplete mark Snakemake left on one is no reason to
+    # refuse the folder. --keep-incomplete: a job stopped between giving its verified file the
+    # final name and exiting keeps that file (Snakemake deletes the outputs of every job it sees
+    # fail, and a stopped job is one); the next run then finds the cell finished.
     # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
                "--config", f"plan={plan}", "--ignore-incomplete", "--keep-incomplete",
@@ -76,8 +107,10 @@ def snakemake_command(plan, results_dir, args):
 
 def run_snakemake(command):
     """Runs Snakemake in its own process group; a signal to this process stops the group, so
-    no job and no simulation outlives the sweep."""
-    process = subprocess.Popen(command, start_new_session=True)
+    no job and no simulation outlives the sweep (then outcome.Interrupted is raised). Returns
+    Snakemake's exit status and its messages (outcome.SnakemakeMessages)."""
+    process = subprocess.Popen(command, start_new_session=True, stderr=subprocess.PIPE)
+    messages = outcome.SnakemakeMessages(process.stderr)
 
     def stop(signum, _frame):
         for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 0.0)):
@@ -93,19 +126,31 @@ def run_snakemake(command):
             os.killpg(process.pid, signal.SIGKILL)
         except ProcessLookupError:
             pass
+        messages.wait()
         # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
         # leave its lock behind, and the next run would refuse the folder. The lock is this
-        # run's own (no other instance could hold the folder while it ran), so it goes.
+        # run's own (no other sweep holds the folder while this one runs: hold_folder), so it
+        # goes.
         try:
             subprocess.run(command + ["--unlock"], stdout=subprocess.DEVNULL,
                            stderr=subprocess.DEVNULL, timeout=120, check=False)
         except (OSError, subprocess.SubprocessError):
             pass
-        sys.exit(128 + signum)
+        raise outcome.Interrupted(signum)
 
     signal.signal(signal.SIGINT, stop)
     signal.signal(signal.SIGTERM, stop)
-    return process.wait()
+    status = process.wait()
+    messages.wait()
+    return status, messages
+
+
+def not_written(error, results_dir):
+    """The plain line and exit code of the runner's own writes failing."""
+    if outcome.is_full(error):
+        return outcome.say_full(results_dir)
+    outcome.say(f"{error.filename or results_dir}: cannot be written: {error.strerror or error}")
+    return outcome.NOT_WRITTEN
 
 
 def main(argv=None):
@@ -141,18 +186,36 @@ def main(argv=None):
     if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
         os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
-    results_dir.mkdir(parents=True, exist_ok=True)
-    plan = write_plan(sweeps, results_dir)
+    try:
+        results_dir.mkdir(parents=True, exist_ok=True)
+        held = outcome.hold_folder(results_dir)
+        if held is None:
+            outcome.final_line(None, [])
+            return outcome.FOLDER_IN_USE
+        forced = forces_reruns(args.snakemake)
+        pending = cells_to_run(sweeps, results_dir, forced)
+        plan = write_plan(sweeps, results_dir, pending, forced)
+    except OSError as e:
+        code = not_written(e, results_dir)
+        outcome.final_line(None, [])
+        return code
     done = sum((results_dir / c.file).exists() for c in cells.values())
-    print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a result "
-          f"file in {results_dir}", flush=True)
+    print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a finished "
+          f"result file in {results_dir}, " +
+          ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
+    tables = [results_dir / "sweeps" / s.name / "cells.csv" for s in sweeps]
+    before = outcome.stamps(tables)
     start = time.monotonic()
-    status = run_snakemake(snakemake_command(plan, results_dir, args))
-    wall = time.monotonic() - start
-    print(f"sweep: {wall:.1f} s wall time; tables: " +
-          ", ".join(str(results_dir / "sweeps" / s.name / "cells.csv") for s in sweeps), flush=True)
-    return status
-
+    try:
+        status, messages = run_snakemake(snakemake_command(plan, results_dir, args))
+        code = outcome.OK
+        if status != 0:   # a cell's file appears only verified: existing means finished
+            missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
+            code = outcome.failed(status, messages, results_dir, missing)
+    except outcome.Interrupted as stop:
+        code = outcome.say_interrupted(stop.signum)
+    outcome.final_line(time.monotonic() - start, outcome.tables_written(before, tables))
+    return code
 
 if __name__ == "__main__":
     sys.exit(main())

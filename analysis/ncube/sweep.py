@@ -209,33 +209,42 @@ def scene_summary(path):
     return scene.get("name", Path(path).stem), len(scene.get("patches", []))
 
 
-def _gltf_document(path):
-    """A glTF file's JSON; for a .glb the first chunk after the 12-byte header (length, type
-    "JSON", then the text), which may name external buffers beside its own binary chunk."""
-    data = Path(path).read_bytes()
-    if Path(path).suffix.lower() == ".glb":
-        length = int.from_bytes(data[12:16], "little") if len(data) >= 20 else 0
-        data = data[20:20 + length]
-    return json.loads(data.decode("utf-8", errors="replace"))
+def _signature(file):
+    """What tells a changed file without reading it (inode, size, modification time)."""
+    try:
+        info = os.stat(file)
+    except OSError:
+        return None
+    return info.st_ino, info.st_size, info.st_mtime_ns
+
+
+_listings = {}   # model path -> (the signature of every file listed, the listing)
+
+
+def _listed_inputs(path):
+    """Every file ./simulate reads for the model at `path`, as it reads them: its --list-inputs,
+    ((role, file, sha256), ...), each file opened and hashed through its input gate (regular
+    files only, in the model's folder, each kind's size limit: docs/cli.md, "Input files").
+    The sweep never parses a model itself: Assimp's reading of a name (an mtllib with spaces
+    is one file) is the only one. Asked again only when a file listed has changed."""
+    cached = _listings.get(path)
+    if cached and all(_signature(file) == signature for file, signature in cached[0]):
+        return cached[1]
+    run = subprocess.run([paths.simulate_binary(), path, "--list-inputs"], capture_output=True,
+                         text=True, env=paths.simulate_environment())
+    if run.returncode != 0:
+        raise ValueError(run.stderr.strip().removeprefix("simulate: "))
+    listing = tuple((entry["role"], entry["file"], entry["sha256"])
+                    for entry in json.loads(run.stdout)["inputs"])
+    _listings[path] = ([(file, _signature(file)) for _, file, _ in listing], listing)
+    return listing
 
 
 def model_parts(path):
-    """The files a model reads besides itself: an OBJ's material libraries, a glTF's or a
-    .glb's buffers and images (relative URIs; a data: URI is inside the file)."""
-    path = Path(path)
-    parts = []
-    if path.suffix.lower() == ".obj":
-        for line in path.read_text(errors="replace").splitlines():
-            words = line.split()
-            if words and words[0] == "mtllib":
-                parts += [path.parent / name for name in words[1:]]
-    elif path.suffix.lower() in (".gltf", ".glb"):
-        document = _gltf_document(path)
-        for item in document.get("buffers", []) + document.get("images", []):
-            uri = item.get("uri", "")
-            if uri and not uri.startswith("data:"):
-                parts.append(path.parent / uri)
-    return parts
+    """The files a model reads besides itself (an OBJ's material libraries, a glTF's or a
+    .glb's buffers), each (path, sha256), in the order ./simulate reads them."""
+    return [(Path(file), sha256) for role, file, sha256 in _listed_inputs(str(path))
+            if role == "model part"]
 
 
 def parts_sha256(path):
@@ -245,8 +254,8 @@ def parts_sha256(path):
     if not parts:
         return ""
     digest = hashlib.sha256()
-    for part in parts:
-        digest.update(f"{part.name}\0{file_sha256(part)}\0".encode())
+    for part, sha256 in parts:
+        digest.update(f"{part.name}\0{sha256}\0".encode())
     return "sha256:" + digest.hexdigest()
 
 

@@ -42,7 +42,7 @@ CostModel load_cost_model(const std::string& path) {
           NCUBE_DATA_SIZES(NCUBE_SIZE_SPEC)
 #undef NCUBE_SIZE_SPEC
   };
-  const auto values = read_parameter_file(path, specs);
+  const auto values = read_parameter_file(path, kCostModelFile, specs);
   CostModel m;
   for (const CostParameter& p : cost_parameters()) m.*p.field = values.at(p.name);
   return m;

@@ -15,7 +15,7 @@ namespace ncube {
 // X(parameter, smallest value, largest value, what it is). Every size is a whole number of
 // bytes; the largest values are sanity bounds (a typo, not a model, beyond them).
 #define NCUBE_DATA_SIZES(X)                                                                     \
-  X(message_header_bytes, 0, 1e9, "type, sender, block number of every message")               \
+  X(message_header_bytes, 0, 1e9, "type and block number of every message")                    \
   X(shooter_record_bytes, 1, 1e9, "patch index, geometry, unshot radiosity and power")          \
   X(point_bytes, 1, 1e9, "one visibility point sent to a visibility processor")                 \
   X(patch_geometry_bytes, 1, 1e9, "a patch as stored for intersection tests")                   \

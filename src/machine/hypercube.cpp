@@ -6,6 +6,18 @@
 #include <string>
 
 namespace ncube {
+namespace {
+
+// Tells SimGrid the platform is complete, as its XML reader does at </platform>, before the
+// zone is sealed. SimGrid 3.32's tracer (tracing:yes) adds a Paje container for each link it
+// is told of until then, and Link::seal() tells it again on every call: sealing the zone
+// seals each link a second time, which ended the run with "container loopback-0 already
+// present in all_containers_". The tracer then writes the platform's graph, which needs
+// every host's container: the hosts are sealed as they are made, as the XML reader does.
+// No simulated time moves (tests/simgrid_tracing_test.sh compares the result files).
+void announce_platform_built() { simgrid::s4u::Engine::on_platform_created(); }
+
+}  // namespace
 
 std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
   namespace s4u = simgrid::s4u;
@@ -18,7 +30,7 @@ std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
     // routing from address bit 0 upward. (The coordinate vector the zone passes lists the
     // rank's bits from the top one down, so it must not be read as bit k = coord[k].)
     const unsigned long address = rank;
-    s4u::Host* host = zone->create_host("node-" + std::to_string(address), speed);
+    s4u::Host* host = zone->create_host("node-" + std::to_string(address), speed)->seal();
     hosts[address] = host;
     return std::make_pair(host->get_netpoint(), nullptr);
   };
@@ -28,16 +40,16 @@ std::vector<simgrid::s4u::Host*> build_hypercube(const PlatformConfig& config) {
   };
   const std::vector<unsigned long> dimensions(std::size_t(config.dimension), 2);
   s4u::ClusterCallbacks callbacks(make_node, make_loopback, {});
+  s4u::NetZone* zone = nullptr;
   if (config.dimension == 0) {
     // A single node: no links at all.
-    s4u::NetZone* zone = s4u::create_full_zone("ncube");
-    hosts[0] = zone->create_host("node-0", speed);
-    zone->seal();
-    return hosts;
+    zone = s4u::create_full_zone("ncube");
+    hosts[0] = zone->create_host("node-0", speed)->seal();
+  } else {
+    zone = s4u::create_torus_zone("ncube", nullptr, dimensions, callbacks, config.link_bandwidth,
+                                  config.hop_latency, s4u::Link::SharingPolicy::SPLITDUPLEX);
   }
-  s4u::NetZone* zone = s4u::create_torus_zone("ncube", nullptr, dimensions, callbacks,
-                                              config.link_bandwidth, config.hop_latency,
-                                              s4u::Link::SharingPolicy::SPLITDUPLEX);
+  announce_platform_built();
   zone->seal();
   return hosts;
 }

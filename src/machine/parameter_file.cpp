@@ -5,15 +5,15 @@
 #include <nlohmann/json.hpp>
 
 #include "util/input_error.h"
-#include "util/text_file.h"
+#include "util/input_file.h"
 
 namespace ncube {
 
-std::map<std::string, double> read_parameter_file(const std::string& path,
+std::map<std::string, double> read_parameter_file(const std::string& path, const InputKind& kind,
                                                   const std::vector<ParameterSpec>& specs,
                                                   const std::vector<std::string>& sections) {
   // A parameter file is a few kilobytes; the limit stops a wrong path such as /dev/zero.
-  const std::string text = read_text_file(path, kMaxParameterFileBytes, "file");
+  const std::string text = read_input_file(path, kind);
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "util/input_file.h"
+
 namespace ncube {
 
 struct ParameterSpec {
@@ -19,13 +21,15 @@ struct ParameterSpec {
 };
 
 // Largest parameter file read, in bytes.
-constexpr std::size_t kMaxParameterFileBytes = std::size_t(1) << 20;
+constexpr std::size_t kMaxParameterFileBytes = kPlatformFile.max_bytes;
+static_assert(kCostModelFile.max_bytes == kMaxParameterFileBytes);
 
-// Reads `path` and returns the value of every parameter in `specs`. Throws InputError naming
-// the file and the parameter when one is missing, unknown, not a finite number, out of range
-// or (for integers) fractional.
+// Reads `path` as `kind` (kPlatformFile or kCostModelFile: util/input_file.h) and returns
+// the value of every parameter in `specs`. Throws InputError naming the file and the
+// parameter when one is missing, unknown, not a finite number, out of range or (for
+// integers) fractional.
 // `sections` names further top-level keys the file may have (read by the caller).
-std::map<std::string, double> read_parameter_file(const std::string& path,
+std::map<std::string, double> read_parameter_file(const std::string& path, const InputKind& kind,
                                                   const std::vector<ParameterSpec>& specs,
                                                   const std::vector<std::string>& sections = {});
 

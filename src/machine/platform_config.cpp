@@ -1,19 +1,19 @@
 #include "machine/platform_config.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "machine/parameter_file.h"
 #include "machine/simgrid_platform_file.h"
 #include "machine/simgrid_settings.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
 
 std::map<std::string, std::string> read_simgrid_config(const std::string& path) {
-  std::ifstream in(path);
-  const nlohmann::json doc = nlohmann::json::parse(in);  // already checked by the reader
+  // Already checked by the reader.
+  const nlohmann::json doc = nlohmann::json::parse(read_input_file(path, kPlatformFile));
   if (!doc.contains("simgrid_config")) return PlatformConfig{}.simgrid_config;
   const nlohmann::json& section = doc["simgrid_config"];
   if (!section.is_object()) throw InputError(path + ": \"simgrid_config\": expected an object");
@@ -36,7 +36,7 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
 PlatformConfig load_platform_config(const std::string& path,
                                     const std::vector<std::string>& simgrid_arguments) {
   if (is_simgrid_platform_file(path)) return read_simgrid_platform_file(path, simgrid_arguments);
-  const auto v = read_parameter_file(path,
+  const auto v = read_parameter_file(path, kPlatformFile,
                                      // Sanity bounds, far around the nCube2's values: within
                                      // them every simulated time stays finite and well inside
                                      // the range SimGrid computes with (docs/model.md, "Machine").

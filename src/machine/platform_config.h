@@ -1,6 +1,7 @@
 // The modeled machine, read from platforms/<machine>.json (e.g. platforms/ncube2.json).
-// The values live in that file only (one source): a default-constructed PlatformConfig is
-// an empty machine, never the nCube2.
+// The machine's values live in that file only (one source): a default-constructed
+// PlatformConfig has every number 0, never the nCube2's; its only defaults are the format and
+// the SimGrid settings a JSON file without "simgrid_config" gets (below).
 #pragma once
 
 #include <map>

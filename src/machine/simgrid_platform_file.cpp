@@ -1,13 +1,18 @@
 #include "machine/simgrid_platform_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <simgrid/s4u/Engine.hpp>
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <memory>
 #include <simgrid/s4u/NetZone.hpp>
 
 #include "machine/simgrid_session.h"
+#include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -25,10 +30,76 @@ double node_property(const std::string& path, simgrid::s4u::Host* host, const ch
   return value;
 }
 
+// "line <n>: <name>=" of the first attribute named `file` or `*_file` with a value, or "".
+// A plain scan, not std::regex: its recursion would overflow the stack on a large file.
+std::string file_attribute(const std::string& text) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find("file"); at != std::string::npos;
+       at = text.find("file", at + 1)) {
+    std::size_t begin = at;
+    while (begin > 0 && word(text[begin - 1])) --begin;
+    const bool named = begin == at || text[at - 1] == '_';  // "file" or "..._file"
+    if (!named || begin == 0 ||
+        !(std::isspace(static_cast<unsigned char>(text[begin - 1])) || text[begin - 1] == '<'))
+      continue;
+    std::size_t after = at + 4;
+    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= text.size() || text[after] != '=') continue;
+    ++after;
+    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= text.size() || (text[after] != '"' && text[after] != '\'')) continue;
+    const long line = long(std::count(text.begin(), text.begin() + long(at), '\n')) + 1;
+    return "line " + std::to_string(line) + ": " + text.substr(begin, at + 4 - begin) + "=";
+  }
+  return "";
+}
+
+// An attribute's text ("" when absent).
+std::string attribute(xmlNode* node, const char* name) {
+  xmlChar* value = xmlGetProp(node, reinterpret_cast<const xmlChar*>(name));
+  if (!value) return "";
+  std::string text(reinterpret_cast<const char*>(value));
+  xmlFree(value);
+  return text;
+}
+
+bool named(const xmlNode* node, const char* name) {
+  return node && node->type == XML_ELEMENT_NODE &&
+         xmlStrEqual(node->name, reinterpret_cast<const xmlChar*>(name));
+}
+
+// The file's <config><prop id= value=/></config> settings are SimGrid settings like --cfg, and
+// SimGrid applies them while it loads the file (a network model that cannot build the
+// platform aborts there): each is held to src/machine/simgrid_setting_ranges.h first. Read
+// with libxml2, without the network (the DOCTYPE's DTD is not fetched), without entities, and
+// recovering as far as it can from what SimGrid's lenient reader takes (a "--" in a comment).
+// `text` is the file as the input gate read it (libxml2 never opens the path itself).
+void check_config_tags(const std::string& path, const std::string& text) {
+  const std::unique_ptr<xmlDoc, void (*)(xmlDoc*)> document(
+      xmlReadMemory(text.data(), int(text.size()), path.c_str(), nullptr,
+                  XML_PARSE_NONET | XML_PARSE_RECOVER | XML_PARSE_NOERROR | XML_PARSE_NOWARNING),
+      xmlFreeDoc);
+  if (!document) return;  // SimGrid's own reader names what is wrong with the file
+  const xmlNode* platform = xmlDocGetRootElement(document.get());
+  for (xmlNode* config = platform ? platform->children : nullptr; config; config = config->next) {
+    if (!named(config, "config")) continue;
+    for (xmlNode* prop = config->children; prop; prop = prop->next) {
+      if (!named(prop, "prop")) continue;
+      const std::string name = attribute(prop, "id"), value = attribute(prop, "value");
+      const SimgridSettingRange* range = simgrid_setting_range(name);
+      const std::string problem = range ? setting_range_problem(*range, value) : "";
+      if (!problem.empty())
+        throw InputError(path + ": <config> <prop id=\"" + name + "\" value=\"" + value +
+                         "\">: " + problem);
+    }
+  }
+}
+
 }  // namespace
 
 bool is_simgrid_platform_file(const std::string& path) {
-  std::ifstream in(path);
+  // Either kind of platform file, up to the larger limit: only its first character is read.
+  InputStream in(path, InputKind{kPlatformFile.what, kSimgridPlatformFile.max_bytes});
   char c = 0;
   while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
   }
@@ -37,9 +108,20 @@ bool is_simgrid_platform_file(const std::string& path) {
 
 PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments) {
+  // SimGrid reads the descriptor the gate opened and checked, not the path again.
+  InputFile file(path, kSimgridPlatformFile);
+  // SimGrid would open the files an XML platform names (a host's speed_file, a link's
+  // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
+  const std::string text = file.read_all();
+  check_config_tags(path, text);
   simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
+  const std::string attribute = file_attribute(text);
+  if (!attribute.empty())
+    throw InputError(path + ": " + attribute +
+                     ": names a file, which SimGrid would read outside the input gate (files "
+                     "a platform names are not read: docs/cli.md, \"Input files\")");
   try {
-    engine.load_platform(path);
+    engine.load_platform(file.descriptor_path());
   } catch (const std::exception& e) {
     throw InputError(path + ": not a SimGrid platform file: " + e.what());
   }

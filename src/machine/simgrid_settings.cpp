@@ -9,10 +9,10 @@
 #include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/Host.hpp>
 #include <simgrid/s4u/NetZone.hpp>
-#include <xbt/config.hpp>
 #include <xbt/log.h>
 
 #include "machine/simgrid_outputs.h"
+#include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -33,19 +33,34 @@ std::string syntax_problem(const std::string& argument) {
   return "not a SimGrid setting (--cfg=NAME:VALUE or --log=CONTROL)";
 }
 
+// A --cfg value SimGrid would take but that ends or hangs the run (the table of
+// src/machine/simgrid_setting_ranges.h); "" for --log and for names SimGrid does not know
+// (SimGrid refuses those itself).
+std::string range_problem(const std::string& argument) {
+  const std::string cfg = "--cfg=";
+  if (argument.rfind(cfg, 0) != 0) return "";
+  const std::string setting = argument.substr(cfg.size());
+  const std::size_t colon = setting.find(':');
+  const SimgridSettingRange* range = simgrid_setting_range(setting.substr(0, colon));
+  return range ? setting_range_problem(*range, setting.substr(colon + 1)) : "";
+}
+
 // In the child: SimGrid with this one setting, up to the network model's creation, which is
 // when a model name is checked. Never returns.
 [[noreturn]] void try_in_child(const std::string& argument, int error_pipe) {
   dup2(error_pipe, STDERR_FILENO);
   dup2(error_pipe, STDOUT_FILENO);  // --cfg=help and the like print their text here
-  std::vector<std::string> storage{"simulate", ""};
-  int argc = 2;
+  // tracing:yes opens its trace (simgrid.trace unless named) when the platform starts: the
+  // check writes nothing, so the child's goes to /dev/null. A tracing/filename being checked
+  // comes after and wins, but without tracing:yes in the same child nothing is opened; and
+  // every file the argument names (a log appender's, the trace's) is /dev/null too.
+  std::vector<std::string> storage{"simulate", "--cfg=tracing/filename:/dev/null", ""};
+  int argc = 3;
   try {
-    storage[1] = simgrid_argument_for_check(argument);  // never the user's files
-    std::vector<char*> argv{storage[0].data(), storage[1].data(), nullptr};
+    storage[2] = simgrid_argument_for_check(argument);  // never the user's files
+    std::vector<char*> argv{storage[0].data(), storage[1].data(), storage[2].data(), nullptr};
     xbt_log_control_set("root.thresh:critical");
     simgrid::s4u::Engine engine(&argc, argv.data());
-    simgrid::config::set_value("tracing/filename", std::string("/dev/null"));  // nor simgrid.trace
     auto* zone = simgrid::s4u::create_full_zone("check");
     zone->create_host("check", 1e6);
     zone->seal();
@@ -105,8 +120,9 @@ std::string simgrid_refusal(const std::string& argument) {
 }  // namespace
 
 std::string simgrid_setting_problem(const std::string& argument) {
-  const std::string problem = syntax_problem(argument);
-  return problem.empty() ? simgrid_refusal(argument) : problem;
+  if (std::string problem = syntax_problem(argument); !problem.empty()) return problem;
+  if (std::string problem = range_problem(argument); !problem.empty()) return problem;
+  return simgrid_refusal(argument);
 }
 
 void check_simgrid_settings(const std::vector<std::string>& arguments) {

@@ -2,7 +2,9 @@
 // run's Engine sees them. SimGrid ends the process on a bad one (an abort with a backtrace,
 // exit 134, or an exception listing every key), so each setting is first tried in a child
 // process that creates an Engine with it and builds a one-host platform; what SimGrid says
-// there becomes one InputError line (exit 2) naming the setting.
+// there becomes one InputError line (exit 2) naming the setting. Before that, a --cfg value
+// must lie in the range a run survives (src/machine/simgrid_setting_ranges.h): SimGrid takes
+// many values (a NaN precision, a 1 KiB stack) that end the run later.
 #pragma once
 
 #include <string>

@@ -3,17 +3,16 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 #include <nlohmann/json.hpp>
+
+#include "util/input_file.h"
 
 namespace ncube::models {
 
 // Assimp 5.2 does not read KHR_materials_emissive_strength; its materials keep the file's order.
 std::vector<GltfMaterialExtras> gltf_material_extras(const std::string& path, bool binary) {
-  std::ifstream in(path, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = read_input_file(path, kModelFile);
   if (binary) {  // 12-byte header, then the JSON chunk
     if (text.size() < 20) return {};
     std::uint32_t length = 0;

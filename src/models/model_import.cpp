@@ -1,7 +1,5 @@
 #include "models/model_import.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -22,6 +20,7 @@
 #include "models/recording_io.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -53,28 +52,22 @@ bool is_model_file(const std::string& path) {
 
 nlohmann::json import_model(const std::string& path, const ImportOptions& options,
                             ImportSummary& summary) {
-  struct stat info {};
-  if (stat(path.c_str(), &info) != 0) throw InputError(path + ": cannot open model file");
-  if (!S_ISREG(info.st_mode)) throw InputError(path + ": not a regular file");
-  if (std::size_t(info.st_size) > kMaxSceneFileBytes)
-    throw InputError(path + ": model file is larger than " + std::to_string(kMaxSceneFileBytes) +
-                     " bytes (the limit)");
+  {  // the gate's refusals (a FIFO, a loop of links, too large) before Assimp's
+    const InputFile model(path, kModelFile);
+  }
   if (!(options.scale >= 1e-100 && options.scale <= 1e100))
     throw InputError("--scale: must be from 1e-100 to 1e100");
 
   if (lower_extension(path) == ".ply") check_ply_length(path);
   Assimp::Importer importer;
-  std::vector<std::string> missing, too_large;
-  importer.SetIOHandler(new RecordingIOSystem(summary.files, missing, too_large,
-                                              kMaxSceneFileBytes));  // the importer owns it
+  std::vector<std::string> read, problems;  // this import's files (a summary may hold others)
+  importer.SetIOHandler(new RecordingIOSystem(path, options.model_folders, read,
+                                              problems));  // the importer owns it
   // No triangulation: quads stay quads, and which faces to split is decided here. The
   // validation step refuses out-of-range indices and other broken structures.
   const aiScene* model = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-  for (const std::string& file : too_large)
-    throw InputError(path + ": names " + file + ", which is larger than " +
-                     std::to_string(kMaxSceneFileBytes) + " bytes (the limit; not read)");
-  for (const std::string& file : missing)
-    throw InputError(path + ": names " + file + ", which cannot be opened");
+  if (!problems.empty()) throw InputError(problems.front());
+  summary.files.insert(summary.files.end(), read.begin(), read.end());
   if (!model || !model->mRootNode) {
     const std::string error = importer.GetErrorString();
     // Assimp's OBJ reader leaves a face of 1 or 2 corners for its validation to find.
@@ -96,7 +89,7 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   const std::vector<GltfMaterialExtras> extras =
       gltf ? gltf_material_extras(path, lower_extension(path) == ".glb") : std::vector<GltfMaterialExtras>();
   const bool obj = lower_extension(path) == ".obj";
-  const MtlNames mtl = obj ? mtl_names(summary.files) : MtlNames();
+  const MtlNames mtl = obj ? mtl_names(read) : MtlNames();
   if (obj) {
     const std::string problem = obj_material_problem(path, mtl);
     if (!problem.empty()) throw InputError(path + ": " + problem);

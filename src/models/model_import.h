@@ -21,6 +21,8 @@ struct ImportOptions {
   bool merge_coplanar = false; // --merge-coplanar: two triangles that make a planar convex
                                // quad of one material are one patch
   std::vector<std::string> lights;  // --light NAME[=R,G,B]: a material or mesh that emits
+  // --model-folder DIR: a folder besides the model's own whose files the model may name
+  std::vector<std::string> model_folders;
 };
 
 // The paper's scenes have about 14 to 22 elements per patch.
@@ -33,7 +35,7 @@ struct ImportSummary {
   long split = 0;           // faces split into triangles (not planar, not convex, > 4 corners)
   long degenerate = 0;      // faces dropped: zero area or repeated corners
   long merged = 0;          // pairs of triangles merged into quads (--merge-coplanar)
-  std::vector<std::string> files;  // every file read (the model, its MTL, its buffers)
+  std::vector<std::string> files;  // every file read (the model, its MTL, its buffers), as opened
 };
 
 // Whether `path` names a model file this reads (by extension: .obj, .ply, .gltf, .glb).

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
+
+#include "util/input_file.h"
 
 namespace ncube::models {
 namespace {
@@ -31,7 +32,7 @@ MtlNames mtl_names(const std::vector<std::string>& files) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".mtl") continue;
-    std::ifstream in(file);
+    InputStream in(file, kModelPart);
     std::string line, keyword, rest, material;
     while (std::getline(in, line)) {
       split_line(line, keyword, rest);
@@ -43,7 +44,7 @@ MtlNames mtl_names(const std::vector<std::string>& files) {
 }
 
 std::string obj_material_problem(const std::string& path, const MtlNames& names) {
-  std::ifstream in(path);
+  InputStream in(path, kModelFile);
   std::string line, keyword, rest;
   bool library = false, chosen = false;
   for (long number = 1; std::getline(in, line); ++number) {

@@ -3,11 +3,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
+#include <istream>
 #include <map>
 #include <sstream>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -120,7 +121,7 @@ bool read_value(std::istream& in, const Header& header, const std::string& type,
 }  // namespace
 
 void check_ply_length(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  InputStream in(path, kModelFile);
   const Header header = read_header(in);
   // Assimp 5.2 reads a header without end_header forever (a file cut in its header).
   if (!header.ended)
@@ -152,9 +153,7 @@ void check_ply_length(const std::string& path) {
       throw InputError(path + ": the PLY header declares " + declared + " records, the file holds " +
                        std::to_string(lines) + " lines of data");
   } else {
-    in.clear();
-    in.seekg(0, std::ios::end);
-    const long long body = (long long)in.tellg() - (long long)header.bytes;
+    const long long body = (long long)in.file().size() - (long long)header.bytes;
     if (body < least_bytes)
       throw InputError(path + ": the PLY header declares " + declared + " records (at least " +
                        std::to_string(least_bytes) + " bytes), the file holds " +
@@ -163,7 +162,7 @@ void check_ply_length(const std::string& path) {
 }
 
 std::vector<glm::dvec3> ply_face_colours(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  InputStream in(path, kModelFile);
   const Header header = read_header(in);
   std::vector<glm::dvec3> colours;
   // Faces without colours (the usual PLY) are not read here at all: Assimp reads them.

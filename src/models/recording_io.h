@@ -1,36 +1,48 @@
-// Assimp's file system for the importer: every file a model reads is noted (its identity for
-// provenance and sweeps) and every file it names but cannot open (a missing MTL, which Assimp
-// alone would replace by a default material in silence).
+// Assimp's file system for the importer: every file Assimp opens goes through the input gate
+// (util/input_file.h), every file the model names must lie in the model's own folder (or a
+// folder the user names with --model-folder), and every file read is noted (its identity for
+// provenance and sweeps). A file the model names that cannot be read (missing, a FIFO, too
+// large, outside the folder) is an error, where Assimp alone would go on without it (a
+// default material in place of a missing MTL).
 #pragma once
-
-#include <cstddef>
-#include <string>
-#include <vector>
 
 #include <assimp/DefaultIOSystem.h>
 
+#include <string>
+#include <vector>
+
 namespace ncube::models {
 
-// Assimp's file system, noting every file the model reads (the MTL, glTF buffers): the
-// model's identity for sweeps and provenance is all of them.
-// A file the model names but that is missing (an MTL library) is an error, where Assimp
-// would go on with a default material.
-// A file over `largest` bytes is not opened at all (noted in `too_large`): a model's size
-// limit holds for its parts before Assimp reads them, not after.
 class RecordingIOSystem : public Assimp::DefaultIOSystem {
  public:
-  RecordingIOSystem(std::vector<std::string>& files, std::vector<std::string>& missing,
-                    std::vector<std::string>& too_large, std::size_t largest)
-      : files_(files), missing_(missing), too_large_(too_large), largest_(largest) {}
+  // `model`: the model's path as the user named it; `folders`: further folders its files may
+  // lie in. `files` receives every file read (the model first), `problems` one message for
+  // each file the model names that is not read (Assimp swallows exceptions: the importer
+  // throws the first after Assimp returns).
+  RecordingIOSystem(const std::string& model, const std::vector<std::string>& folders,
+                    std::vector<std::string>& files, std::vector<std::string>& problems);
   bool Exists(const char* file) const override;
   Assimp::IOStream* Open(const char* file, const char* mode) override;
 
  private:
-  static void note(std::vector<std::string>& list, const char* file);
+  // A file Assimp asks for: the path to open ("" when refused, the problem noted) and the
+  // name the model gives it (Assimp's folder prefix taken off).
+  struct Asked {
+    std::string target, reference;
+  };
+  Asked checked(const std::string& file) const;
+  // `problem` when the opened file (links resolved) lies in no allowed folder, else "".
+  std::string outside(const std::string& reference, const std::string& real) const;
+  void note(std::vector<std::string>& list, const std::string& text) const;
+
+  std::string model_;
+  std::string prefix_;                // the model's folder as Assimp writes it before a name
+  std::vector<std::string> allowed_;  // canonical folders
   std::vector<std::string>& files_;
-  std::vector<std::string>& missing_;
-  std::vector<std::string>& too_large_;
-  std::size_t largest_;
+  std::vector<std::string>& problems_;
 };
+
+// Whether `path` (canonical) lies in `folder` (canonical) or below it.
+bool lies_in(const std::string& path, const std::string& folder);
 
 }  // namespace ncube::models

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -55,8 +56,7 @@ void ActivityRecord::write(const std::function<void(std::string_view)>& out) con
 }
 
 ActivityRecord ActivityRecord::read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read the activity record");
+  InputStream in(path, kActivityRecord);
   char header[sizeof kHeader - 1];
   if (!in.read(header, sizeof header) || std::memcmp(header, kHeader, sizeof header) != 0)
     throw std::runtime_error(path + ": not an activity record (no \"ncube-activities 1\" line)");

@@ -16,7 +16,9 @@ namespace ncube {
 #define NCUBE_WORK_COUNTERS(X)                                                                  \
   X(shooter_candidates, flops_per_shooter_candidate,                                            \
     "patches compared in the search for the shooter")                                           \
-  X(receivers, flops_per_receiver, "elements tested for facing the shooter")                    \
+  X(receivers, flops_per_receiver,                                                              \
+    "held elements looked at for a shot: every one the processor holds (the shooter's own "     \
+    "and those facing away included), with or without --skip-facing-away")                      \
   X(rays, flops_per_ray, "shadow rays set up (one per receiver and part)")                      \
   X(ray_patch_tests, flops_per_ray_patch_test, "ray-patch intersection tests (section 2.2)")    \
   X(plane_crossings, flops_per_plane_crossing,                                                  \

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "util/input_error.h"
-#include "util/text_file.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -535,7 +535,7 @@ Scene scene_from_document(const json& root, const std::string& path, SceneElemen
 
 Scene load_scene(const std::string& path, SceneElements elements) {
   if (path.empty()) throw InputError("the scene file name is empty");
-  return parse_scene(read_text_file(path, kMaxSceneFileBytes, "scene file"), path, elements);
+  return parse_scene(read_input_file(path, kSceneFile), path, elements);
 }
 
 }  // namespace ncube

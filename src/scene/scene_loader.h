@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
+#include "util/input_file.h"
 
 namespace ncube {
 
@@ -18,7 +19,7 @@ constexpr long kMaxElementsPerScene = 1L << 24;
 // Largest scene file read, in bytes: a larger file (or an endless one such as /dev/zero) is
 // rejected before it is parsed. 256 MiB is the memory of the whole 64-node nCube2, and
 // far beyond the paper's scenes (scene3: 0.3 MB).
-constexpr std::size_t kMaxSceneFileBytes = std::size_t(256) << 20;
+constexpr std::size_t kMaxSceneFileBytes = kSceneFile.max_bytes;
 // Deepest nesting of JSON arrays and objects accepted; a scene needs 5.
 constexpr int kMaxNestingDepth = 16;
 // Non-zero emission channels must lie in [kMinEmission, kMaxEmission]: emission units are

@@ -1,7 +1,8 @@
 #include "simulation/provenance.h"
 
 #include "simulation/result_file.h"
-#include "util/file_hash.h"
+#include "models/model_import.h"
+#include "util/input_file.h"
 #include "util/version.h"
 
 namespace ncube {
@@ -23,20 +24,45 @@ nlohmann::json cost_model_values(const CostModel& c) {
   return values;
 }
 
+namespace {
+
+const InputKind& scene_kind(const std::string& file) {
+  return is_model_file(file) ? kModelFile : kSceneFile;
+}
+
+const InputKind& platform_kind(const PlatformConfig& platform) {
+  return platform.format == "simgrid-xml" ? kSimgridPlatformFile : kPlatformFile;
+}
+
+}  // namespace
+
+nlohmann::json input_listing(const RunInputs& inputs, const PlatformConfig& platform) {
+  const auto entry = [](const char* role, const std::string& file, const InputKind& kind) {
+    return nlohmann::json{{"role", role}, {"file", file}, {"sha256", input_sha256(file, kind)}};
+  };
+  const bool model = is_model_file(inputs.scene_file);
+  nlohmann::json list = {entry(model ? "model" : "scene", inputs.scene_file, scene_kind(inputs.scene_file))};
+  for (const std::string& part : inputs.scene_parts) list.push_back(entry("model part", part, kModelPart));
+  list.push_back(entry("platform", inputs.platform_file, platform_kind(platform)));
+  list.push_back(entry("cost model", inputs.cost_model_file, kCostModelFile));
+  return {{"inputs", list}};
+}
+
 nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,
                                   const PlatformConfig& platform, const CostModel& costs,
                                   const SimulationResult& result) {
+  // Each file hashed through the gate that read it, with its kind's limit (util/input_file.h).
   nlohmann::json platform_json = {{"file", inputs.platform_file},
-                                  {"sha256", file_sha256(inputs.platform_file)},
+                                  {"sha256", input_sha256(inputs.platform_file, platform_kind(platform))},
                                   {"format", platform.format},
                                   {"values", platform_values(platform)},
                                   {"simgrid_config", result.simgrid_config}};
   nlohmann::json scene_json = {{"name", scene.name},
                                {"file", inputs.scene_file},
-                               {"sha256", file_sha256(inputs.scene_file)}};
+                               {"sha256", input_sha256(inputs.scene_file, scene_kind(inputs.scene_file))}};
   // Only a model has parts: a scene file's provenance stays as it was.
   for (const std::string& part : inputs.scene_parts)
-    scene_json["parts"].push_back({{"file", part}, {"sha256", file_sha256(part)}});
+    scene_json["parts"].push_back({{"file", part}, {"sha256", input_sha256(part, kModelPart)}});
   return {{"schema_version", kResultSchemaVersion},
           {"command_line", inputs.command_line},
           {"code_version", code_version()},
@@ -44,7 +70,7 @@ nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,
           {"scene", scene_json},
           {"platform", platform_json},
           {"cost_model", {{"file", inputs.cost_model_file},
-                          {"sha256", file_sha256(inputs.cost_model_file)},
+                          {"sha256", input_sha256(inputs.cost_model_file, kCostModelFile)},
                           {"values", cost_model_values(costs)}}}};
 }
 

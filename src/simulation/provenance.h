@@ -30,6 +30,11 @@ nlohmann::json provenance_to_json(const RunInputs& inputs, const Scene& scene,
                                   const PlatformConfig& platform, const CostModel& costs,
                                   const SimulationResult& result);
 
+// Every file the run reads, in the order read, each {"role", "file", "sha256"} (role: scene,
+// model, model part, platform, cost model), hashed through the input gate with its kind's
+// limit: `simulate --list-inputs`, which the sweeps ask instead of parsing models themselves.
+nlohmann::json input_listing(const RunInputs& inputs, const PlatformConfig& platform);
+
 nlohmann::json platform_values(const PlatformConfig& platform);
 nlohmann::json cost_model_values(const CostModel& costs);
 

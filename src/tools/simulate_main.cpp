@@ -127,12 +127,31 @@ int simulate(int argc, char** argv) {
   run_settings.insert(run_settings.end(), options.config.simgrid_arguments.begin(),
                       options.config.simgrid_arguments.end());
   const ncube::SimgridOutputs run_simgrid_outputs(run_settings);
+  std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
+  for (const std::string& file : imported.files)
+    if (file != options.scene_file) scene_parts.push_back(file);
+  const ncube::RunInputs inputs{options.command_line, options.scene_file,
+                                options.config.platform_file, options.config.cost_model_file,
+                                scene_parts};
+  if (options.list_inputs) {  // writes nothing: SimGrid's files, if any, go to /dev/null
+    if (simgrid_platform)
+      ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
+          [](const std::string&) { return std::string("/dev/null"); }));
+    const ncube::PlatformConfig platform =
+        simgrid_platform ? ncube::load_platform_config(options.config.platform_file,
+                                                       options.config.simgrid_arguments)
+                         : *json_platform;
+    ncube::load_cost_model(options.config.cost_model_file);
+    std::cout << ncube::input_listing(inputs, platform).dump(1) << "\n";
+    return ncube::kExitOk;
+  }
   // Every output is checked (and its temporary file made) before SimGrid's Engine exists. No
   // output may be a file the run reads.
-  std::vector<std::string> inputs = {options.scene_file, options.config.platform_file,
-                                     options.config.cost_model_file};
-  inputs.insert(inputs.end(), imported.files.begin(), imported.files.end());
-  inputs.insert(inputs.end(), run_simgrid_outputs.inputs().begin(), run_simgrid_outputs.inputs().end());
+  std::vector<std::string> read_files = {options.scene_file, options.config.platform_file,
+                                         options.config.cost_model_file};
+  read_files.insert(read_files.end(), imported.files.begin(), imported.files.end());
+  read_files.insert(read_files.end(), run_simgrid_outputs.inputs().begin(),
+                    run_simgrid_outputs.inputs().end());
   std::vector<ncube::OutputFiles::Output> wanted = {
       {"--json", options.json_file},
       {"--trace", options.trace_file},
@@ -142,7 +161,7 @@ int simulate(int argc, char** argv) {
       {"NCUBE_RECORD_ACTIVITIES", ncube::ActivityRecord::requested_path()}};
   for (const ncube::SimgridOutput& output : run_simgrid_outputs.outputs())
     wanted.push_back({output.setting, output.path});
-  ncube::OutputFiles outputs(wanted, inputs);
+  ncube::OutputFiles outputs(wanted, read_files);
   // SimGrid writes its files to their temporary files; the arguments the result file records
   // stay the user's.
   ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
@@ -170,13 +189,7 @@ int simulate(int argc, char** argv) {
       ncube::run_simulation(scene, options.config, platform, costs);
   progress.reset();
   nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
-  std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
-  for (const std::string& file : imported.files)
-    if (file != options.scene_file) scene_parts.push_back(file);
-  result_json["provenance"] = ncube::provenance_to_json(
-      {options.command_line, options.scene_file, options.config.platform_file,
-       options.config.cost_model_file, scene_parts},
-      scene, platform, costs, result);
+  result_json["provenance"] = ncube::provenance_to_json(inputs, scene, platform, costs, result);
   if (!options.quiet && model)
     std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
                  "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "

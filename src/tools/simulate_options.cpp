@@ -20,9 +20,11 @@ std::string repository_root() {
 
 std::string resolve_scene_path(const std::string& name) {
   namespace fs = std::filesystem;
-  if (fs::exists(name) || name.find('/') != std::string::npos) return name;
+  // The error_code forms: a loop of links is the gate's to report (exit 2), not an exception.
+  std::error_code error;
+  if (fs::exists(name, error) || error || name.find('/') != std::string::npos) return name;
   const fs::path in_scenes = fs::path(repository_root()) / "scenes" / name;
-  return fs::exists(in_scenes) ? in_scenes.string() : name;
+  return fs::exists(in_scenes, error) ? in_scenes.string() : name;
 }
 
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
@@ -139,11 +141,15 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                  ""),
       table.setting("--light", import.lights, "NAME[=R,G,B]",
                     "model files: the material or mesh NAME emits R,G,B (default 1,1,1); "
-                    "repeatable")};
+                    "repeatable"),
+      // A model reads only files in its own folder (docs/cli.md, "Input files").
+      table.setting("--model-folder", import.model_folders, "DIR",
+                    "model files: a folder besides the model's own whose files the model may "
+                    "name (its MTL, glTF buffers); repeatable")};
   table.file("--export-scene", options.export_scene_file, "output",
              "model files: write the imported scene as the project's JSON");
   for (const char* flag : {"--scale", "--element-size", "--element-budget", "--flip-faces",
-                           "--merge-coplanar", "--light", "--export-scene"})
+                           "--merge-coplanar", "--light", "--model-folder", "--export-scene"})
     table.annotate(flag, "applies_to", "model files");
   table.file("--platform", config.platform_file, "file", "machine description",
              "platforms/ncube2.json")
@@ -180,6 +186,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.flag("--check-settings", options.check_settings,
              "check the SimGrid settings given (--cfg, --log) as a run would, then stop: exit "
              "0, or 2 with the setting SimGrid refuses (no scene needed)",
+             "");
+  table.flag("--list-inputs", options.list_inputs,
+             "print every file the run would read (role, file, sha256) as JSON, each read "
+             "through the same checks and limits, then stop without simulating",
              "");
   bool describe = false;
   table.flag("--describe-options", describe,

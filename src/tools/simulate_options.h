@@ -21,6 +21,7 @@ struct SimulateOptions {
   bool import_options_given = false;
   bool quiet = false;
   bool check_settings = false;  // --check-settings: check the SimGrid settings and stop
+  bool list_inputs = false;     // --list-inputs: print the files the run reads and stop
   std::vector<std::string> command_line;  // argv, for the result file's provenance
 };
 

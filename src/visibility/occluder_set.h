@@ -6,9 +6,10 @@
 //
 // The readable definitions are the paper's brute-force loop (brute_force_occluders.h) and the
 // octree walk of section 6 (octree.h). The host computes the same answers and the same counts
-// faster behind this interface (src/host/: fast_occluders.h, threaded_occluders.h); those
-// implementations may change no answer and no count, and `--reference-visibility` runs the
-// readable definitions alone so that whole result files can be compared (tests/seam_test.sh).
+// faster behind this interface (src/host/: fast_occluders.h for the loop, fast_octree.h for
+// the walk, threaded_occluders.h sharing a set's points over threads); those implementations
+// may change no answer and no count, and `--reference-visibility` runs the readable
+// definitions alone so that whole result files can be compared (tests/seam_test.sh).
 #pragma once
 
 #include <vector>

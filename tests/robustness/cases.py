@@ -497,21 +497,38 @@ PATH_KINDS = {
 }
 
 
-def path_kind_cases(work):
-    """Every output option x every kind of path, each made afresh in a folder of its own."""
+# The file name's ending an output option needs (--mesh writes PLY and says so by name).
+OUTPUT_SUFFIXES = {"--mesh": ".ply"}
+
+
+def path_kind_cases(work, simulate):
+    """Every output option that `simulate --describe-options` lists (kind "output", so a new
+    output is tried without a new line here) x every kind of path, each made afresh in a folder
+    of its own; an option for model files runs on tests/models/room.obj."""
+    described = json.loads(subprocess.run([str(simulate), "--describe-options"], check=True,
+                                          capture_output=True, text=True).stdout)
+    options = [o for o in described if o["kind"] == "output"]
+    assert len(options) >= 5, "--describe-options lists fewer outputs than --json, --trace, " \
+        "--image, --mesh and --export-scene"
     scene = work / "kinds-scene.json"
     scene.write_text(json.dumps(ROOM))
+    models = Path(__file__).resolve().parents[1] / "models"
+    model = work / "kinds-room.obj"
+    model.write_bytes((models / "room.obj").read_bytes())
+    (work / "room.mtl").write_bytes((models / "room.mtl").read_bytes())
     cases = []
-    for option in ("--json", "--trace", "--image"):
+    for described_option in options:
+        option = described_option["flag"]
+        source = model if described_option.get("applies_to") == "model files" else scene
         folder = work / ("kinds" + option)
         folder.mkdir()
         for kind, (expect, after, written) in PATH_KINDS.items():
-            path = folder / kind.replace(" ", "-")
+            path = folder / (kind.replace(" ", "-") + OUTPUT_SUFFIXES.get(option, ""))
             if not _make_kind(path, kind):
                 print(f"skipped {option} x {kind}: mknod needs root")
                 continue
             cases.append({"group": "path kinds", "name": f"{option} x {kind}",
-                          "args": [str(scene), *QUICK, option, str(path)], "expect": expect,
+                          "args": [str(source), *QUICK, option, str(path)], "expect": expect,
                           "kinds": {str(path): after} if after else {},
                           "written": [str(path) + written] if written is not None else [],
                           "reader": str(path) if kind == "fifo" else None,
@@ -614,7 +631,20 @@ def model_cases(root, work):
 
 
 def all_cases(root, work, simulate):
+    """Every case, each group's files in a folder of its own (case["work"]): the groups can run
+    at once, a run's temporary files looked for in its own group's folder only."""
     root, work = Path(root), Path(work)
-    return (scene_cases(root, work) + option_cases(root, work) + number_cases(simulate, work) +
-            output_cases(root, work) + path_kind_cases(work) + settings_cases(root, work) +
-            machine_cases(root, work) + model_cases(root, work))
+    groups = {"scene": lambda w: scene_cases(root, w), "options": lambda w: option_cases(root, w),
+              "numbers": lambda w: number_cases(simulate, w),
+              "outputs": lambda w: output_cases(root, w),
+              "path kinds": lambda w: path_kind_cases(w, simulate),
+              "settings": lambda w: settings_cases(root, w),
+              "machine": lambda w: machine_cases(root, w), "model": lambda w: model_cases(root, w)}
+    cases = []
+    for name, make in groups.items():
+        folder = work / name.replace(" ", "-")
+        folder.mkdir()
+        for case in make(folder):
+            case["work"] = folder
+            cases.append(case)
+    return cases

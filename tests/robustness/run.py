@@ -1,9 +1,12 @@
 #!/usr/bin/python3
 """Tries ./simulate on malformed scenes, bad option sets, every numeric option with special
 values and its range's ends, output-path cases and bad machine
-files (tests/robustness/cases.py) and tabulates the outcomes.
+files (tests/robustness/cases.py), then on every cell of the threat model
+(tests/robustness/threat_model.py: every input and output x every kind of path and hostile
+content), and tabulates the outcomes.
 
-Usage: run.py SIMULATE [--root REPO] [--timeout S] [--memory-mb MB] [--list]
+Usage: run.py SIMULATE [--root REPO] [--timeout S] [--cell-timeout S] [--jobs N]
+              [--memory-mb MB] [--only cases|threats] [--list] [--strict]
 
 Each run gets a wall-clock timeout and an address-space limit (ulimit -v), so no input can
 hang or exhaust the machine running the script. Outcomes:
@@ -17,9 +20,15 @@ hang or exhaust the machine running the script. Outcomes:
   bad output      the expected exit code, but an output or temporary file left behind, an input changed, a
                   message too long, or a result file with status other than expected,
                   null or non-finite numbers, or radiosities that differ from the reference
-Exit status: 0 when every case is clean, 1 otherwise (ctest runs it).
+Each group of cases runs in a folder of its own, its cases one after another, --jobs groups and
+threat-model cells at once. The threat model's cells run in folders of their own, each with
+--cell-timeout; a cell is clean or not clean (threat_cases.run_cell says why), and the
+table counts them by the issue's classes and by input or output. Cells listed in
+known_open.KNOWN_OPEN are reported, not failed (--strict fails on entries that are now clean).
+Exit status: 0 when every case and every cell not known open is clean, 1 otherwise (ctest).
 """
 import argparse
+import concurrent.futures
 import hashlib
 import json
 import math
@@ -36,6 +45,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import cases as case_list  # noqa: E402
+import known_open  # noqa: E402
+import threat_cases  # noqa: E402
+import threat_model  # noqa: E402
 
 EXIT = {"error": 2, "ok": 0, "help": 0, "oom": 3, "write": 5}
 COLUMNS = ["clean error", "clean other", "crash/signal", "hang/timeout", "wrong exit", "bad output"]
@@ -181,38 +193,130 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
     return ("clean error" if case["expect"] == "error" else "clean other"), message.strip()[:200], seconds
 
 
+def run_group(args, group):
+    """The cases of one group (one folder), one after another: [(case, outcome, detail, s)]."""
+    results = {}
+    return [(case, *run_case(args.simulate, case, args.timeout, args.memory_mb << 20, results,
+                             case["work"])) for case in group]
+
+
+def threat_table(outcomes, title, key):
+    """Rows by `key` of a cell: cells, clean, not clean, of which known open."""
+    rows = {}
+    for cell, clean, _detail, is_open in outcomes:
+        row = rows.setdefault(key(cell), [0, 0, 0, 0])
+        row[0] += 1
+        row[1 if clean else 2] += 1
+        row[3] += (not clean) and is_open
+    lines = [f"| {title} | cells | clean | not clean | of them known open |",
+             "|---|---|---|---|---|"]
+    total = [0, 0, 0, 0]
+    for name, row in rows.items():
+        lines.append(f"| {name} | " + " | ".join(map(str, row)) + " |")
+        total = [a + b for a, b in zip(total, row)]
+    lines.append("| all | " + " | ".join(map(str, total)) + " |")
+    return "\n".join(lines)
+
+
+def run_threats(args, work, pool):
+    """Submits every cell of the threat model to `pool`; returns the futures by cell."""
+    root, simulate = Path(args.root).resolve(), Path(args.simulate).resolve()
+    futures = {}
+    for cell in threat_model.cells(simulate):
+        futures[pool.submit(threat_cases.run_cell, cell, Path(work), root, simulate,
+                            args.cell_timeout, args.memory_mb << 20)] = cell
+    return futures
+
+
+def report_threats(args, futures):
+    """Prints the threat model's tables and its unclean cells; returns the number of failures."""
+    outcomes, skipped = [], 0
+    for future, cell in futures.items():
+        try:
+            result = future.result()
+        except OSError as error:   # the cell could not even start (the binary being rebuilt)
+            result = (False, f"could not run: {error}", 0.0)
+        if result is None:
+            skipped += 1
+            continue
+        clean, detail, seconds = result
+        outcomes.append((cell, clean, detail, cell.id in known_open.KNOWN_OPEN))
+        if args.list:
+            print(f"{'clean' if clean else 'NOT CLEAN':9} {seconds:6.2f}s  {cell.id:60} "
+                  f"{detail[:150]}")
+    outcomes.sort(key=lambda o: o[0].id)
+    print()
+    print(threat_table(outcomes, "threat model: class", lambda c: c.klass))
+    print()
+    print(threat_table(outcomes, "threat model: input or output", lambda c: (
+        ("read " if c.direction != "write" else "write ") + c.surface.id)))
+    if skipped:
+        print(f"skipped {skipped} cells: character devices need root (mknod)")
+    failures = 0
+    for cell, clean, detail, is_open in outcomes:
+        if not clean:
+            print(f"{'OPEN' if is_open else 'FAIL'} [{cell.klass}] {cell.id}: {detail[:300]}")
+            failures += not is_open
+    unclean = {o[0].id for o in outcomes if not o[1]}
+    stale = [i for i in known_open.KNOWN_OPEN if i not in unclean]
+    for cell_id in stale:
+        print(f"now clean: {cell_id!r}: remove it from tests/robustness/known_open.py")
+    return failures + (len(stale) if args.strict else 0)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("simulate")
     parser.add_argument("--root", default=str(Path(__file__).resolve().parents[2]))
     parser.add_argument("--timeout", type=float, default=10.0, help="seconds per run")
+    parser.add_argument("--cell-timeout", type=float, default=6.0,
+                        help="seconds per run of a threat-model cell")
+    parser.add_argument("--jobs", type=int, default=3,
+                        help="groups of cases and threat-model cells at once (a hanging cell "
+                             "takes no CPU)")
     parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per run")
+    parser.add_argument("--only", choices=("cases", "threats"), help="run one part only")
     parser.add_argument("--list", action="store_true", help="print every case and its outcome")
+    parser.add_argument("--strict", action="store_true",
+                        help="also fail on known_open.py entries that are now clean")
     args = parser.parse_args()
     os.environ["NCUBE_ROOT"] = args.root
-    with tempfile.TemporaryDirectory() as work:
-        cases = case_list.all_cases(args.root, work, args.simulate)
-        table, failures, results = {}, [], {}
+    failures = []
+    with tempfile.TemporaryDirectory() as work, tempfile.TemporaryDirectory() as cells_work, \
+            concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        cases = (case_list.all_cases(args.root, work, args.simulate)
+                 if args.only != "threats" else [])
+        by_folder = {}
         for case in cases:
-            outcome, detail, seconds = run_case(args.simulate, case, args.timeout,
-                                                args.memory_mb << 20, results, work)
+            by_folder.setdefault(case["work"], []).append(case)
+        # The biggest groups first: each group runs its cases one after another.
+        groups = [pool.submit(run_group, args, group)
+                  for group in sorted(by_folder.values(), key=len, reverse=True)]
+        futures = run_threats(args, cells_work, pool) if args.only != "cases" else {}
+        outcomes = {id(case): outcome for group in groups for case, *outcome in group.result()}
+        table = {}
+        for case in cases:
+            outcome, detail, seconds = outcomes[id(case)]
             row = table.setdefault(case["group"], dict.fromkeys(COLUMNS, 0))
             row[outcome] += 1
             if args.list:
-                print(f"{case['group']:10} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} {detail[:150]}")
+                print(f"{case['group']:10} {outcome:13} {seconds:6.2f}s  {case['name'][:60]:60} "
+                      f"{detail[:150]}")
             if outcome not in ("clean error", "clean other"):
                 failures.append((case, outcome, detail))
-    print("| inputs | tried | " + " | ".join(COLUMNS) + " |")
-    print("|---|---|" + "---|" * len(COLUMNS))
-    totals = dict.fromkeys(COLUMNS, 0)
-    for group, row in table.items():
-        print(f"| {group} | {sum(row.values())} | " + " | ".join(str(row[c]) for c in COLUMNS) + " |")
-        for c in COLUMNS:
-            totals[c] += row[c]
-    print(f"| all | {sum(totals.values())} | " + " | ".join(str(totals[c]) for c in COLUMNS) + " |")
-    for case, outcome, detail in failures:
-        print(f"FAIL [{case['group']}] {case['name'][:80]}: {outcome}: {detail[:300]}")
-    return 1 if failures else 0
+        if cases:
+            print("| inputs | tried | " + " | ".join(COLUMNS) + " |")
+            print("|---|---|" + "---|" * len(COLUMNS))
+            totals = dict.fromkeys(COLUMNS, 0)
+            for group, row in table.items():
+                print(f"| {group} | {sum(row.values())} | " + " | ".join(str(row[c]) for c in COLUMNS) + " |")
+                for c in COLUMNS:
+                    totals[c] += row[c]
+            print(f"| all | {sum(totals.values())} | " + " | ".join(str(totals[c]) for c in COLUMNS) + " |")
+            for case, outcome, detail in failures:
+                print(f"FAIL [{case['group']}] {case['name'][:80]}: {outcome}: {detail[:300]}")
+        threat_failures = report_threats(args, futures) if futures else 0
+    return 1 if failures or threat_failures else 0
 
 
 if __name__ == "__main__":

@@ -1,0 +1,169 @@
+"""How a sweep ends (docs/sweeps.md, "When a sweep stops"): its exit codes, the one plain line
+for each way it can fail, the results folder held by one sweep at a time, and Snakemake's
+messages passed on without the tracebacks of its logging."""
+import errno
+import fcntl
+import os
+import signal
+import sys
+import threading
+from pathlib import Path
+
+# Exit codes of experiments/sweep (and experiments/reproduce), as ./simulate's where they mean
+# the same thing (docs/cli.md).
+OK = 0
+BAD_INPUT = 2            # a sweep file refused
+CELLS_FAILED = 4         # one or more cells failed; the others finished
+NOT_WRITTEN = 5          # the results folder cannot be written (its file system is full, ...)
+INTERNAL = 7             # Snakemake failed for another reason
+FOLDER_IN_USE = 8        # another sweep runs on the same results folder
+# Interrupted by a signal: 128 + its number (130 for Ctrl-C, 143 for SIGTERM).
+
+LOW_SPACE = 1 << 20      # below this many free bytes, a failure is taken for a full disk
+LOCK_FILE = ".sweep.lock"
+
+
+def say(line):
+    print(f"sweep: {line}", file=sys.stderr, flush=True)
+
+
+def hold_folder(results_dir):
+    """Holds the results folder for this sweep until the process ends (killed too: the kernel
+    releases the lock). Returns the lock's file, or None with the plain line said when another
+    sweep holds it: its jobs read the folder's plan, which this one must not overwrite."""
+    stream = open(Path(results_dir) / LOCK_FILE, "a+")
+    try:
+        fcntl.flock(stream, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        stream.seek(0)
+        holder = stream.read().strip() or "unknown"
+        stream.close()
+        say(f"{results_dir} is in use by another sweep (process {holder}): wait for it to end "
+            f"or stop it, then run this command again")
+        return None
+    stream.truncate(0)
+    stream.write(f"{os.getpid()}\n")
+    stream.flush()
+    return stream
+
+
+def free_bytes(folder):
+    folder = Path(folder)
+    while not folder.exists() and folder != folder.parent:   # not made: its file system
+        folder = folder.parent
+    status = os.statvfs(folder)
+    return status.f_bavail * status.f_frsize
+
+
+def is_full(error):
+    return isinstance(error, OSError) and error.errno in (errno.ENOSPC, errno.EDQUOT)
+
+
+def say_full(results_dir):
+    say(f"the file system of {results_dir} is full ({free_bytes(results_dir) // 1024} KiB "
+        f"free): finished cells are kept; free some space and run the same command again")
+    return NOT_WRITTEN
+
+
+def say_interrupted(signum):
+    say(f"interrupted ({signal.Signals(signum).name}): the running cells were stopped; "
+        f"finished cells are kept; run the same command again to go on")
+    return 128 + signum
+
+
+class SnakemakeMessages:
+    """Passes Snakemake's messages (and its jobs') on to stderr as they come, except the
+    "--- Logging error ---" blocks Python's logging prints when Snakemake cannot write its own
+    log (a full disk): they say nothing the plain line at the end does not. Notes what the
+    failure classes need: a lock refusal, a full file system."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.locked = False
+        self.full = False
+        self.thread = threading.Thread(target=self._pass_on, daemon=True)
+        self.thread.start()
+
+    def _pass_on(self):
+        dropping = False
+        for line in iter(self.stream.readline, b""):
+            text = line.decode(errors="replace")
+            if "No space left on device" in text or "Disk quota exceeded" in text:
+                self.full = True
+            if "Directory cannot be locked" in text:
+                self.locked = True
+            if text.startswith("--- Logging error ---"):
+                dropping = True
+            if not dropping:
+                sys.stderr.write(text)
+                sys.stderr.flush()
+            elif text.startswith("Arguments:"):   # the block's last line
+                dropping = False
+
+    def wait(self):
+        self.thread.join(timeout=30)
+
+
+def snakemake_log(results_dir):
+    """Snakemake's log of the last run, None when there is none."""
+    logs = sorted((Path(results_dir) / ".snakemake" / "log").glob("*.snakemake.log"))
+    return logs[-1] if logs else None
+
+
+def failed(status, messages, results_dir, missing):
+    """Says what happened when Snakemake ended with `status` != 0 and returns the exit code;
+    `missing` are the result files of the cells without a finished result."""
+    log = snakemake_log(results_dir)
+    if messages.locked:
+        say(f"{results_dir} is locked by another Snakemake run on it: wait for it to end; if "
+            f"none runs (it was killed), run this command again with -- --unlock, then without")
+        return FOLDER_IN_USE
+    if messages.full or free_bytes(results_dir) < LOW_SPACE:
+        return say_full(results_dir)
+    if missing:
+        shown = ", ".join(missing[:5])
+        if len(missing) > 5:
+            shown += f" and {len(missing) - 5} more"
+        say(f"{len(missing)} cell(s) failed: {shown}; their messages are above and in {log}; "
+            f"the other cells finished and are kept; fix the cause and run the same command again")
+        return CELLS_FAILED
+    say(f"Snakemake failed (exit {status}): see the messages above and {log}")
+    return INTERNAL
+
+
+def tables_written(before, tables):
+    """The tables this run wrote: those there now and changed since `before` (path -> mtime)."""
+    written = []
+    for path in tables:
+        try:
+            stamp = path.stat().st_mtime_ns
+        except OSError:
+            continue
+        if before.get(path) != stamp:
+            written.append(path)
+    return written
+
+
+def stamps(paths_):
+    found = {}
+    for path in paths_:
+        try:
+            found[path] = path.stat().st_mtime_ns
+        except OSError:
+            pass
+    return found
+
+
+def final_line(wall, written):
+    """The last line: only the tables this run wrote (cells are counted above)."""
+    tables = ", ".join(map(str, written)) if written else "no table"
+    spent = "" if wall is None else f"{wall:.1f} s wall time; "
+    print(f"sweep: {spent}written: {tables}", flush=True)
+
+
+class Interrupted(Exception):
+    """The sweep was stopped by a signal; its jobs are stopped already."""
+
+    def __init__(self, signum):
+        super().__init__(signum)
+        self.signum = signum

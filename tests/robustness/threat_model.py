@@ -1,0 +1,279 @@
+"""The threat model of ./simulate and experiments/sweep (issue 30): every file the process reads,
+every file it writes, every kind of path such a file can be, every hostile content, and the
+outcome the rules require of each cell. tests/robustness/run.py crosses them
+(tests/robustness/threat_cases.py makes and checks each cell), so a new input or output joins
+the suite by being listed here.
+
+The rules (docs/cli.md, "Output files"; issue 30, "What to build" 1 and 2):
+  reads    a file that is not a regular file (FIFO, device, folder, socket, an endless file
+           behind a link), a dangling link, a loop of links, a file over the size limit, bad
+           content: exit 2, one line naming the file (and for a file a model names, the model);
+           never a hang, never the whole file in memory.
+           A file a model names must resolve inside the model's folder: an absolute reference,
+           a file: URI, a `..` out of the folder or a link out of it is refused (exit 2); one
+           the run never opens (a glTF image) may also be ignored, but never read.
+  writes   docs/cli.md's table: a new or regular file replaced whole, a link's target written
+           (the link stays), a FIFO or character device streamed and never replaced, a folder
+           or socket exit 5, a loop of links or a missing folder exit 2, an output that is any
+           input of the run (the model and every file it names too) exit 2.
+  always   nothing outside what the user named is read or written: the case folder holds
+           afterwards only what it held plus the named outputs (none after a failure, no
+           `.partial*`), the folder beside it is untouched and unread (access times), and no
+           output holds the bytes, the hash or the path of a file the run was not allowed to read.
+
+Outcomes: "ok" (exit 0), "error" (exit 2), "write" (exit 5).
+"""
+import json
+import struct
+import subprocess
+from dataclasses import dataclass, field
+
+# Larger than every per-kind size limit (scene and model files: 256 MiB, platform and cost
+# model: 1 MiB); made sparse, so it costs no disk.
+HUGE_BYTES = (256 << 20) + 4096
+# Peak memory of a run that reads an input (the tiny room: about 50 MiB as a scene, 70 MiB as
+# a model; the sweep tool less): reading a huge or endless input whole goes far past it.
+MAX_RSS_MB = 200
+
+
+# ---------------------------------------------------------------------------------------------
+# Inputs: every file a run reads. `run` is the base command that reads it
+# (threat_cases.base_run), `file` its name in the case folder.
+
+@dataclass(frozen=True)
+class Input:
+    id: str
+    file: str               # its name in the case folder (relative)
+    fmt: str                # its format, for the content classes below
+    run: str                # the base run that reads it (threat_cases.base_run)
+    named_by: str = ""      # the model file whose reference names it ("" : named by the user)
+    ref: str = ""           # which reference of the model it is: "mtl", "buffer", "image"
+    uri: bool = False       # the reference is a URI (glTF), so a file: URI applies
+    read: bool = True       # the run opens it (a glTF image is only named: its kinds may be
+                            # refused or ignored, but never followed out of the folder)
+    absolute: bool = False  # the model named by its absolute path (on main 0f2337f a model's
+                            # references were resolved differently for the two)
+
+
+INPUTS = [
+    Input("scene", "scene.json", "scene", "scene"),
+    Input("model .obj", "model.obj", "obj", "obj"),
+    Input("model .ply", "model.ply", "ply", "ply"),
+    Input("model .gltf", "model.gltf", "gltf", "gltf"),
+    Input("model .glb", "model.glb", "glb", "glb"),
+    Input("OBJ mtllib", "lamp.mtl", "mtl", "obj", "model.obj", "mtl"),
+    Input("glTF buffer", "mesh.bin", "buffer", "gltf", "model.gltf", "buffer", uri=True),
+    Input("glTF image", "tex.png", "image", "gltf", "model.gltf", "image", uri=True, read=False),
+    Input("OBJ mtllib, model by absolute path", "lamp.mtl", "mtl", "obj", "model.obj", "mtl",
+          absolute=True),
+    Input("glTF buffer, model by absolute path", "mesh.bin", "buffer", "gltf", "model.gltf",
+          "buffer", uri=True, absolute=True),
+    Input("--platform JSON", "platform.json", "platform", "scene"),
+    Input("--platform SimGrid XML", "platform.xml", "xml", "xml"),
+    Input("--cost-model", "cost.json", "cost", "scene"),
+    # Environment: NCUBE_ROOT names the folder of the default platform and cost model
+    # (NCUBE_RECORD_ACTIVITIES is an output below; NCUBE_ANSWER_CACHE_MB is a number, no file).
+    Input("NCUBE_ROOT platform", "root/platforms/ncube2.json", "platform", "root"),
+    Input("sweep file", "sweep.json", "sweep", "sweep-scene"),
+    Input("sweep OBJ mtllib", "lamp.mtl", "mtl", "sweep-obj", "model.obj", "mtl"),
+    Input("sweep glTF buffer", "mesh.bin", "buffer", "sweep-gltf", "model.gltf", "buffer",
+          uri=True),
+    Input("sweep glTF image", "tex.png", "image", "sweep-gltf", "model.gltf", "image", uri=True,
+          read=False),
+]
+
+# Every kind of path an input can be. Each is made in the case folder (devices with mknod
+# there, never the machine's /dev). "reference" kinds change how the model names the file.
+INPUT_KINDS = [
+    "regular", "link", "dangling link", "link loop", "fifo", "char device", "folder", "socket",
+    "endless via link", "huge",
+    # files a model names only:
+    "absolute reference", "escaping reference", "link out of the folder", "file URI",
+]
+MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the folder",
+                    "file URI"}
+
+
+def input_kinds(surface):
+    kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
+    if surface.absolute:   # only where the model's own path matters
+        kinds = ["regular", "link", *MODEL_ONLY_KINDS]
+    return [k for k in kinds if k != "file URI" or surface.uri]
+
+
+def input_expect(surface, kind):
+    """The outcomes the rules allow for `surface` made a path of `kind`."""
+    if kind in ("regular", "link"):
+        return {"ok"}
+    if not surface.read:
+        # Never opened (Assimp keeps an image's name only): refusing it is as good as ignoring
+        # it, even out of the folder (exported models often name absolute texture paths), as
+        # long as nothing beside the case folder is read (threat_cases.secret_reads).
+        return {"ok", "error"}
+    return {"error"}
+
+
+# Hostile content, by format: (class, content maker, outcome). The file stays a regular file
+# named as usual; a content class that does not apply to a format is not listed for it.
+def _nested_json(depth):
+    return ("[" * depth + "]" * depth).encode()
+
+
+def _garbage():
+    # Fixed bytes (no randomness: the same cells every run): NUL, invalid UTF-8, control bytes.
+    return bytes((i * 151 + 7) % 256 for i in range(4096))
+
+
+CONTENTS = {
+    "empty": lambda good: b"",
+    "garbage": lambda good: _garbage(),
+    "truncated": lambda good: good[:len(good) // 2],
+    "deep nesting": None,   # per format, below
+}
+NESTING = {
+    "scene": lambda good: _nested_json(100000),
+    "platform": lambda good: _nested_json(100000),
+    "cost": lambda good: _nested_json(100000),
+    "sweep": lambda good: _nested_json(100000),
+    # A glTF that is valid but for 100,000 levels of `extras` (Assimp recurses on them).
+    "gltf": lambda good: good.replace(b'"asset":{', b'"asset":{"extras":' + b'{"a":' * 100000 +
+                                      b'1' + b'}' * 100000 + b',', 1),
+    # "glb": the glTF's nesting inside the container (threat_cases.hostile_content)
+    "xml": lambda good: good.replace(b"<platform version=\"4.1\">",
+                                     b"<platform version=\"4.1\">" + b"<zone>" * 100000, 1),
+}
+# Which classes apply to which format. Every one must be refused (exit 2): an empty or cut
+# file, bytes that are no such file, nesting past any parser's stack.
+CONTENT_CLASSES = {
+    "scene": ["empty", "garbage", "truncated", "deep nesting"],
+    "obj": ["empty", "garbage"],              # half an OBJ is still an OBJ
+    "ply": ["empty", "garbage", "truncated"],
+    "gltf": ["empty", "garbage", "truncated", "deep nesting"],
+    "glb": ["empty", "garbage", "truncated", "deep nesting"],
+    "mtl": ["empty", "garbage"],              # the model's materials then name nothing
+    "buffer": ["empty", "truncated"],         # any 4 bytes are a float
+    "image": [],                              # never decoded
+    "platform": ["empty", "garbage", "truncated", "deep nesting"],
+    "xml": ["empty", "garbage", "truncated", "deep nesting"],
+    "cost": ["empty", "garbage", "truncated", "deep nesting"],
+    "sweep": ["empty", "garbage", "truncated", "deep nesting"],
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# Outputs: every file a run writes. The options come from `simulate --describe-options`
+# (kind "output"), so a new output option joins by being described; the others are here.
+
+@dataclass(frozen=True)
+class Output:
+    id: str
+    suffix: str             # the file name's ending (--mesh writes PLY and says so by name)
+    model_only: bool        # applies to model files only (--export-scene)
+    args: tuple = ()        # the command-line words, PATH standing for the path
+    env: tuple = ()         # (variable, value) pairs, PATH standing for the path
+    content: bool = True    # a run always writes bytes to it (a log may stay empty)
+
+
+SUFFIXES = {"--mesh": ".ply", "--image": ".png"}
+
+EXTRA_OUTPUTS = [
+    Output("NCUBE_RECORD_ACTIVITIES", ".act", False, env=(("NCUBE_RECORD_ACTIVITIES", "PATH"),)),
+    Output("--log file appender", ".log", False, args=("--log=root.app:file:PATH",),
+           content=False),
+    Output("--cfg tracing/filename", ".paje", False,
+           args=("--cfg=tracing:yes", "--cfg=tracing/filename:PATH")),
+]
+
+
+def outputs(simulate):
+    described = json.loads(subprocess.run([str(simulate), "--describe-options"], check=True,
+                                          capture_output=True, text=True).stdout)
+    listed = [Output(o["flag"], SUFFIXES.get(o["flag"], ".out"),
+                     o.get("applies_to") == "model files", args=(o["flag"], "PATH"))
+              for o in described if o["kind"] == "output"]
+    assert len(listed) >= 5, "simulate --describe-options lists fewer outputs than expected"
+    return listed + EXTRA_OUTPUTS
+
+
+# Every kind of output path and what the run must end with (docs/cli.md, "Output files"):
+# (outcome, what the path must still be afterwards, whether a file must hold the output).
+OUTPUT_KINDS = {
+    "new": ("ok", "file", True),
+    "regular": ("ok", "file", True),
+    "link": ("ok", "link", True),
+    "dangling link": ("ok", "link", True),
+    "link loop": ("error", "link", False),
+    "fifo": ("ok", "fifo", False),
+    "null device": ("ok", "char", False),
+    "full device": ("write", "char", False),
+    "endless device via link": ("ok", "link", False),
+    "folder": ("write", "folder", False),
+    "socket": ("write", "socket", False),
+    "missing folder": ("error", None, False),
+}
+# An output named as one of the run's inputs: exit 2 (which inputs: threat_cases.base_run).
+OUTPUT_IS_INPUT = ["scene.json", "model.obj", "lamp.mtl", "model.gltf", "mesh.bin", "tex.png",
+                   "platform.json", "platform.xml", "cost.json"]
+
+
+# ---------------------------------------------------------------------------------------------
+# The issue's classes: the rows of the table run.py prints.
+
+def issue_class(kind, direction):
+    if direction == "content":
+        return "hostile content"
+    if direction == "write":
+        return "output is an input" if kind.startswith("is ") else "outputs under the output rule"
+    if kind in MODEL_ONLY_KINDS:
+        return "model reads outside its folder"
+    if kind in ("regular", "link"):
+        return "plain inputs run"
+    return "input not a regular file, endless, huge"
+
+
+@dataclass
+class Cell:
+    id: str                 # unique, stable: what KNOWN_OPEN lists
+    direction: str          # "read", "content" or "write"
+    surface: object         # an Input or an Output
+    kind: str               # the path kind, content class or "is <input>"
+    expect: set = field(default_factory=set)
+
+    @property
+    def klass(self):
+        return issue_class(self.kind, self.direction)
+
+
+def cells(simulate):
+    found = []
+    for surface in INPUTS:
+        for kind in input_kinds(surface):
+            found.append(Cell(f"read {surface.id} / {kind}", "read", surface, kind,
+                              input_expect(surface, kind)))
+        for content in CONTENT_CLASSES[surface.fmt] if not surface.absolute else []:
+            found.append(Cell(f"content {surface.id} / {content}", "content", surface, content,
+                              {"error"}))
+    for output in outputs(simulate):
+        for kind, (outcome, _, _) in OUTPUT_KINDS.items():
+            found.append(Cell(f"write {output.id} / {kind}", "write", output, kind, {outcome}))
+        for name in OUTPUT_IS_INPUT:
+            if output.model_only and name in ("scene.json",):
+                continue
+            found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
+                              {"error"}))
+    ids = [c.id for c in found]
+    assert len(ids) == len(set(ids)), "cell ids must be unique"
+    return found
+
+
+# A glb: the glTF JSON and its binary chunk in one container (glTF 2.0, "GLB File Format").
+def glb_bytes(text, binary):
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    chunks = (struct.pack("<I4s", len(text), b"JSON") + text +
+              struct.pack("<I4s", len(binary), b"BIN\0") + binary)
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def glb(document, binary):
+    return glb_bytes(json.dumps(document, separators=(",", ":")).encode(), binary)
