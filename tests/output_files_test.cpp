@@ -86,14 +86,18 @@ TEST_F(OutputFilesTest, RefusesBadPathsBeforeTheRun) {
 
 TEST_F(OutputFilesTest, AFailedWriteLeavesNoOutput) {
   // A full disk, as a file-size limit of 1 KB for this test's process.
+  // (Restored after: streamed outputs are written to temporary files too.)
   std::signal(SIGXFSZ, SIG_IGN);
-  const rlimit limit{1024, 1024};
+  rlimit before{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
+  const rlimit limit{1024, before.rlim_max};
   ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limit), 0);
   {
     OutputFiles outputs({{"--json", at("a.json")}, {"--trace", at("b.json")}}, {at("scene.json")});
     outputs.write("--json", "small");
     EXPECT_THROW(outputs.write("--trace", std::string(4096, 'x')), OutputError);
   }
+  setrlimit(RLIMIT_FSIZE, &before);
   EXPECT_EQ(files(), 1u);
 }
 
@@ -109,6 +113,42 @@ void write_one(const std::string& path, const std::string& content, const std::s
   OutputFiles outputs({{"--json", path}}, {input});
   outputs.write("--json", content);
   outputs.commit();
+}
+
+// The activity record's target became a folder during the run: its rename fails (exit 5),
+// and neither its temporary file nor the result file is left.
+TEST_F(OutputFilesTest, AFailedRenameLeavesNoTemporaryAndNoOtherOutput) {
+  {
+    OutputFiles outputs({{"--json", at("r.json")}, {"NCUBE_RECORD_ACTIVITIES", at("run.act")}},
+                        {at("scene.json")});
+    fs::create_directories(at("run.act/inside"));
+    outputs.write("--json", "result");
+    outputs.write("NCUBE_RECORD_ACTIVITIES", "record");
+    try {
+      outputs.commit();
+      ADD_FAILURE() << "commit should fail";
+    } catch (const OutputError& e) {
+      EXPECT_NE(std::string(e.what()).find("NCUBE_RECORD_ACTIVITIES " + at("run.act") + ": cannot rename"),
+                std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(files(), 2u);  // scene.json and the folder: no r.json, no temporary file
+  EXPECT_FALSE(fs::exists(at("r.json")));
+}
+
+// What another writer (SimGrid) writes through writer_path is committed like the rest.
+TEST_F(OutputFilesTest, CommitsWhatAnotherWriterWrote) {
+  {
+    OutputFiles outputs({{"--log=root.app:file:run.log", at("run.log")}}, {at("scene.json")});
+    std::FILE* log = std::fopen(outputs.writer_path("--log=root.app:file:run.log").c_str(), "w");
+    ASSERT_NE(log, nullptr);
+    std::fputs("logged\n", log);  // left buffered: commit flushes it
+    EXPECT_EQ(files(), 1u);         // no name yet
+    outputs.commit();
+    std::fclose(log);
+  }
+  EXPECT_EQ(content_of(at("run.log")), "logged\n");
+  EXPECT_EQ(files(), 2u);
 }
 
 TEST_F(OutputFilesTest, FollowsLinksAndKeepsThem) {

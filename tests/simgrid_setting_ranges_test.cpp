@@ -235,7 +235,10 @@ TEST(SimgridSettingRanges, EveryRangesEndsRunASimulation) {
                                   " '--cfg=" + std::string(range.name) + ":" + value + "'" +
                                   companion(range.name) + " > /dev/null 2> run.err";
       const int status = std::system(command.c_str());
-      EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      // The TI trace format writes a folder of files per actor, which the output rule refuses
+      // (docs/cli.md, "Output files"): exit 2 before the run, not a crash.
+      const int expected = std::string(range.name) == "tracing/smpi/format" && value == "TI" ? 2 : 0;
+      EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == expected)
           << command << " (status " << status << ")";
       ++runs;
     }

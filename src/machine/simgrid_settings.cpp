@@ -11,6 +11,7 @@
 #include <simgrid/s4u/NetZone.hpp>
 #include <xbt/log.h>
 
+#include "machine/simgrid_outputs.h"
 #include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
 
@@ -51,11 +52,13 @@ std::string range_problem(const std::string& argument) {
   dup2(error_pipe, STDOUT_FILENO);  // --cfg=help and the like print their text here
   // tracing:yes opens its trace (simgrid.trace unless named) when the platform starts: the
   // check writes nothing, so the child's goes to /dev/null. A tracing/filename being checked
-  // comes after and wins, but without tracing:yes in the same child nothing is opened.
-  std::vector<std::string> storage{"simulate", "--cfg=tracing/filename:/dev/null", argument};
-  std::vector<char*> argv{storage[0].data(), storage[1].data(), storage[2].data(), nullptr};
+  // comes after and wins, but without tracing:yes in the same child nothing is opened; and
+  // every file the argument names (a log appender's, the trace's) is /dev/null too.
+  std::vector<std::string> storage{"simulate", "--cfg=tracing/filename:/dev/null", ""};
   int argc = 3;
   try {
+    storage[2] = simgrid_argument_for_check(argument);  // never the user's files
+    std::vector<char*> argv{storage[0].data(), storage[1].data(), storage[2].data(), nullptr};
     xbt_log_control_set("root.thresh:critical");
     simgrid::s4u::Engine engine(&argc, argv.data());
     auto* zone = simgrid::s4u::create_full_zone("check");

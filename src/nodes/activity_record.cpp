@@ -1,13 +1,11 @@
 #include "nodes/activity_record.h"
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
 
-#include "util/input_error.h"
 #include "util/input_file.h"
 
 namespace ncube {
@@ -46,23 +44,14 @@ ActivityRecord::Stream& ActivityRecord::add_node(int node) {
   return streams_.back();
 }
 
-void ActivityRecord::write(const std::string& path) const {
-  // Written beside the file and renamed into place: never a half-written record.
-  const std::string partial = path + ".partial";
-  std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-  out.write(kHeader, sizeof kHeader - 1);
+void ActivityRecord::write(const std::function<void(std::string_view)>& out) const {
+  out(std::string_view(kHeader, sizeof kHeader - 1));
   for (const Stream& s : streams_) {
     const std::int32_t node = s.node;
     const std::uint64_t length = s.bytes.size();
-    out.write(reinterpret_cast<const char*>(&node), sizeof node);
-    out.write(reinterpret_cast<const char*>(&length), sizeof length);
-    out.write(reinterpret_cast<const char*>(s.bytes.data()), std::streamsize(length));
-  }
-  out.close();
-  if (!out || std::rename(partial.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(partial.c_str());
-    throw OutputError("NCUBE_RECORD_ACTIVITIES " + path + ": cannot write: " + why);
+    out(std::string_view(reinterpret_cast<const char*>(&node), sizeof node));
+    out(std::string_view(reinterpret_cast<const char*>(&length), sizeof length));
+    out(std::string_view(reinterpret_cast<const char*>(s.bytes.data()), length));
   }
 }
 

@@ -5,14 +5,17 @@
 // the floor beside a run (docs/performance.md). Recording changes no simulated time.
 //
 // Recorded when the environment names a file: NCUBE_RECORD_ACTIVITIES=FILE ./simulate ...
-// (the radiosity run only, not the rendering phase). The file is binary, in the host's byte
+// (the radiosity run only, not the rendering phase); the file is an output like --json, under
+// the same rule for paths (docs/cli.md, "Output files"). The file is binary, in the host's byte
 // order: a text line "ncube-activities 1", then per node, in the order the actors were
 // created, its node number (int32), its stream's length (uint64) and the stream.
 #pragma once
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ncube {
@@ -38,9 +41,8 @@ class ActivityRecord {
   Stream& add_node(int node);
   const std::deque<Stream>& streams() const { return streams_; }
 
-  // Writes the record (whole or not at all); throws OutputError naming the file if it cannot
-  // (simulate: exit 5).
-  void write(const std::string& path) const;
+  // The record's bytes, piece by piece, in order (simulate hands them to its output file).
+  void write(const std::function<void(std::string_view)>& out) const;
   // Reads a record written by write(); throws std::runtime_error naming the file and what
   // is wrong with it.
   static ActivityRecord read(const std::string& path);

@@ -69,7 +69,7 @@ void run_programs(const Scene& scene, const SimulationConfig& config,
   simgrid::s4u::Engine::get_instance()->run();
   programs.exceptions.rethrow_first();  // before anything is written
   result.simulated_seconds = simgrid::s4u::Engine::get_clock();
-  if (programs.activities) programs.activities->write(ActivityRecord::requested_path());
+  result.activities = std::move(programs.activities);
   const RadiosityProcessor& master = programs.radiosity.front();
   collect_iterations(master, result);
   collect_solution(scene, programs, result.solution, result.patch_radiosity, result.held_patches);

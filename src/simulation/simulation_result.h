@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,9 @@ struct SimulationResult {
   double host_seconds = 0.0;
   // The SimGrid settings the run used (the platform's defaults, overridden by --cfg).
   std::map<std::string, std::string> simgrid_config;
+  // Every node's SimGrid activities, when NCUBE_RECORD_ACTIVITIES names a file
+  // (nodes/activity_record.h): the caller writes them, as it writes the result file.
+  std::shared_ptr<const ActivityRecord> activities;
 };
 
 }  // namespace ncube

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -24,13 +25,6 @@ fs::path identity(const std::string& path) {
   std::error_code error;
   const fs::path resolved = fs::weakly_canonical(fs::absolute(path, error), error);
   return error ? fs::absolute(path) : resolved;
-}
-
-// Permission bits of a new file under the process's umask (mkstemp creates 0600).
-mode_t new_file_mode() {
-  const mode_t mask = umask(0);
-  umask(mask);
-  return 0666 & ~mask;
 }
 
 // At most this many symbolic links are followed from an output path (Linux's own limit).
@@ -60,32 +54,10 @@ bool is_standard_output(const std::string& path) {
          named.st_dev == out.st_dev && named.st_ino == out.st_ino;
 }
 
-// Writes all of `content` to `descriptor`; false (errno set) on an error.
-bool write_all(int descriptor, const std::string& content) {
-  const char* data = content.data();
-  std::size_t left = content.size();
-  while (left > 0) {
-    const ssize_t done = ::write(descriptor, data, left);
-    if (done < 0 && errno == EINTR) continue;
-    if (done <= 0) {
-      if (done == 0) errno = EIO;
-      return false;
-    }
-    data += done;
-    left -= std::size_t(done);
-  }
-  return true;
-}
-
 }  // namespace
 
 OutputFiles::OutputFiles(const std::vector<Output>& outputs, const std::vector<std::string>& inputs) {
-  try {
-    open(outputs, inputs);
-  } catch (...) {
-    remove_temporaries();  // a constructor that throws gets no destructor call
-    throw;
-  }
+  open(outputs, inputs);  // a throw destroys the temporary files made so far
 }
 
 void OutputFiles::open(const std::vector<Output>& outputs, const std::vector<std::string>& inputs) {
@@ -102,7 +74,8 @@ void OutputFiles::open(const std::vector<Output>& outputs, const std::vector<std
       if (standard_output_taken) throw InputError(where + "standard output is also another output");
       standard_output_taken = true;
       pending.kind = Kind::kStandardOutput;
-      pending_.push_back(pending);
+      pending.temporary = std::make_unique<TemporaryFile>(TemporaryFile::anywhere());
+      pending_.push_back(std::move(pending));
       continue;
     }
     if (!fs::path(output.path).has_filename())
@@ -113,7 +86,8 @@ void OutputFiles::open(const std::vector<Output>& outputs, const std::vector<std
     if (exists && (S_ISCHR(info.st_mode) || S_ISFIFO(info.st_mode))) {
       // Written where it points; two outputs may well share /dev/null.
       pending.kind = Kind::kStream;
-      pending_.push_back(pending);
+      pending.temporary = std::make_unique<TemporaryFile>(TemporaryFile::anywhere());
+      pending_.push_back(std::move(pending));
       continue;
     }
     if (exists && !S_ISREG(info.st_mode))
@@ -132,7 +106,8 @@ void OutputFiles::open(const std::vector<Output>& outputs, const std::vector<std
   }
 }
 
-// A new or regular file: a temporary file in the target's folder, renamed onto it at commit.
+// A new or regular file: a temporary file in the target's folder, named and renamed onto it
+// at commit.
 void OutputFiles::open_file(Pending& pending, const std::string& where) {
   const fs::path target(pending.target);
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
@@ -140,15 +115,14 @@ void OutputFiles::open_file(Pending& pending, const std::string& where) {
   if (!fs::is_directory(folder, error))
     throw InputError(where + "folder " + folder.string() +
                      (fs::exists(folder, error) ? " is not a folder" : " does not exist"));
-  pending.temporary = pending.target + ".partial-XXXXXX";
-  pending.descriptor = mkstemp(pending.temporary.data());
-  if (pending.descriptor < 0) {
-    pending.temporary.clear();
+  try {
+    pending.temporary = std::make_unique<TemporaryFile>(
+        TemporaryFile::in_folder(folder.string(), target.filename().string()));
+  } catch (const std::system_error& e) {
     throw InputError(where + "cannot create a file in folder " + folder.string() + ": " +
-                     std::strerror(errno));
+                     std::strerror(e.code().value()));
   }
-  fchmod(pending.descriptor, new_file_mode());
-  pending_.push_back(pending);
+  pending_.push_back(std::move(pending));
 }
 
 bool OutputFiles::uses_standard_output() const {
@@ -157,34 +131,25 @@ bool OutputFiles::uses_standard_output() const {
   return false;
 }
 
-OutputFiles::~OutputFiles() { remove_temporaries(); }
-
-void OutputFiles::remove_temporaries() {
-  for (Pending& p : pending_) {
-    if (p.descriptor >= 0) close(p.descriptor);
-    p.descriptor = -1;
-    if (!p.temporary.empty()) std::remove(p.temporary.c_str());
-    p.temporary.clear();
-  }
+OutputFiles::Pending* OutputFiles::find(const std::string& option) {
+  for (Pending& p : pending_)
+    if (p.option == option) return &p;
+  return nullptr;
 }
 
-void OutputFiles::write(const std::string& option, const std::string& content) {
-  for (Pending& p : pending_) {
-    if (p.option != option) continue;
-    if (p.kind != Kind::kFile) {
-      p.content = content;
-      p.written = true;
-      return;
-    }
-    if (!write_all(p.descriptor, content))
-      throw OutputError(option + " " + p.path + ": cannot write: " + std::strerror(errno));
-    const int descriptor = p.descriptor;
-    p.descriptor = -1;
-    if (close(descriptor) != 0)
-      throw OutputError(option + " " + p.path + ": cannot write: " + std::strerror(errno));
-    p.written = true;
-    return;
-  }
+void OutputFiles::write(const std::string& option, std::string_view content) {
+  Pending* p = find(option);
+  if (!p) return;
+  p->written = true;
+  if (!p->temporary->append(content))
+    throw OutputError(option + " " + p->path + ": cannot write: " + std::strerror(errno));
+}
+
+std::string OutputFiles::writer_path(const std::string& option) {
+  Pending* p = find(option);
+  if (!p) return "";
+  p->written = true;
+  return p->temporary->writer_path();
 }
 
 // A device, a FIFO or standard output: opened only now (a FIFO waits for its reader), never
@@ -195,28 +160,39 @@ void OutputFiles::stream(const Pending& p) const {
   const std::string where = p.option + " " + p.path + ": cannot write: ";
   if (p.kind == Kind::kStandardOutput) {
     std::fflush(stdout);
-    if (!write_all(STDOUT_FILENO, p.content)) throw OutputError(where + std::strerror(errno));
+    if (!p.temporary->copy_to(STDOUT_FILENO)) throw OutputError(where + std::strerror(errno));
     return;
   }
   const int descriptor = ::open(p.target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
   if (descriptor < 0) throw OutputError(where + std::strerror(errno));
-  const bool ok = write_all(descriptor, p.content);
+  const bool ok = p.temporary->copy_to(descriptor);
   const int saved = errno;
   if (close(descriptor) != 0 && ok) throw OutputError(where + std::strerror(errno));
   if (!ok) throw OutputError(where + std::strerror(saved));
 }
 
 void OutputFiles::commit() {
+  std::fflush(nullptr);  // what other writers (SimGrid's log appenders) still buffer
   // The streams first: a full device or a closed pipe then leaves every file unchanged.
   for (const Pending& p : pending_)
     if (p.written && p.kind != Kind::kFile) stream(p);
+  // Every file gets its name beside its target before any is renamed: a failure here (or a
+  // target that became a folder during the run) leaves every target unchanged.
+  const auto failed = [](const Pending& p, const char* what) {
+    return OutputError(p.option + " " + p.path + ": " + what + ": " + std::strerror(errno));
+  };
   for (Pending& p : pending_) {
     if (!p.written || p.kind != Kind::kFile) continue;
-    if (std::rename(p.temporary.c_str(), p.target.c_str()) != 0)
-      throw OutputError(p.option + " " + p.path + ": cannot rename the written file onto it: " +
-                        std::strerror(errno));
-    p.temporary.clear();  // renamed: nothing to remove
+    if (!p.temporary->name_beside(p.target)) throw failed(p, "cannot write");
+    struct stat info {};
+    if (lstat(p.target.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
+      errno = EISDIR;
+      throw failed(p, "cannot rename the written file onto it");
+    }
   }
+  for (Pending& p : pending_)
+    if (p.written && p.kind == Kind::kFile && !p.temporary->keep_as(p.target))
+      throw failed(p, "cannot rename the written file onto it");
 }
 
 }  // namespace ncube

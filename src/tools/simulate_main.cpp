@@ -7,12 +7,19 @@
 #include <iostream>
 #include <optional>
 #include <new>
+#include <string_view>
+
+#include <xbt/virtu.h>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "machine/simgrid_outputs.h"
+#include "machine/simgrid_platform_file.h"
+#include "machine/simgrid_session.h"
 #include "machine/simgrid_settings.h"
 #include "models/model_import.h"
 #include "models/solution_mesh.h"
+#include "nodes/activity_record.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
@@ -63,9 +70,22 @@ int simulate(int argc, char** argv) {
   ncube::SimulateOptions options;
   const int parse_status = ncube::parse_simulate_options(argc, argv, options);
   if (parse_status >= 0) return parse_status;
+  // The files SimGrid would write (log appenders, the trace) are outputs like --json.
+  const ncube::SimgridOutputs simgrid_outputs(options.config.simgrid_arguments);
+  std::vector<ncube::OutputFiles::Output> simgrid_files;
+  for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
+    simgrid_files.push_back({output.setting, output.path});
   // SimGrid ends the process on a setting it refuses: each is tried in a child first.
   ncube::check_simgrid_settings(options.config.simgrid_arguments);
-  if (options.check_settings) return ncube::kExitOk;
+  if (options.check_settings) {
+    // Their paths as a run checks them, against the files the command line names.
+    std::vector<std::string> named = simgrid_outputs.inputs();
+    for (const std::string* file : {&options.scene_file, &options.config.platform_file,
+                                    &options.config.cost_model_file})
+      if (!file->empty()) named.push_back(*file);
+    ncube::OutputFiles checked(simgrid_files, named);
+    return ncube::kExitOk;
+  }
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
   // A model file is imported into the project's scene JSON, then loaded (and checked) as a
@@ -91,27 +111,71 @@ int simulate(int argc, char** argv) {
   };
   ncube::Scene scene =
       model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
-  const ncube::PlatformConfig platform =
-      ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
-  const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
+  // A JSON platform is read before any Engine exists (its settings are checked in child
+  // processes); its own tracing settings then join the command line's, so that a trace it
+  // turns on is an output like the others. A SimGrid platform file is read by the Engine,
+  // after the outputs are checked (SimGrid opens log files as its Engine starts).
+  const bool simgrid_platform = ncube::is_simgrid_platform_file(options.config.platform_file);
+  std::optional<ncube::PlatformConfig> json_platform;
+  std::vector<std::string> run_settings;
+  if (!simgrid_platform) {
+    json_platform =
+        ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
+    for (const auto& [name, value] : json_platform->simgrid_config)
+      if (name.rfind("tracing", 0) == 0) run_settings.push_back("--cfg=" + name + ":" + value);
+  }
+  run_settings.insert(run_settings.end(), options.config.simgrid_arguments.begin(),
+                      options.config.simgrid_arguments.end());
+  const ncube::SimgridOutputs run_simgrid_outputs(run_settings);
   std::vector<std::string> scene_parts;  // what a model read besides itself (MTL, buffers)
   for (const std::string& file : imported.files)
     if (file != options.scene_file) scene_parts.push_back(file);
   const ncube::RunInputs inputs{options.command_line, options.scene_file,
                                 options.config.platform_file, options.config.cost_model_file,
                                 scene_parts};
-  if (options.list_inputs) {
+  if (options.list_inputs) {  // writes nothing: SimGrid's files, if any, go to /dev/null
+    if (simgrid_platform)
+      ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
+          [](const std::string&) { return std::string("/dev/null"); }));
+    const ncube::PlatformConfig platform =
+        simgrid_platform ? ncube::load_platform_config(options.config.platform_file,
+                                                       options.config.simgrid_arguments)
+                         : *json_platform;
+    ncube::load_cost_model(options.config.cost_model_file);
     std::cout << ncube::input_listing(inputs, platform).dump(1) << "\n";
     return ncube::kExitOk;
   }
+  // Every output is checked (and its temporary file made) before SimGrid's Engine exists. No
+  // output may be a file the run reads.
+  std::vector<std::string> read_files = {options.scene_file, options.config.platform_file,
+                                         options.config.cost_model_file};
+  read_files.insert(read_files.end(), imported.files.begin(), imported.files.end());
+  read_files.insert(read_files.end(), run_simgrid_outputs.inputs().begin(),
+                    run_simgrid_outputs.inputs().end());
+  std::vector<ncube::OutputFiles::Output> wanted = {
+      {"--json", options.json_file},
+      {"--trace", options.trace_file},
+      {"--image", options.image_file},
+      {"--mesh", options.mesh_file},
+      {"--export-scene", options.export_scene_file},
+      {"NCUBE_RECORD_ACTIVITIES", ncube::ActivityRecord::requested_path()}};
+  for (const ncube::SimgridOutput& output : run_simgrid_outputs.outputs())
+    wanted.push_back({output.setting, output.path});
+  ncube::OutputFiles outputs(wanted, read_files);
+  // SimGrid writes its files to their temporary files; the arguments the result file records
+  // stay the user's.
+  ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
+      [&outputs](const std::string& setting) { return outputs.writer_path(setting); }));
+  // The command line a Paje trace's header shows: the user's settings, not temporary files.
+  simgrid::xbt::cmdline = {"simulate"};
+  for (const std::string& argument : options.config.simgrid_arguments)
+    simgrid::xbt::cmdline.push_back(argument);
+  const ncube::PlatformConfig platform =
+      simgrid_platform ? ncube::load_platform_config(options.config.platform_file,
+                                                     options.config.simgrid_arguments)
+                       : *json_platform;
+  const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
   ncube::check_configuration(scene, options.config, platform);
-  ncube::OutputFiles outputs({{"--json", options.json_file},
-                              {"--trace", options.trace_file},
-                              {"--image", options.image_file},
-                              {"--mesh", options.mesh_file},
-                              {"--export-scene", options.export_scene_file}},
-                             {options.scene_file, options.config.platform_file,
-                              options.config.cost_model_file});
   if (!options.config.memory_cap ||
       ncube::first_node_out_of_memory(scene, options.config, platform, costs).node < 0)
     scene.build_elements();
@@ -144,6 +208,9 @@ int simulate(int argc, char** argv) {
                                  options.config.render.outline_elements)));
   if (!options.export_scene_file.empty())
     outputs.write("--export-scene", imported_text);
+  if (result.activities)
+    result.activities->write(
+        [&outputs](std::string_view bytes) { outputs.write("NCUBE_RECORD_ACTIVITIES", bytes); });
   if (!options.mesh_file.empty() && result.status == ncube::RunStatus::kOk)
     outputs.write("--mesh", ncube::solution_mesh_ply(
                                 scene, result.solution,
