@@ -17,4 +17,9 @@ struct GltfMaterialExtras {
 // from a white that is written: the importer needs to know which it is.
 std::vector<GltfMaterialExtras> gltf_material_extras(const std::string& path, bool binary);
 
+// The files the glTF's images name (their URIs percent-decoded, relative to the model's folder
+// as the specification reads them; data: URIs are inside the file and left out). The import
+// never reads a texture, but the model names these files, so no output may be one of them.
+std::vector<std::string> gltf_image_files(const std::string& path, bool binary);
+
 }  // namespace ncube::models

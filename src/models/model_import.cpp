@@ -91,6 +91,7 @@ nlohmann::json import_model(const std::string& path, const ImportOptions& option
   const bool gltf = lower_extension(path) == ".gltf" || lower_extension(path) == ".glb";
   const std::vector<GltfMaterialExtras> extras =
       gltf ? gltf_material_extras(path, lower_extension(path) == ".glb") : std::vector<GltfMaterialExtras>();
+  if (gltf) summary.named_unread = gltf_image_files(path, lower_extension(path) == ".glb");
   const bool obj = lower_extension(path) == ".obj";
   const MtlNames mtl = obj ? mtl_names(read) : MtlNames();
   if (obj) {

@@ -36,6 +36,8 @@ struct ImportSummary {
   long degenerate = 0;      // faces dropped: zero area or repeated corners
   long merged = 0;          // pairs of triangles merged into quads (--merge-coplanar)
   std::vector<std::string> files;  // every file read (the model, its MTL, its buffers), as opened
+  std::vector<std::string> named_unread;  // files the model names and the import never reads
+                                          // (a glTF's images): never an output either
 };
 
 // Whether `path` names a model file this reads (by extension: .obj, .ply, .gltf, .glb).

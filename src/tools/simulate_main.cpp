@@ -146,10 +146,11 @@ int simulate(int argc, char** argv) {
     return ncube::kExitOk;
   }
   // Every output is checked (and its temporary file made) before SimGrid's Engine exists. No
-  // output may be a file the run reads.
+  // output may be a file the run reads, nor one the model names (its textures).
   std::vector<std::string> read_files = {options.scene_file, options.config.platform_file,
                                          options.config.cost_model_file};
   read_files.insert(read_files.end(), imported.files.begin(), imported.files.end());
+  read_files.insert(read_files.end(), imported.named_unread.begin(), imported.named_unread.end());
   read_files.insert(read_files.end(), run_simgrid_outputs.inputs().begin(),
                     run_simgrid_outputs.inputs().end());
   std::vector<ncube::OutputFiles::Output> wanted = {
