@@ -28,8 +28,9 @@ constexpr double kSame = 1e-12;
 // Faces of more corners are refused (docs/scene-format.md, "Importing models"): the tests and
 // the cutting of a face use indexes that keep them near O(n log n) for ordinary outlines (a
 // ring or comb of this many corners imports in about a tenth of a second), but outlines whose
-// edges all span the face still cost up to O(n^2).
-constexpr unsigned kMaxFaceCorners = 32768;
+// edges all span the face still cost up to O(n^2). 32,767 is also Assimp's own limit
+// (AI_MAX_FACE_INDICES, enforced by its validation step), whose message a longer face gets.
+constexpr unsigned kMaxFaceCorners = 32767;
 
 // A vector's length without underflow or overflow of its squares.
 double norm(const Point& v);
