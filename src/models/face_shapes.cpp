@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numeric>
 #include <set>
 
@@ -88,10 +89,15 @@ class CornerGrid {
       lo_ = glm::min(lo_, p);
       hi_ = glm::max(hi_, p);
     }
-    side_ = std::max<std::size_t>(1, std::size_t(std::sqrt(double(points.size()))));
+    // About one corner a cell, the cells about square (a comb 1,000 times wider than high gets
+    // a row of 1,000 columns, not 180 columns of 180 corners each).
     const glm::dvec2 size = hi_ - lo_;
-    scale_ = glm::dvec2(size.x > 0 ? double(side_) / size.x : 0.0, size.y > 0 ? double(side_) / size.y : 0.0);
-    cells_.resize(side_ * side_);
+    const double n = double(points.size());
+    const double aspect = size.x > 0 && size.y > 0 ? size.x / size.y : size.x > 0 ? n : 1.0 / n;
+    columns_ = std::size_t(std::clamp(std::sqrt(n * aspect), 1.0, n));
+    rows_ = std::size_t(std::clamp(std::sqrt(n / aspect), 1.0, n));
+    scale_ = glm::dvec2(size.x > 0 ? double(columns_) / size.x : 0.0, size.y > 0 ? double(rows_) / size.y : 0.0);
+    cells_.resize(columns_ * rows_);
     for (std::size_t i = 0; i < points.size(); ++i) cells_[cell(points[i])].push_back(i);
   }
   void remove(std::size_t i) {
@@ -100,32 +106,58 @@ class CornerGrid {
     c.pop_back();
   }
   // Some corner other than a, b and c, still in the outline, in the closed triangle a b c, or
-  // points.size(). The cells searched are those that the triangle's box meets: a corner outside
-  // the box is outside the triangle.
+  // points.size(). The cells searched are, row by row, those under the triangle's part in the
+  // row (the x range of its edges' parts there), one more on each side against rounding: a
+  // corner elsewhere is outside the triangle.
   std::size_t inside(std::size_t a, std::size_t b, std::size_t c) const {
-    const glm::dvec2 lo = glm::min(points_[a], glm::min(points_[b], points_[c]));
-    const glm::dvec2 hi = glm::max(points_[a], glm::max(points_[b], points_[c]));
-    const std::size_t x0 = column(lo.x, lo_.x, scale_.x), x1 = column(hi.x, lo_.x, scale_.x);
-    const std::size_t y0 = column(lo.y, lo_.y, scale_.y), y1 = column(hi.y, lo_.y, scale_.y);
-    for (std::size_t y = y0; y <= y1; ++y)
-      for (std::size_t x = x0; x <= x1; ++x)
-        for (const std::size_t p : cells_[y * side_ + x])
-          if (p != a && p != b && p != c && in_closed_triangle(points_[a], points_[b], points_[c], points_[p]))
-            return p;
+    const glm::dvec2 pa = points_[a], pb = points_[b], pc = points_[c];
+    const double low = std::min({pa.y, pb.y, pc.y}), high = std::max({pa.y, pb.y, pc.y});
+    const std::size_t y0 = column(low, lo_.y, scale_.y, rows_), y1 = column(high, lo_.y, scale_.y, rows_);
+    const glm::dvec2 edges[3][2] = {{pa, pb}, {pb, pc}, {pc, pa}};
+    for (std::size_t y = y0; y <= y1; ++y) {
+      // The row's band of y, widened by a tenth of a row against rounding.
+      const double step = scale_.y > 0 ? 1.0 / scale_.y : 0.0;
+      const double band_lo = y == y0 ? low : lo_.y + (double(y) - 0.1) * step;
+      const double band_hi = y == y1 ? high : lo_.y + (double(y) + 1.1) * step;
+      double left = std::numeric_limits<double>::infinity(), right = -left;
+      for (const auto& edge : edges) {
+        const glm::dvec2 p = edge[0], q = edge[1];
+        const double x_min = std::min(p.x, q.x), x_max = std::max(p.x, q.x);
+        if (p.y == q.y) {
+          if (p.y >= band_lo && p.y <= band_hi) {
+            left = std::min(left, x_min);
+            right = std::max(right, x_max);
+          }
+          continue;
+        }
+        const double from = std::max(band_lo, std::min(p.y, q.y)), to = std::min(band_hi, std::max(p.y, q.y));
+        if (from > to) continue;
+        for (const double at : {from, to}) {
+          const double x = std::clamp(p.x + (q.x - p.x) * ((at - p.y) / (q.y - p.y)), x_min, x_max);
+          left = std::min(left, x);
+          right = std::max(right, x);
+        }
+      }
+      if (left > right) continue;
+      const std::size_t x0 = column(left, lo_.x, scale_.x, columns_), x1 = column(right, lo_.x, scale_.x, columns_);
+      for (std::size_t x = x0 > 0 ? x0 - 1 : 0; x <= std::min(columns_ - 1, x1 + 1); ++x)
+        for (const std::size_t p : cells_[y * columns_ + x])
+          if (p != a && p != b && p != c && in_closed_triangle(pa, pb, pc, points_[p])) return p;
+    }
     return points_.size();
   }
 
  private:
-  std::size_t column(double v, double lo, double scale) const {
+  static std::size_t column(double v, double lo, double scale, std::size_t count) {
     const double k = std::floor((v - lo) * scale);
-    return k <= 0 ? 0 : std::min(side_ - 1, std::size_t(k));
+    return k <= 0 ? 0 : std::min(count - 1, std::size_t(k));
   }
   std::size_t cell(glm::dvec2 p) const {
-    return column(p.y, lo_.y, scale_.y) * side_ + column(p.x, lo_.x, scale_.x);
+    return column(p.y, lo_.y, scale_.y, rows_) * columns_ + column(p.x, lo_.x, scale_.x, columns_);
   }
   const std::vector<glm::dvec2>& points_;
   glm::dvec2 lo_, hi_, scale_;
-  std::size_t side_;
+  std::size_t columns_, rows_;
   std::vector<std::vector<std::size_t>> cells_;
 };
 
@@ -142,11 +174,12 @@ double norm(const Point& v) {
 
 // The same double as the largest norm(a - b) over all pairs (face_shapes_reference.cpp), found
 // by branch and bound: each corner is measured only against the boxes of a k-d tree whose
-// farthest corner could be as far as the largest distance found so far. Pruning is safe in
-// floating point: rounding is monotonic, so a point's computed differences to a box's points
-// are no larger than those to its farthest corner, and the margin of 1e-9 covers the few
-// roundings of norm(). About O(n^1.5) for corners on a circle (every corner has a far partner),
-// less for most faces.
+// farthest corner could be as far as the largest distance found so far, and norm() is taken
+// only of pairs whose plain squared distance could reach it. The search runs on the corners
+// scaled by a power of two (exact) so that the squares neither overflow nor underflow, with a
+// margin of 1e-6 over the few roundings of the squares (a pair or box left out is at least
+// 5e-7 shorter than a pair measured). About O(n^1.5) for corners on a circle (every corner has
+// a far partner), less for most faces.
 double diameter(const std::vector<Point>& corners) {
   double d = 0.0;
   if (corners.size() <= kSmallFace) {
@@ -154,7 +187,11 @@ double diameter(const std::vector<Point>& corners) {
       for (const Point& b : corners) d = std::max(d, norm(a - b));
     return d;
   }
-  const BoxTree tree(corners);
+  const std::vector<Point> unit = in_face_units(corners);
+  int exponent = 0;  // corners[i] = unit[i] * 2^exponent
+  for (std::size_t i = 0; i < unit.size() && exponent == 0; ++i)
+    for (int c = 0; c < 3; ++c)
+      if (unit[i][c] != 0.0) exponent = std::ilogb(corners[i][c]) - std::ilogb(unit[i][c]);
   // A good first guess: from corner 0 to its farthest, and from there to its farthest.
   std::size_t far = 0;
   for (int round = 0; round < 2; ++round) {
@@ -165,19 +202,40 @@ double diameter(const std::vector<Point>& corners) {
         far = i;
       }
   }
+  // Too small beside the corners' place for squares in the face's units: every pair.
+  if (!(std::ldexp(d, -exponent) > 1e-100)) {
+    for (const Point& a : corners)
+      for (const Point& b : corners) d = std::max(d, norm(a - b));
+    return d;
+  }
+  const auto threshold = [&] {  // squared distances below this are shorter than d
+    const double scaled = std::ldexp(d, -exponent);
+    return scaled * scaled * (1 - 1e-6);
+  };
+  double enough = threshold();
+  const BoxTree tree(unit);
   std::vector<std::size_t> stack;
-  for (const Point& a : corners) {
+  for (std::size_t i = 0; i < unit.size(); ++i) {
+    const Point a = unit[i];
     stack.assign(1, 0);
     while (!stack.empty()) {
       const BoxTree::Node& node = tree.nodes[stack.back()];
       stack.pop_back();
       const Point reach = glm::max(glm::abs(a - node.lo), glm::abs(a - node.hi));
-      if (norm(reach) * (1 + 1e-9) < d) continue;
-      if (node.first_child == 0) {
-        for (std::size_t i = node.begin; i < node.end; ++i) d = std::max(d, norm(a - corners[tree.order[i]]));
-      } else {
+      if (glm::dot(reach, reach) < enough) continue;
+      if (node.first_child != 0) {
         stack.push_back(node.first_child);
         stack.push_back(node.first_child + 1);
+        continue;
+      }
+      for (std::size_t k = node.begin; k < node.end; ++k) {
+        const std::size_t j = tree.order[k];
+        const Point between = a - unit[j];
+        if (glm::dot(between, between) < enough) continue;
+        if (const double r = norm(corners[i] - corners[j]); r > d) {
+          d = r;
+          enough = threshold();
+        }
       }
     }
   }
@@ -321,22 +379,29 @@ std::vector<std::vector<Point>> split(const std::vector<Point>& corners) {
 // order is kept. O(n log n + the pairs of edges whose boxes meet): about linear for an
 // outline of short edges, quadratic for one whose edges all span the face.
 std::optional<std::pair<std::size_t, std::size_t>> crossing_edges(const std::vector<Point>& corners) {
-  const std::vector<glm::dvec2> flat = in_best_plane(corners);
+  std::vector<glm::dvec2> flat = in_best_plane(corners);
   const std::size_t n = flat.size();
+  // Swept along the outline's longer side (a comb's teeth then meet only their neighbours).
+  glm::dvec2 lo = flat.front(), hi = flat.front();
+  for (const glm::dvec2& p : flat) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const int along = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
   std::vector<Box> box(n);
   for (std::size_t i = 0; i < n; ++i)
     box[i] = {glm::min(flat[i], flat[(i + 1) % n]), glm::max(flat[i], flat[(i + 1) % n])};
-  std::vector<std::size_t> by_left(n);
-  std::iota(by_left.begin(), by_left.end(), std::size_t(0));
-  std::sort(by_left.begin(), by_left.end(), [&](std::size_t a, std::size_t b) {
-    return box[a].lo.x < box[b].lo.x || (box[a].lo.x == box[b].lo.x && a < b);
+  std::vector<std::size_t> by_start(n);
+  std::iota(by_start.begin(), by_start.end(), std::size_t(0));
+  std::sort(by_start.begin(), by_start.end(), [&](std::size_t a, std::size_t b) {
+    return box[a].lo[along] < box[b].lo[along] || (box[a].lo[along] == box[b].lo[along] && a < b);
   });
   std::optional<std::pair<std::size_t, std::size_t>> first;
   std::vector<std::size_t> open;  // edges whose box may still meet those to come
-  for (const std::size_t e : by_left) {
+  for (const std::size_t e : by_start) {
     std::size_t kept = 0;
     for (const std::size_t o : open) {
-      if (box[o].hi.x < box[e].lo.x) continue;  // left behind: no later box meets it
+      if (box[o].hi[along] < box[e].lo[along]) continue;  // passed: no later box meets it
       open[kept++] = o;
       const std::size_t i = std::min(e, o), j = std::max(e, o);
       if (j < i + 2 || (i == 0 && j == n - 1) || (first && std::pair{i, j} >= *first)) continue;
