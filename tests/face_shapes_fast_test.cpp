@@ -111,6 +111,19 @@ TEST(FaceShapesFast, StarShapedAndConcavePolygonsGiveTheReferencesAnswers) {
       for (const double bend : {0.0, 0.05}) expect_same(star(random, n, inner, bend), "star");
 }
 
+// The diameter's search works on squares in the face's units: faces tiny, huge, and tiny far
+// from the origin (too small beside their place for squares) keep the reference's double.
+TEST(FaceShapesFast, TheDiameterIsTheReferencesAtAnyScale) {
+  std::mt19937 random(5);
+  for (const double scale : {1e-300, 1e-150, 1e-20, 1e20, 1e150, 1e300})
+    for (const Point offset : {Point(0.0), Point(1.0, 2.0, 3.0)}) {
+      Polygon p = star(random, 200, 0.5, 0.1);
+      for (Point& c : p) c = c * scale + offset;
+      SCOPED_TRACE(std::to_string(scale));
+      EXPECT_EQ(diameter(p), reference::diameter(p));
+    }
+}
+
 TEST(FaceShapesFast, SpiralsAndCombsGiveTheReferencesAnswers) {
   for (const std::size_t half : {30, 200, 500})
     for (const double turns : {0.5, 2.0, 5.0}) expect_same(spiral(half, turns, 0.5), "spiral");

@@ -17,12 +17,17 @@ namespace {
 // but no product of two to four lengths (a normal's dot product) underflows or overflows
 // whatever the model's units and --scale (a face of 1e-88 has normals' dot products near
 // 1e-350, which are 0 in doubles). The faces' points themselves are never changed.
-std::vector<Point> in_face_units(const std::vector<Point>& corners) {
+int face_exponent(const std::vector<Point>& corners) {
   double largest = 0.0;
   for (const Point& p : corners)
     largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
   int exponent = 0;
   if (largest > 0.0 && std::isfinite(largest)) std::frexp(largest, &exponent);
+  return exponent;
+}
+
+std::vector<Point> in_face_units(const std::vector<Point>& corners) {
+  const int exponent = face_exponent(corners);
   std::vector<Point> scaled;
   scaled.reserve(corners.size());
   for (const Point& p : corners)
@@ -188,10 +193,7 @@ double diameter(const std::vector<Point>& corners) {
     return d;
   }
   const std::vector<Point> unit = in_face_units(corners);
-  int exponent = 0;  // corners[i] = unit[i] * 2^exponent
-  for (std::size_t i = 0; i < unit.size() && exponent == 0; ++i)
-    for (int c = 0; c < 3; ++c)
-      if (unit[i][c] != 0.0) exponent = std::ilogb(corners[i][c]) - std::ilogb(unit[i][c]);
+  const int exponent = face_exponent(corners);  // unit[i] = corners[i] / 2^exponent
   // A good first guess: from corner 0 to its farthest, and from there to its farthest.
   std::size_t far = 0;
   for (int round = 0; round < 2; ++round) {
