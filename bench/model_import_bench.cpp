@@ -1,9 +1,12 @@
 // Host time of importing large models (a reported figure, not a test; docs/scene-format.md,
 // "Importing models"): an OBJ grid of bumpy triangles (no two make a planar quad, so every
 // triangle looks for a partner) with and without --merge-coplanar, and the merge alone, by
-// size, to show the merge O(n log n) in the triangles (it was quadratic: 40,000 triangles 58 s); and one face of n corners
-// (a convex ring and a comb, ear clipping's easy and hard cases) up to the limit of 1,024, whose
-// cost grows with n^2. The models are written to a temporary folder, not kept.
+// size, to show the merge O(n log n) in the triangles (it was quadratic: 40,000 triangles 58 s); one face of n corners
+// (a convex ring and a comb, ear clipping's easy and hard cases) up to the limit of 32,767, whose
+// cost grows between n log n and n^2 (docs/scene-format.md; the quadratic versions took 20 ms
+// for 1,024 corners, 8.8 s for 20,000);
+// and 15 faces of 20,000 corners (5 rings, 5 combs, 5 stars of random radii) in one OBJ. The
+// models are written to a temporary folder, not kept.
 // Run: build/benchmarks --benchmark_filter='Import|MergeCoplanar'
 #include <benchmark/benchmark.h>
 
@@ -99,8 +102,51 @@ void ImportFace(benchmark::State& state, bool comb) {
     benchmark::DoNotOptimize(ncube::import_model(path.string(), {}, summary));
   }
 }
-BENCHMARK_CAPTURE(ImportFace, ring, false)->RangeMultiplier(2)->Range(128, 1024)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(ImportFace, comb, true)->RangeMultiplier(2)->Range(128, 1022)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ImportFace, ring, false)->RangeMultiplier(4)->Range(128, 32767)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ImportFace, comb, true)->RangeMultiplier(4)->Range(128, 32764)->Unit(benchmark::kMillisecond);
+
+// 15 faces of 20,000 corners each, side by side in planes y = 0, 3, 6, ...: rings, combs of
+// 5,000 teeth (19,998 corners and the comb's back) and stars whose radius alternates between 1
+// and a random 0.3 to 0.8 (concave at every other corner).
+void ImportBigFaces(benchmark::State& state) {
+  const fs::path path = bench_folder() / "big_faces.obj";
+  constexpr int kCorners = 20000, kFaces = 15;
+  {
+    std::ofstream out(path);
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> inner(0.3, 0.8);
+    out << "mtllib m.mtl\n";
+    for (int f = 0; f < kFaces; ++f) {
+      const double y = 3.0 * f;
+      for (int k = 0; k < kCorners; ++k) {
+        const double a = 2 * M_PI * k / kCorners;
+        if (f % 3 == 1) {  // a comb: up a tooth and down, then the back
+          const int t = k / 4;
+          const double x[] = {2.0 * t, 2.0 * t, 2.0 * t + 1, 2.0 * t + 1}, z[] = {10, 1, 1, 10};
+          if (k < kCorners - 2) out << "v " << x[k % 4] / 5000 << " " << y << " " << z[k % 4] / 10 << "\n";
+          else out << "v " << (k == kCorners - 2 ? 2.0 * (kCorners / 4 - 1) / 5000 : -1.0 / 5000) << " " << y << " 0\n";
+        } else {
+          const double r = f % 3 == 2 && k % 2 == 1 ? inner(random) : 1.0;
+          out << "v " << r * std::cos(a) << " " << y << " " << -r * std::sin(a) << "\n";
+        }
+      }
+    }
+    out << "usemtl lamp\n";
+    for (int f = 0; f < kFaces; ++f) {
+      out << "f";
+      // The combs' corners run clockwise as written: turned so that every face faces +y.
+      for (int k = 0; k < kCorners; ++k)
+        out << " " << f * kCorners + (f % 3 == 1 ? kCorners - k : k + 1);
+      out << "\n";
+    }
+  }
+  for (auto _ : state) {
+    ncube::ImportSummary summary;
+    benchmark::DoNotOptimize(ncube::import_model(path.string(), {}, summary));
+    state.counters["patches"] = double(summary.patches);
+  }
+}
+BENCHMARK(ImportBigFaces)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

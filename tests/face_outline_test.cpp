@@ -159,7 +159,8 @@ TEST_F(FaceOutlineFile, SimpleStarImportsWithItsArea) {
   EXPECT_NEAR(total, 5 * std::cos(2 * M_PI / 5) / std::cos(M_PI / 5) * std::sin(M_PI / 5), 1e-6);
 }
 
-// A regular polygon of n corners has area n sin(2 pi / n) / 2; 1024 corners are cut, 1025 refused.
+// A regular polygon of n corners has area n sin(2 pi / n) / 2; 32,767 corners are cut, 32,768 refused (by
+// Assimp's own limit, the same number: its message, naming the file and the face).
 TEST_F(FaceOutlineFile, CornerLimit) {
   for (unsigned n : {models::kMaxFaceCorners, models::kMaxFaceCorners + 1}) {
     std::vector<Point> ring;
@@ -178,11 +179,14 @@ TEST_F(FaceOutlineFile, CornerLimit) {
         for (const nlohmann::json& v : patch["vertices"]) t.push_back({v[0], v[1], v[2]});
         total += triangle_area(t);
       }
-      EXPECT_EQ(summary.patches, long(n) - 2);
+      // n - 2 triangles, but for the odd one that the OBJ's float coordinates make flat
+      // (corners 2e-4 apart on the circle, 6e-8 float steps), dropped as degenerate.
+      EXPECT_LE(summary.patches, long(n) - 2);
+      EXPECT_GE(summary.patches, long(n) - 4);
       EXPECT_NEAR(total, n * std::sin(2 * M_PI / n) / 2, 1e-5);
     } else {
-      EXPECT_EQ(refusal(path), path + ": mesh 0 \"star\", material \"lamp\", face 0: 1025 corners, "
-                                      "more than 1024 (the limit; triangulate it in the modelling tool)");
+      EXPECT_EQ(refusal(path), path + ": cannot read the model: Validation failed: Face 0 has too many "
+                                      "faces: 32768, but the limit is 32767");
     }
   }
 }
