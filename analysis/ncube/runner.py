@@ -21,7 +21,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import outcome, output_file, paths, results
+from . import cell_resources, outcome, output_file, paths, results
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -35,6 +35,8 @@ def write_plan(sweeps, results_dir, pending, rerun_finished=False):
     plan = results_dir / "plan.json"
     text = json.dumps({"sweeps": [s.to_dict() for s in sweeps],
                        "pending": [c.file for c in pending],
+                       "resources": {c.file: cell_resources.request(c)
+                                     for s in sweeps for c in s.cells},
                        "rerun_finished": rerun_finished}, indent=1) + "\n"
     output_file.write(plan, text)
     return plan
@@ -97,12 +99,27 @@ def snakemake_command(plan, results_dir, args):
                "--rerun-triggers", "mtime",
                "--keep-going", "--cores", str(args.cores)]
     if args.slurm:
-        command += ["--slurm", "--jobs", str(args.jobs)]
+        command += slurm_arguments(results_dir) + ["--jobs", str(args.jobs)]
     if args.profile:
         command += ["--profile", str(args.profile)]
     if args.cluster:
         command += ["--cluster", args.cluster, "--jobs", str(args.jobs)]
     return command + args.snakemake
+
+
+SLURM_LOGS = Path("logs") / "slurm"
+
+
+def slurm_arguments(results_dir):
+    """Snakemake's generic cluster mode with sbatch, a status command and scancel (not its
+    built-in --slurm executor, which needs $USER and, with an account, slurmdbd accounting:
+    docs/sweeps.md, "Running on a cluster"). One single-core job per cell with the cell's own
+    memory and time (ncube.cell_resources); its output goes to logs/slurm/<job id>.log."""
+    submit = ("sbatch --parsable --job-name=ncube-{wildcards.name} --cpus-per-task=1 "
+              "--mem={resources.mem_mb} --time={resources.runtime} "
+              f"--chdir={results_dir} --output={results_dir / SLURM_LOGS}/%j.log")
+    status = f"env PYTHONPATH={paths.ANALYSIS} /usr/bin/python3 -m ncube.slurm_status"
+    return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel"]
 
 
 def run_snakemake(command):
@@ -188,6 +205,8 @@ def main(argv=None):
     results_dir = args.results.resolve()
     try:
         results_dir.mkdir(parents=True, exist_ok=True)
+        if args.slurm:   # sbatch does not make the folder of a job's output
+            (results_dir / SLURM_LOGS).mkdir(parents=True, exist_ok=True)
         held = outcome.hold_folder(results_dir)
         if held is None:
             outcome.final_line(None, [])
