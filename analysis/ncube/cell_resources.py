@@ -5,7 +5,7 @@ a default too small and a scene0 cell does not hold gigabytes.
 ./simulate has no host-memory estimate of its own; the bound is derived from the platform's
 size (every node is a SimGrid host with its actors and mailboxes), from
 peak resident sizes measured with /usr/bin/time -f %M on the Release build (November 2026):
-  scene0, R=1 V=1, ncube2.json (1,024 nodes)      55 MB
+  scene0, R=1 V=1, ncube2.json (64 nodes)         55 MB
   scene0, R=16 V=63, ncube2-d10.json (1,024)     117 MB
   scene0, R=8 V=63, ncube2-d13.json (8,192)      229 MB
 and the 2 GB a prediction sweep's 8,192-node cell of a large scene takes (issue 33). The

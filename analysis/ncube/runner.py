@@ -21,7 +21,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import cell_resources, outcome, output_file, paths, results
+from . import cell_resources, outcome, output_file, paths, results, slurm_status
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -115,7 +115,7 @@ def slurm_arguments(results_dir):
     built-in --slurm executor, which needs $USER and, with an account, slurmdbd accounting:
     docs/sweeps.md, "Running on a cluster"). One single-core job per cell with the cell's own
     memory and time (ncube.cell_resources); its output goes to logs/slurm/<job id>.log."""
-    submit = ("sbatch --parsable --job-name=ncube-{wildcards.name} --cpus-per-task=1 "
+    submit = ("sbatch --parsable --job-name=ncube-{rule}-{wildcards.name} --cpus-per-task=1 "
               "--mem={resources.mem_mb} --time={resources.runtime} "
               f"--chdir={results_dir} --output={results_dir / SLURM_LOGS}/%j.log")
     status = f"env PYTHONPATH={paths.ANALYSIS} /usr/bin/python3 -m ncube.slurm_status"
@@ -224,12 +224,16 @@ def main(argv=None):
           ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
     tables = [results_dir / "sweeps" / s.name / "cells.csv" for s in sweeps]
     before = outcome.stamps(tables)
+    states_before = slurm_status.states_size(results_dir)
     start = time.monotonic()
     try:
         status, messages = run_snakemake(snakemake_command(plan, results_dir, args))
         code = outcome.OK
         if status != 0:   # a cell's file appears only verified: existing means finished
             missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
+            slurm_status.report(results_dir, missing,
+                                {c.file: cell_resources.request(c) for c in cells.values()},
+                                states_before, outcome.say)
             code = outcome.failed(status, messages, results_dir, missing)
     except outcome.Interrupted as stop:
         code = outcome.say_interrupted(stop.signum)

@@ -6,7 +6,7 @@ usage: python3 -m ncube.slurm_status JOBID[;CLUSTER]     (in the results folder)
 
 A job that ended in any state but COMPLETED is "failed", and its state is noted in
 logs/slurm/states.tsv (job id, state, reason) for experiments/sweep's plain line (an
-OUT_OF_MEMORY or TIMEOUT cell says so). A job neither tool knows any more (purged after
+OUT_OF_MEMORY or TIMEOUT cell says so: report). A job neither tool knows any more (purged after
 slurmctld's MinJobAge, no accounting) is "success": Snakemake then checks the result file, and a
 cell whose verified file is missing fails."""
 import subprocess
@@ -28,16 +28,61 @@ def _run(command):
 
 
 def state(job):
-    """(state, reason) of the job, or None when Slurm does not know it."""
+    """(state, reason, job name) of the job, or None when Slurm does not know it."""
     text = _run(["scontrol", "show", "job", "--oneliner", job])
     if text:
         fields = dict(item.split("=", 1) for item in text.split() if "=" in item)
         if "JobState" in fields:
-            return fields["JobState"], fields.get("Reason", "None")
-    text = _run(["sacct", "-X", "-P", "-n", "--format=State", "-j", job])
+            return fields["JobState"], fields.get("Reason", "None"), fields.get("JobName", "")
+    text = _run(["sacct", "-X", "-P", "-n", "--format=State,JobName", "-j", job])
     if text and text.strip():
-        return text.split()[0].rstrip("+"), "None"
+        state_, _, name = text.splitlines()[0].partition("|")
+        return state_.split()[0].rstrip("+"), "None", name
     return None
+
+
+def job_name(cell_file):
+    """The name experiments/sweep gives a cell's job (ncube.runner.slurm_arguments)."""
+    path = Path(cell_file)
+    rule = "traced_cell" if path.parent.name == "traced" else "cell"
+    return f"ncube-{rule}-{path.stem}"
+
+
+def noted_states(results_dir, since=0):
+    """{job name: (job id, state, reason)} noted from byte `since` of the states file on."""
+    path = Path(results_dir) / STATES
+    if not path.exists():
+        return {}
+    with open(path) as stream:
+        stream.seek(since)
+        rows = [line.rstrip("\n").split("\t") for line in stream]
+    return {row[3]: tuple(row[:3]) for row in rows if len(row) == 4}
+
+
+def states_size(results_dir):
+    path = Path(results_dir) / STATES
+    return path.stat().st_size if path.exists() else 0
+
+
+def report(results_dir, missing, requests, since, say):
+    """One plain line per failed cell whose Slurm job ended badly in this run: the job, its
+    state, what it means, and its log."""
+    noted = noted_states(results_dir, since)
+    for cell_file in missing:
+        found = noted.get(job_name(cell_file))
+        if not found:
+            continue
+        job, job_state, reason = found
+        log = Path(results_dir) / "logs" / "slurm" / f"{job}.log"
+        asked = requests.get(cell_file, {})
+        meaning = {
+            "OUT_OF_MEMORY": f"it used more than its memory request ({asked.get('mem_mb')} MB)",
+            "TIMEOUT": f"it ran longer than its time request ({asked.get('runtime')} min)",
+            "CANCELLED": "it was cancelled (scancel, or by an administrator)",
+            "NODE_FAIL": "its node failed",
+            "PREEMPTED": "it was preempted",
+        }.get(job_state, f"reason {reason}")
+        say(f"{cell_file}: Slurm job {job} ended {job_state}: {meaning}; its log: {log}")
 
 
 def main():
@@ -46,7 +91,7 @@ def main():
     if found is None:
         print("success")
         return 0
-    job_state, reason = found
+    job_state, reason, name = found
     if job_state in RUNNING:
         print("running")
     elif job_state == "COMPLETED":
@@ -56,7 +101,7 @@ def main():
         if not any(line.split("\t")[0] == job for line in noted):
             STATES.parent.mkdir(parents=True, exist_ok=True)
             with open(STATES, "a") as stream:
-                stream.write(f"{job}\t{job_state}\t{reason}\n")
+                stream.write(f"{job}\t{job_state}\t{reason}\t{name}\n")
         print("failed")
     return 0
 
