@@ -51,6 +51,29 @@ def squeue_job(name):
     return done.stdout.strip()
 
 
+def over_memory(cells):
+    """A cell over its memory request: asked for 1 MB (Snakemake's --set-resources), its job
+    held at "started" (run_cell's Python alone holds more) until Slurm kills it."""
+    cell = next(c for c in cells if c.scene == "scene0" and c.R == 1 and c.V == 0)
+    (WORK / "one.yaml").write_text("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
+                                   "grid: {scene: [scene0], R: [1]}\n")
+    results_dir = WORK / "over-memory"
+    signals = WORK / "over-memory-signals"
+    signals.mkdir()
+    start = time.monotonic()
+    done = subprocess.run(SWEEP + [str(WORK / "one.yaml"), "--results", str(results_dir),
+                                   "--slurm", "--", "--set-resources", "cell:mem_mb=1"],
+                          capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, NCUBE_TEST_PAUSE=f"started:{cell.file}",
+                                   NCUBE_TEST_PAUSE_DIR=str(signals)))
+    print(f"     over-memory run: {time.monotonic() - start:.1f} s", flush=True)
+    said = [line for line in done.stderr.splitlines() if line.startswith(f"sweep: {cell.file}: ")]
+    check(done.returncode == 4 and len(said) == 1 and
+          "it used more than its memory request" in said[0] and
+          not (results_dir / cell.file).exists(),
+          f"a job over its memory request is said so, no result file ({said})")
+
+
 def main():
     (WORK / "study.yaml").write_text(STUDY)
     bad = WORK / "bad-box.obj"
@@ -133,10 +156,10 @@ def main():
     others = [c for c in cells if c is not held]
     check(all(results.mismatch(results.read(cluster_dir / c.file), c) is None for c in others),
           "the other cells finished")
-    # ncube.cell_resources for the default platform's 64 nodes: 128 + 16 MB rounded up to
-    # 192, 10 + 0.5 minutes rounded up to 11; the scheduler holds the job to them.
-    check(cell_resources.request(held) == {"mem_mb": 192, "runtime": 11} and
-          " MinMemoryNode=192M " in asked and " TimeLimit=00:11:00 " in asked,
+    # ncube.cell_resources for the default platform's 64 nodes: 384 + 16 MB rounded up to
+    # 448, 10 + 0.5 minutes rounded up to 11; the scheduler holds the job to them.
+    check(cell_resources.request(held) == {"mem_mb": 448, "runtime": 11} and
+          " MinMemoryNode=448M " in asked and " TimeLimit=00:11:00 " in asked,
           f"the job asked for its cell's memory and time ({asked[:0] or re.findall(r'MinMemoryNode=[^ ]+|TimeLimit=[^ ]+', asked)})")
 
     start = time.monotonic()
@@ -153,6 +176,7 @@ def main():
             without_host_fields(local_dir / c.file, local_dir)]
     check(len(same) == 12, f"the cluster's result files are the local run's byte for byte apart "
                            f"from host fields ({len(same)} of 12)")
+    over_memory(cells)
     if failures:
         print(f"{len(failures)} check(s) failed")
         return 1

@@ -1,5 +1,6 @@
 """Runs sweeps through Snakemake (docs/sweeps.md): two local cores by default, a Slurm cluster
-with --slurm or a profile, any other cluster with --cluster.
+with --slurm (sbatch through Snakemake's generic cluster mode), any other cluster with --cluster
+or a Snakemake profile.
 
 usage: experiments/sweep SWEEP.yaml [SWEEP.json ...] [--results DIR] [--cores N]
                          [--slurm | --profile DIR | --cluster CMD] [--jobs N] [--check]
@@ -177,7 +178,7 @@ def main(argv=None):
                         help="results folder (default: ./results)")
     parser.add_argument("--cores", type=int, default=2, help="local cores (default 2)")
     parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
-    parser.add_argument("--profile", type=Path, help="a Snakemake profile (experiments/profiles/slurm)")
+    parser.add_argument("--profile", type=Path, help="a Snakemake profile")
     parser.add_argument("--cluster", help="generic cluster mode: the submit command")
     parser.add_argument("--jobs", type=int, default=100, help="cluster jobs at once (default 100)")
     parser.add_argument("--check", action="store_true", help="validate and list the cells only")

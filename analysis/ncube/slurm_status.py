@@ -64,9 +64,23 @@ def states_size(results_dir):
     return path.stat().st_size if path.exists() else 0
 
 
+# What Slurm's job step writes into the job's log when it kills a job over its --mem by
+# sampling (jobacct_gather, no cgroups): the job then ends FAILED or CANCELLED, not OUT_OF_MEMORY
+# (seen on Slurm 22.05.8, docs/sweeps.md).
+OVER_MEMORY = "Exceeded job memory limit"
+
+
+def _over_memory(log):
+    try:
+        return OVER_MEMORY in log.read_text(errors="replace")
+    except OSError:
+        return False
+
+
 def report(results_dir, missing, requests, since, say):
     """One plain line per failed cell whose Slurm job ended badly in this run: the job, its
-    state, what it means, and its log."""
+    state, what it means, and its log. `requests`: each cell's mem_mb and runtime as planned
+    (Snakemake's --set-resources can change them: then the line says "its request")."""
     noted = noted_states(results_dir, since)
     for cell_file in missing:
         found = noted.get(job_name(cell_file))
@@ -82,6 +96,8 @@ def report(results_dir, missing, requests, since, say):
             "NODE_FAIL": "its node failed",
             "PREEMPTED": "it was preempted",
         }.get(job_state, f"reason {reason}")
+        if job_state != "OUT_OF_MEMORY" and _over_memory(log):
+            meaning = "it used more than its memory request (Slurm: Exceeded job memory limit)"
         say(f"{cell_file}: Slurm job {job} ended {job_state}: {meaning}; its log: {log}")
 
 
