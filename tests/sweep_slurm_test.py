@@ -45,6 +45,20 @@ def without_host_fields(path, results_dir):
     return text.replace(str(results_dir), "RESULTS")
 
 
+def run_sweep(command, env=None, timeout=180):
+    """The sweep's completed process; past the timeout it is stopped with SIGTERM (it then
+    stops its Snakemake and jobs: a SIGKILL would leave them behind)."""
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env=env)
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        process.terminate()
+        out, err = process.communicate()
+        err += f"\n(stopped after {timeout} s)\n"
+    return subprocess.CompletedProcess(command, process.returncode, out, err)
+
+
 def squeue_job(name):
     done = subprocess.run(["squeue", "-h", "-n", name, "-o", "%i"], capture_output=True,
                           text=True, check=False)
@@ -61,11 +75,10 @@ def over_memory(cells):
     signals = WORK / "over-memory-signals"
     signals.mkdir()
     start = time.monotonic()
-    done = subprocess.run(SWEEP + [str(WORK / "one.yaml"), "--results", str(results_dir),
-                                   "--slurm", "--", "--set-resources", "cell:mem_mb=1"],
-                          capture_output=True, text=True, timeout=120,
-                          env=dict(os.environ, NCUBE_TEST_PAUSE=f"started:{cell.file}",
-                                   NCUBE_TEST_PAUSE_DIR=str(signals)))
+    done = run_sweep(SWEEP + [str(WORK / "one.yaml"), "--results", str(results_dir), "--slurm",
+                              "--", "--set-resources", "cell:mem_mb=1"], timeout=120,
+                     env=dict(os.environ, NCUBE_TEST_PAUSE=f"started:{cell.file}",
+                              NCUBE_TEST_PAUSE_DIR=str(signals)))
     print(f"     over-memory run: {time.monotonic() - start:.1f} s", flush=True)
     said = [line for line in done.stderr.splitlines() if line.startswith(f"sweep: {cell.file}: ")]
     check(done.returncode == 4 and len(said) == 1 and
@@ -95,8 +108,7 @@ def main():
 
     local_dir = WORK / "local"
     start = time.monotonic()
-    local = subprocess.run(SWEEP + [str(WORK / "study.yaml"), "--results", str(local_dir)],
-                           capture_output=True, text=True, timeout=300)
+    local = run_sweep(SWEEP + [str(WORK / "study.yaml"), "--results", str(local_dir)])
     check(local.returncode == 0, f"the local run finishes ({local.returncode}, "
                                  f"{time.monotonic() - start:.1f} s)")
 
@@ -163,8 +175,7 @@ def main():
           f"the job asked for its cell's memory and time ({asked[:0] or re.findall(r'MinMemoryNode=[^ ]+|TimeLimit=[^ ]+', asked)})")
 
     start = time.monotonic()
-    second = subprocess.run(command, capture_output=True, text=True, timeout=240,
-                            env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+    second = run_sweep(command, env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
     print(f"     second cluster run: {time.monotonic() - start:.1f} s", flush=True)
     check("2 to run" in second.stdout and second.returncode == 4,
           f"the same command runs the cancelled and the failed cell again ({second.returncode}: "
