@@ -1,5 +1,6 @@
 """Runs sweeps through Snakemake (docs/sweeps.md): two local cores by default, a Slurm cluster
-with --slurm or a profile, any other cluster with --cluster.
+with --slurm (sbatch through Snakemake's generic cluster mode), any other cluster with --cluster
+or a Snakemake profile.
 
 usage: experiments/sweep SWEEP.yaml [SWEEP.json ...] [--results DIR] [--cores N]
                          [--slurm | --profile DIR | --cluster CMD] [--jobs N] [--check]
@@ -21,7 +22,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import outcome, output_file, paths, results
+from . import cell_resources, outcome, output_file, paths, results, slurm_status
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -35,6 +36,8 @@ def write_plan(sweeps, results_dir, pending, rerun_finished=False):
     plan = results_dir / "plan.json"
     text = json.dumps({"sweeps": [s.to_dict() for s in sweeps],
                        "pending": [c.file for c in pending],
+                       "resources": {c.file: cell_resources.request(c)
+                                     for s in sweeps for c in s.cells},
                        "rerun_finished": rerun_finished}, indent=1) + "\n"
     output_file.write(plan, text)
     return plan
@@ -97,12 +100,27 @@ def snakemake_command(plan, results_dir, args):
                "--rerun-triggers", "mtime",
                "--keep-going", "--cores", str(args.cores)]
     if args.slurm:
-        command += ["--slurm", "--jobs", str(args.jobs)]
+        command += slurm_arguments(results_dir) + ["--jobs", str(args.jobs)]
     if args.profile:
         command += ["--profile", str(args.profile)]
     if args.cluster:
         command += ["--cluster", args.cluster, "--jobs", str(args.jobs)]
     return command + args.snakemake
+
+
+SLURM_LOGS = Path("logs") / "slurm"
+
+
+def slurm_arguments(results_dir):
+    """Snakemake's generic cluster mode with sbatch, a status command and scancel (not its
+    built-in --slurm executor, which needs $USER and, with an account, slurmdbd accounting:
+    docs/sweeps.md, "Running on a cluster"). One single-core job per cell with the cell's own
+    memory and time (ncube.cell_resources); its output goes to logs/slurm/<job id>.log."""
+    submit = ("sbatch --parsable --job-name=ncube-{rule}-{wildcards.name} --cpus-per-task=1 "
+              "--mem={resources.mem_mb} --time={resources.runtime} "
+              f"--chdir={results_dir} --output={results_dir / SLURM_LOGS}/%j.log")
+    status = f"env PYTHONPATH={paths.ANALYSIS} /usr/bin/python3 -m ncube.slurm_status"
+    return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel"]
 
 
 def run_snakemake(command):
@@ -160,7 +178,7 @@ def main(argv=None):
                         help="results folder (default: ./results)")
     parser.add_argument("--cores", type=int, default=2, help="local cores (default 2)")
     parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
-    parser.add_argument("--profile", type=Path, help="a Snakemake profile (experiments/profiles/slurm)")
+    parser.add_argument("--profile", type=Path, help="a Snakemake profile")
     parser.add_argument("--cluster", help="generic cluster mode: the submit command")
     parser.add_argument("--jobs", type=int, default=100, help="cluster jobs at once (default 100)")
     parser.add_argument("--check", action="store_true", help="validate and list the cells only")
@@ -188,6 +206,8 @@ def main(argv=None):
     results_dir = args.results.resolve()
     try:
         results_dir.mkdir(parents=True, exist_ok=True)
+        if args.slurm:   # sbatch does not make the folder of a job's output
+            (results_dir / SLURM_LOGS).mkdir(parents=True, exist_ok=True)
         held = outcome.hold_folder(results_dir)
         if held is None:
             outcome.final_line(None, [])
@@ -205,12 +225,16 @@ def main(argv=None):
           ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
     tables = [results_dir / "sweeps" / s.name / "cells.csv" for s in sweeps]
     before = outcome.stamps(tables)
+    states_before = slurm_status.states_size(results_dir)
     start = time.monotonic()
     try:
         status, messages = run_snakemake(snakemake_command(plan, results_dir, args))
         code = outcome.OK
         if status != 0:   # a cell's file appears only verified: existing means finished
             missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
+            slurm_status.report(results_dir, missing,
+                                {c.file: cell_resources.request(c) for c in cells.values()},
+                                states_before, outcome.say)
             code = outcome.failed(status, messages, results_dir, missing)
     except outcome.Interrupted as stop:
         code = outcome.say_interrupted(stop.signum)

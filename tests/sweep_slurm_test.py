@@ -1,0 +1,198 @@
+#!/usr/bin/python3
+"""A sweep on a real one-node Slurm cluster (started by tests/sweep_slurm_test.sh, SLURM_CONF
+set): every cell is one Slurm job whose id the sweep's log shows; the result files are the local
+run's byte for byte apart from host fields; a job cancelled with scancel while its simulation
+runs (held there by ncube.run_cell's NCUBE_TEST_PAUSE, not raced) leaves no result file, is
+reported with its job id, state and log, and runs again when the same command is repeated; a
+cell that fails (a bad model) is reported with its job id and log path while the others finish;
+each job asked for its cell's own memory and time (ncube.cell_resources)."""
+import os
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "analysis"))
+from ncube import cell_resources, results, slurm_status, sweep  # noqa: E402
+
+SWEEP = [str(ROOT / "experiments" / "sweep")]
+SIMULATE = os.path.abspath(os.environ.get("NCUBE_SIMULATE") or ROOT / "simulate")
+WORK = Path(os.environ["SLURM_TEST_WORK"])
+MODEL = ROOT / "tests" / "models" / "cornell-box.obj"
+failures = []
+
+# 12 cells: scene0, the Cornell box scene file and its model, R 1 or 2, V 0 or 1.
+STUDY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
+         f"grid: {{scene: [scene0, cornell-box.json, {MODEL}], R: [1, 2], V: [0, 1]}}\n")
+# A model the sweep accepts (it imports) but whose simulation fails: the job's ./simulate
+# (a wrapper) is handed a broken copy, as if the file had been damaged on the cluster's disk.
+BROKEN = "broken.yaml"
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def without_host_fields(path, results_dir):
+    """The file's bytes without the host-time line and with the results folder's own path
+    (in the command line it records) made neutral."""
+    text = path.read_text()
+    text = re.sub(r'\n *"host_seconds": [^\n]*', "", text)
+    return text.replace(str(results_dir), "RESULTS")
+
+
+def run_sweep(command, env=None, timeout=180):
+    """The sweep's completed process; past the timeout it is stopped with SIGTERM (it then
+    stops its Snakemake and jobs: a SIGKILL would leave them behind)."""
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, env=env)
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        process.terminate()
+        out, err = process.communicate()
+        err += f"\n(stopped after {timeout} s)\n"
+    return subprocess.CompletedProcess(command, process.returncode, out, err)
+
+
+def squeue_job(name):
+    done = subprocess.run(["squeue", "-h", "-n", name, "-o", "%i"], capture_output=True,
+                          text=True, check=False)
+    return done.stdout.strip()
+
+
+def over_memory(cells):
+    """A cell over its memory request: asked for 1 MB (Snakemake's --set-resources), its job
+    held at "started" (run_cell's Python alone holds more) until Slurm kills it."""
+    cell = next(c for c in cells if c.scene == "scene0" and c.R == 1 and c.V == 0)
+    (WORK / "one.yaml").write_text("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
+                                   "grid: {scene: [scene0], R: [1]}\n")
+    results_dir = WORK / "over-memory"
+    signals = WORK / "over-memory-signals"
+    signals.mkdir()
+    start = time.monotonic()
+    done = run_sweep(SWEEP + [str(WORK / "one.yaml"), "--results", str(results_dir), "--slurm",
+                              "--", "--set-resources", "cell:mem_mb=1"], timeout=120,
+                     env=dict(os.environ, NCUBE_TEST_PAUSE=f"started:{cell.file}",
+                              NCUBE_TEST_PAUSE_DIR=str(signals)))
+    print(f"     over-memory run: {time.monotonic() - start:.1f} s", flush=True)
+    said = [line for line in done.stderr.splitlines() if line.startswith(f"sweep: {cell.file}: ")]
+    check(done.returncode == 4 and len(said) == 1 and
+          "it used more than its memory request" in said[0] and
+          not (results_dir / cell.file).exists(),
+          f"a job over its memory request is said so, no result file ({said})")
+
+
+def main():
+    (WORK / "study.yaml").write_text(STUDY)
+    bad = WORK / "bad-box.obj"
+    bad.write_bytes(MODEL.read_bytes() + b"# a copy of its own (another identity)\n")
+    (WORK / "cornell-box.mtl").write_bytes(MODEL.with_suffix(".mtl").read_bytes())
+    (WORK / "garbage.obj").write_text("v 1 2\nf 1 2 3 4 5\n")
+    (WORK / BROKEN).write_text("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
+                               f"grid: {{scene: [{bad}], R: [1]}}\n")
+    wrapper = WORK / "simulate-broken-model"
+    # Only the cell's run (--json) gets the broken copy; the sweep's import of it works.
+    wrapper.write_text('#!/bin/bash\nargs=()\nfor a in "$@"; do\n'
+                       f'  [ "$a" = "{bad}" ] && [[ " $* " == *" --json "* ]] && '
+                       f'a="{WORK / "garbage.obj"}"\n'
+                       f'  args+=("$a")\ndone\nexec {SIMULATE} "${{args[@]}}"\n')
+    wrapper.chmod(0o755)
+    cells = sweep.load(WORK / "study.yaml").cells
+    broken = sweep.load(WORK / BROKEN).cells[0]
+    check(len(cells) == 12, f"the study has 12 cells ({len(cells)})")
+
+    local_dir = WORK / "local"
+    start = time.monotonic()
+    local = run_sweep(SWEEP + [str(WORK / "study.yaml"), "--results", str(local_dir)])
+    check(local.returncode == 0, f"the local run finishes ({local.returncode}, "
+                                 f"{time.monotonic() - start:.1f} s)")
+
+    cluster_dir = WORK / "cluster-results"
+    held = next(c for c in cells if c.scene == "scene0" and c.R == 2 and c.V == 1)
+    signals = WORK / "signals"
+    signals.mkdir()
+    command = SWEEP + [str(WORK / "study.yaml"), str(WORK / BROKEN), "--results",
+                       str(cluster_dir), "--slurm"]
+    environment = dict(os.environ, NCUBE_SIMULATE=str(wrapper),
+                       NCUBE_TEST_PAUSE=f"started:{held.file}", NCUBE_TEST_PAUSE_DIR=str(signals))
+    start = time.monotonic()
+    first = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             env=environment)
+    deadline = time.monotonic() + 120
+    while not (signals / "started").exists() and first.poll() is None and \
+            time.monotonic() < deadline:
+        time.sleep(0.1)
+    held_job = squeue_job(slurm_status.job_name(held.file))
+    check((signals / "started").exists() and held_job.isdigit(),
+          f"the held cell runs as Slurm job {held_job or '?'}")
+    asked = subprocess.run(["scontrol", "show", "job", "--oneliner", held_job or "0"],
+                           capture_output=True, text=True, check=False).stdout
+    subprocess.run(["scancel", held_job], check=False)
+    try:
+        out, err = first.communicate(timeout=180)
+    except subprocess.TimeoutExpired:
+        first.terminate()
+        out, err = first.communicate()
+    print(f"     first cluster run: {time.monotonic() - start:.1f} s", flush=True)
+    log = out + err
+    submitted = re.findall(r"Submitted job \d+ with external jobid '(\d+)'", log)
+    check(len(submitted) == 13 and len(set(submitted)) == 13,
+          f"one Slurm job per cell, their ids in the sweep's log ({len(submitted)} submitted)")
+    if len(submitted) != 13:
+        print(err[-3000:])
+    check(first.returncode == 4, f"a cancelled job and a failed cell: exit 4 ({first.returncode})")
+    said = [line for line in err.splitlines() if line.startswith("sweep: ")]
+    cancelled = [line for line in said if line.startswith(f"sweep: {held.file}: ")]
+    check(len(cancelled) == 1 and f"Slurm job {held_job}" in cancelled[0] and
+          "CANCELLED" in cancelled[0] and
+          str(cluster_dir / "logs" / "slurm" / f"{held_job}.log") in cancelled[0],
+          f"the cancelled cell is named with its job, state and log ({cancelled})")
+    check(not (cluster_dir / held.file).exists() and
+          not list((cluster_dir / "cells").glob("*.running")),
+          "the cancelled job left no result file")
+    failed = [line for line in said if line.startswith(f"sweep: {broken.file}: ")]
+    failed_job = re.search(r"Slurm job (\d+)", failed[0]) if failed else None
+    check(failed_job is not None and
+          str(cluster_dir / "logs" / "slurm" / f"{failed_job.group(1)}.log") in failed[0] and
+          "FAILED" in failed[0],
+          f"the failed cell is named with its job id and log path ({failed})")
+    if failed_job:
+        job_log = (cluster_dir / "logs" / "slurm" / f"{failed_job.group(1)}.log").read_text()
+        check("simulate: " in job_log and str(WORK / "garbage.obj") in job_log,
+              "its log holds the simulator's message")
+    others = [c for c in cells if c is not held]
+    check(all(results.mismatch(results.read(cluster_dir / c.file), c) is None for c in others),
+          "the other cells finished")
+    # ncube.cell_resources for the default platform's 64 nodes: 384 + 16 MB rounded up to
+    # 448, 10 + 0.5 minutes rounded up to 11; the scheduler holds the job to them.
+    check(cell_resources.request(held) == {"mem_mb": 448, "runtime": 11} and
+          " MinMemoryNode=448M " in asked and " TimeLimit=00:11:00 " in asked,
+          f"the job asked for its cell's memory and time ({asked[:0] or re.findall(r'MinMemoryNode=[^ ]+|TimeLimit=[^ ]+', asked)})")
+
+    start = time.monotonic()
+    second = run_sweep(command, env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+    print(f"     second cluster run: {time.monotonic() - start:.1f} s", flush=True)
+    check("2 to run" in second.stdout and second.returncode == 4,
+          f"the same command runs the cancelled and the failed cell again ({second.returncode}: "
+          f"{second.stdout.splitlines()[:1]})")
+    check(results.mismatch(results.read(cluster_dir / held.file), held) is None,
+          "the cancelled cell is finished now")
+    same = [c.file for c in cells
+            if without_host_fields(cluster_dir / c.file, cluster_dir) ==
+            without_host_fields(local_dir / c.file, local_dir)]
+    check(len(same) == 12, f"the cluster's result files are the local run's byte for byte apart "
+                           f"from host fields ({len(same)} of 12)")
+    over_memory(cells)
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# ctest entry for tests/sweep_slurm_test.py: a sweep on a real one-node Slurm cluster
+# (tests/slurm_cluster.sh), started here and always stopped. Skipped (exit 77, ctest's
+# SKIP_RETURN_CODE) only when the daemons cannot start, with one line saying why.
+source "$2/tests/slurm_cluster.sh"
+work=$(mktemp -d /tmp/sweep_slurm_test.XXXXXX)
+trap 'slurm_cluster_stop "$work/cluster"; rm -rf "$work"' EXIT
+if ! slurm_cluster_start "$work/cluster"; then
+  echo "SKIP sweep_slurm_test: the Slurm daemons cannot start: $SLURM_CLUSTER_WHY"
+  exit 77
+fi
+# Snakemake's built-in executor would need $USER; the sweep's path must not (CI has none).
+NCUBE_SIMULATE="$1" SLURM_TEST_WORK="$work" env -u USER /usr/bin/python3 "$2/tests/sweep_slurm_test.py"
