@@ -4,6 +4,7 @@ as ./simulate's does (docs/cli.md, "Input files"): every case below is made in a
 and its message compared with the one the rule gives. The robustness suite only sees exit 2
 for these (an empty read of a FIFO also ends in a refusal), so the kinds are pinned here."""
 import os
+import re
 import socket
 import sys
 import tempfile
@@ -13,6 +14,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
 from ncube import input_file  # noqa: E402
 
 failures = []
+
+# The sweep tool's limits are ./simulate's (one rule): held to src/util/input_file.h here.
+header = (Path(__file__).resolve().parents[1] / "src/util/input_file.h").read_text()
+for python_limit, kind in ((input_file.SCENE_FILE_BYTES, "kSceneFile"),
+                           (input_file.PLATFORM_FILE_BYTES, "kSimgridPlatformFile")):
+    found = re.search(r"InputKind %s\{\"[^\"]*\", (\d+) \* kMiB\}" % kind, header)
+    if not found or int(found.group(1)) << 20 != python_limit:
+        failures.append(f"input_file.py's limit {python_limit} is not {kind}'s in input_file.h")
 
 
 def expect(path, needle, max_bytes=64):
