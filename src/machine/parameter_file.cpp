@@ -9,6 +9,17 @@
 
 namespace ncube {
 
+std::string value_problem(const ParameterSpec& spec, double value, const std::string& written) {
+  if (!std::isfinite(value)) return "value is not finite";
+  if (value < spec.min_value)
+    return "value " + written + " is below " + nlohmann::json(spec.min_value).dump();
+  if (value > spec.max_value)
+    return "value " + written + " is above " + nlohmann::json(spec.max_value).dump();
+  if (spec.integer && value != std::floor(value))
+    return "value " + written + " must be a whole number";
+  return "";
+}
+
 std::map<std::string, double> read_parameter_file(const std::string& path, const InputKind& kind,
                                                   const std::vector<ParameterSpec>& specs,
                                                   const std::vector<std::string>& sections) {
@@ -37,16 +48,13 @@ std::map<std::string, double> read_parameter_file(const std::string& path, const
     for (auto it = entry.begin(); it != entry.end(); ++it)
       if (it.key() != "value" && it.key() != "unit" && it.key() != "doc" && it.key() != "source")
         throw InputError(where + ": unknown key \"" + it.key() + "\"");
+    if (spec.unit && entry.contains("unit") &&
+        (!entry["unit"].is_string() || entry["unit"].get<std::string>() != spec.unit))
+      throw InputError(where + ": unit " + entry["unit"].dump() + " is not \"" + spec.unit +
+                       "\", the unit the simulator reads it in");
     const double value = entry["value"].get<double>();
-    if (!std::isfinite(value)) throw InputError(where + ": value is not finite");
-    if (value < spec.min_value)
-      throw InputError(where + ": value " + entry["value"].dump() + " is below " +
-                       nlohmann::json(spec.min_value).dump());
-    if (value > spec.max_value)
-      throw InputError(where + ": value " + entry["value"].dump() + " is above " +
-                       nlohmann::json(spec.max_value).dump());
-    if (spec.integer && value != std::floor(value))
-      throw InputError(where + ": value " + entry["value"].dump() + " must be a whole number");
+    const std::string problem = value_problem(spec, value, entry["value"].dump());
+    if (!problem.empty()) throw InputError(where + ": " + problem);
     values[spec.name] = value;
   }
   for (auto it = parameters.begin(); it != parameters.end(); ++it) {

@@ -18,7 +18,13 @@ struct ParameterSpec {
   double min_value;   // inclusive lower bound
   bool integer;       // must be a whole number
   double max_value = 1e300;  // inclusive upper bound
+  const char* unit = nullptr;  // the "unit" a file may give (any when nullptr)
 };
+
+// "" when `value` (as the file wrote it: `written`) is within the spec, else why not:
+// "value 40 is above 13", "value 2.5 must be a whole number". The SimGrid XML reader holds a
+// node's properties to the same specs.
+std::string value_problem(const ParameterSpec& spec, double value, const std::string& written);
 
 // Largest parameter file read, in bytes.
 constexpr std::size_t kMaxParameterFileBytes = kPlatformFile.max_bytes;
@@ -26,8 +32,8 @@ static_assert(kCostModelFile.max_bytes == kMaxParameterFileBytes);
 
 // Reads `path` as `kind` (kPlatformFile or kCostModelFile: util/input_file.h) and returns
 // the value of every parameter in `specs`. Throws InputError naming the file and the
-// parameter when one is missing, unknown, not a finite number, out of range or (for
-// integers) fractional.
+// parameter when one is missing, unknown, not a finite number, out of range, (for
+// integers) fractional, or given in another unit than the spec's.
 // `sections` names further top-level keys the file may have (read by the caller).
 std::map<std::string, double> read_parameter_file(const std::string& path, const InputKind& kind,
                                                   const std::vector<ParameterSpec>& specs,

@@ -14,7 +14,7 @@ namespace {
 std::map<std::string, std::string> read_simgrid_config(const std::string& path) {
   // Already checked by the reader.
   const nlohmann::json doc = nlohmann::json::parse(read_input_file(path, kPlatformFile));
-  if (!doc.contains("simgrid_config")) return PlatformConfig{}.simgrid_config;
+  if (!doc.contains("simgrid_config")) return default_network_model();
   const nlohmann::json& section = doc["simgrid_config"];
   if (!section.is_object()) throw InputError(path + ": \"simgrid_config\": expected an object");
   std::map<std::string, std::string> settings;
@@ -36,26 +36,11 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
 PlatformConfig load_platform_config(const std::string& path,
                                     const std::vector<std::string>& simgrid_arguments) {
   if (is_simgrid_platform_file(path)) return read_simgrid_platform_file(path, simgrid_arguments);
-  const auto v = read_parameter_file(path, kPlatformFile,
-                                     // Sanity bounds, far around the nCube2's values: within
-                                     // them every simulated time stays finite and well inside
-                                     // the range SimGrid computes with (docs/model.md, "Machine").
-                                     {{"dimension", 0, true, 13},
-                                      {"node_speed", 1e3, false, 1e15},
-                                      {"node_memory", 1, true, 0x1p50},
-                                      {"link_bandwidth", 1e3, false, 1e15},
-                                      {"hop_latency", 0, false, 1},
-                                      {"send_overhead", 0, false, 1},
-                                      {"receive_overhead", 0, false, 1}},
-                                     {"simgrid_config"});
+  std::vector<ParameterSpec> specs;
+  for (const MachineParameter& p : machine_parameters()) specs.push_back(parameter_spec(p));
+  const auto values = read_parameter_file(path, kPlatformFile, specs, {"simgrid_config"});
   PlatformConfig c;
-  c.dimension = int(v.at("dimension"));
-  c.node_speed = v.at("node_speed");
-  c.node_memory = v.at("node_memory");
-  c.link_bandwidth = v.at("link_bandwidth");
-  c.hop_latency = v.at("hop_latency");
-  c.send_overhead = v.at("send_overhead");
-  c.receive_overhead = v.at("receive_overhead");
+  for (const MachineParameter& p : machine_parameters()) p.set(c, values.at(p.name));
   c.simgrid_config = read_simgrid_config(path);
   return c;
 }

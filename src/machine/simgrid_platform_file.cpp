@@ -7,8 +7,11 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <simgrid/s4u/NetZone.hpp>
 
+#include "machine/machine_parameters.h"
+#include "machine/parameter_file.h"
 #include "machine/simgrid_session.h"
 #include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
@@ -17,17 +20,35 @@
 namespace ncube {
 namespace {
 
-// A host's property, else its zone's (a <cluster>'s <prop> belongs to the zone).
-double node_property(const std::string& path, simgrid::s4u::Host* host, const char* name) {
-  const char* text = host->get_property(name);
-  if (!text) text = host->get_englobing_zone()->get_property(name);
-  const std::string where = path + ": host \"" + host->get_name() + "\": property \"" + name + "\"";
+// A node's value of a parameter the file carries (XmlForm::kHostSpeed or kProperty), held
+// to the parameter's range. A property is the host's, else its zone's (a <cluster>'s <prop>
+// belongs to the zone).
+double node_value(const std::string& path, simgrid::s4u::Host* host, const MachineParameter& p) {
+  const std::string host_name = path + ": host \"" + host->get_name() + "\": ";
+  const ParameterSpec spec = parameter_spec(p);
+  if (p.xml == XmlForm::kHostSpeed) {
+    const double speed = host->get_speed();
+    const std::string problem = value_problem(spec, speed, nlohmann::json(speed).dump());
+    if (!problem.empty()) throw InputError(host_name + "speed (" + p.name + "): " + problem);
+    return speed;
+  }
+  const char* text = host->get_property(p.name);
+  if (!text) text = host->get_englobing_zone()->get_property(p.name);
+  const std::string where = host_name + "property \"" + p.name + "\"";
   if (!text) throw InputError(where + ": missing");
   char* end = nullptr;
   const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(value) || value < 0)
-    throw InputError(where + ": \"" + text + "\" is not a number of 0 or more");
+  if (end == text || *end != '\0')
+    throw InputError(where + ": \"" + text + "\" is not a number");
+  const std::string problem = value_problem(spec, value, text);
+  if (!problem.empty()) throw InputError(where + ": " + problem);
   return value;
+}
+
+// How a node's value is named in an error: the speed attribute or the property.
+std::string xml_name(const MachineParameter& p) {
+  return p.xml == XmlForm::kHostSpeed ? std::string("speed (") + p.name + ")"
+                                      : std::string("property \"") + p.name + "\"";
 }
 
 // "line <n>: <name>=" of the first attribute named `file` or `*_file` with a value, or "".
@@ -133,18 +154,18 @@ PlatformConfig read_simgrid_platform_file(const std::string& path,
   if (std::size_t(c.xml_nodes) != engine.get_host_count())
     throw InputError(path + ": " + std::to_string(engine.get_host_count()) + " hosts, but only node-0 ... node-" +
                      std::to_string(c.xml_nodes - 1) + " are numbered without a gap");
-  for (simgrid::s4u::Host* host : simgrid_platform_nodes(c)) {
-    const double memory = node_property(path, host, "node_memory");
-    const double send = node_property(path, host, "send_overhead");
-    const double receive = node_property(path, host, "receive_overhead");
-    if (host->get_name() == "node-0") {
-      c.node_speed = host->get_speed();  // counted work becomes seconds at this speed
-      c.node_memory = memory, c.send_overhead = send, c.receive_overhead = receive;
-    } else if (host->get_speed() != c.node_speed || memory != c.node_memory || send != c.send_overhead || receive != c.receive_overhead) {
-      throw InputError(path + ": host \"" + host->get_name() +
-                       "\": speed, node_memory, send_overhead and receive_overhead must be those of node-0");
+  // Every node has node-0's values: the node programs see one machine (docs/platforms.md).
+  for (simgrid::s4u::Host* host : simgrid_platform_nodes(c))
+    for (const MachineParameter& p : machine_parameters()) {
+      if (!carried_by(p, c.format)) continue;
+      const double value = node_value(path, host, p);
+      if (host->get_name() == "node-0")
+        p.set(c, value);
+      else if (value != p.get(c))
+        throw InputError(path + ": host \"" + host->get_name() + "\": " + xml_name(p) + ": " +
+                         nlohmann::json(value).dump() + " differs from node-0's " +
+                         nlohmann::json(p.get(c)).dump() + " (every node must be the same)");
     }
-  }
   return c;
 }
 

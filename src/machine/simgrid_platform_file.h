@@ -1,9 +1,9 @@
 // A SimGrid platform file (XML) as the machine: any interconnect SimGrid can describe (a 2D
 // mesh, a fat tree, ...) runs the same node programs (docs/platforms.md). Node k is the host
-// "node-k" (k = 0 ... n-1); its speed is the host's; the nCube2 values SimGrid has no notion
-// of are host properties (or properties of the host's zone): node_memory (bytes),
-// send_overhead and receive_overhead (seconds of CPU per message). The file's <config> tags
-// are defaults that --cfg overrides.
+// "node-k" (k = 0 ... n-1); its speed is the host's; the machine parameters SimGrid has no
+// notion of (XmlForm::kProperty in src/machine/machine_parameters.h: node_memory,
+// send_overhead, receive_overhead) are host properties or properties of the host's zone. The
+// file's <config> tags are defaults that --cfg overrides.
 #pragma once
 
 #include <string>
@@ -19,7 +19,8 @@ namespace ncube {
 bool is_simgrid_platform_file(const std::string& path);
 
 // Loads the platform into the process's SimGrid Engine (created with `simgrid_arguments`) and
-// reads the nodes. Throws InputError naming the file and host for a missing node or property.
+// reads the nodes. Throws InputError naming the file, the host and the property (or the
+// speed) that is missing, out of the parameter's range, or not node-0's.
 PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments);
 

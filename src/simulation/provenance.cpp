@@ -1,5 +1,6 @@
 #include "simulation/provenance.h"
 
+#include "machine/machine_parameters.h"
 #include "simulation/result_file.h"
 #include "models/model_import.h"
 #include "util/input_file.h"
@@ -8,14 +9,14 @@
 namespace ncube {
 
 nlohmann::json platform_values(const PlatformConfig& p) {
-  if (p.format == "simgrid-xml")  // the interconnect is the file's (its hash names it)
-    return {{"nodes", p.node_count()},          {"node_speed", p.node_speed},
-            {"node_memory", p.node_memory},     {"send_overhead", p.send_overhead},
-            {"receive_overhead", p.receive_overhead}};
-  return {{"dimension", p.dimension},         {"nodes", p.node_count()},
-          {"node_speed", p.node_speed},       {"node_memory", p.node_memory},
-          {"link_bandwidth", p.link_bandwidth}, {"hop_latency", p.hop_latency},
-          {"send_overhead", p.send_overhead}, {"receive_overhead", p.receive_overhead}};
+  // A SimGrid XML file's interconnect is the file's (its hash names it): only the values it
+  // gives are written (src/machine/machine_parameters.h, carried_by).
+  nlohmann::json values = {{"nodes", p.node_count()}};
+  for (const MachineParameter& m : machine_parameters())
+    if (carried_by(m, p.format))
+      values[m.name] = m.integral ? nlohmann::json(static_cast<long long>(m.get(p)))
+                                  : nlohmann::json(m.get(p));
+  return values;
 }
 
 nlohmann::json cost_model_values(const CostModel& c) {

@@ -1,0 +1,90 @@
+// The one list of machine parameters: every number a platform file gives the simulator, with
+// its unit, the range the loaders accept, what it is and which platform forms carry it.
+// PlatformConfig's fields are declared from it, and the JSON loader, the SimGrid XML reader
+// and its per-node check, the result file's provenance, the tables of docs/model.md,
+// docs/platforms.md and docs/result-format.md (docs/platform_tables.py reads this header) and
+// the robustness suite's bounds (tests/robustness/cases.py) all iterate it. Adding a
+// parameter: docs/architecture.md, "How to add a machine parameter".
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "machine/parameter_file.h"
+
+namespace ncube {
+
+struct PlatformConfig;
+
+// How a SimGrid platform file (XML, docs/platforms.md) gives a parameter.
+enum class XmlForm {
+  kInterconnect,  // no value: the file's own links and routes are the interconnect
+  kHostSpeed,     // the speed attribute of every node host (flop/s)
+  kProperty,      // a <prop> of every node host, or of the host's zone (a <cluster>'s <prop>)
+};
+
+// X(name, C++ type, unit, smallest, largest, whole number, XmlForm, what it is)
+// One entry a line group, in the order the result file's values were first written. The
+// ranges are sanity bounds far around the nCube2's values (a choice: beyond them a value is a
+// typo, and simulated times could leave the range SimGrid computes in). A platform file's
+// "unit", when it gives one, must be the unit here. docs/platform_tables.py parses these
+// entries: keep each field a plain literal.
+#define NCUBE_MACHINE_PARAMETERS(X)                                                            \
+  X(dimension, int, "", 0, 13, true, kInterconnect,                                            \
+    "hypercube dimension: the machine has 2^dimension nodes, node k's bit i is its "           \
+    "coordinate in dimension i (the simulator builds the hypercube with e-cube routing)")      \
+  X(node_speed, double, "flop/s", 1e3, 1e15, false, kHostSpeed,                                \
+    "floating-point speed of one node, the rate at which counted work (cost_model.json) is "   \
+    "executed; every node has the same")                                                       \
+  X(node_memory, double, "byte", 1, 0x1p50, true, kProperty,                                   \
+    "memory of one node; the node programs account their modeled bytes against it")           \
+  X(link_bandwidth, double, "byte/s", 1e3, 1e15, false, kInterconnect,                         \
+    "bandwidth of one hypercube link in each direction (links are full duplex)")               \
+  X(hop_latency, double, "s", 0, 1, false, kInterconnect,                                      \
+    "latency per hop of a route: a message alone over h hops takes h x hop_latency + "         \
+    "bytes / link_bandwidth")                                                                  \
+  X(send_overhead, double, "s", 0, 1, false, kProperty,                                        \
+    "CPU time the sending node spends per message before it leaves")                           \
+  X(receive_overhead, double, "s", 0, 1, false, kProperty,                                     \
+    "CPU time the receiving node spends per message when its program takes it")
+
+// The network model a JSON platform file gets when it has no "simgrid_config" (the nCube2's,
+// docs/model.md): X(SimGrid setting, value, why). Defaults that --cfg overrides. The one
+// place of these values: platforms/ncube2.json and platforms/ncube2.xml repeat them only
+// because their bytes (hashed into every result file) are kept, and
+// tests/machine_parameters_test.cpp holds them to this list.
+#define NCUBE_NETWORK_MODEL(X)                                                                 \
+  X("network/model", "CM02",                                                                   \
+    "no latency or bandwidth correction factors (SimGrid's default LV08 multiplies latency "   \
+    "by 13)")                                                                                  \
+  X("network/crosstraffic", "0",                                                               \
+    "no reverse acknowledgement flow beside each message")                                     \
+  X("network/solver", "fairbottleneck",                                                        \
+    "a link is shared equally between the messages crossing it")
+
+struct MachineParameter {
+  const char* name;  // in a JSON file's "parameters", an XML <prop>, the result file
+  const char* unit;
+  double low, high;  // inclusive
+  bool whole;        // must be a whole number
+  XmlForm xml;
+  const char* doc;
+  bool integral;     // held as an int (the result file writes it without a fraction)
+  double (*get)(const PlatformConfig&);
+  void (*set)(PlatformConfig&, double);
+};
+
+// Every parameter, in the list's order.
+const std::vector<MachineParameter>& machine_parameters();
+
+// What the loaders hold a value to: name, range, whole number, unit.
+ParameterSpec parameter_spec(const MachineParameter& parameter);
+
+// Whether a platform of `format` ("json" or "simgrid-xml") gives the parameter a value.
+bool carried_by(const MachineParameter& parameter, const std::string& format);
+
+// NCUBE_NETWORK_MODEL as SimGrid settings.
+const std::map<std::string, std::string>& default_network_model();
+
+}  // namespace ncube
