@@ -23,9 +23,17 @@ std::string write_temp(const std::string& text) {
   return path;
 }
 
+// The reader's own specs, a machine's seven as they were when this test was written (the
+// platform loader's come from src/machine/machine_parameters.h: machine_parameters_test).
+const std::vector<ParameterSpec> kSpecs = {
+    {"dimension", 0, true, 13},      {"node_speed", 1e3, false, 1e15},
+    {"node_memory", 1, true, 0x1p50}, {"link_bandwidth", 1e3, false, 1e15},
+    {"hop_latency", 0, false, 1},    {"send_overhead", 0, false, 1},
+    {"receive_overhead", 0, false, 1, "s"}};
+
 std::string error_of(const std::string& text) {
   try {
-    load_platform_config(write_temp(text));
+    read_parameter_file(write_temp(text), kPlatformFile, kSpecs);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -77,6 +85,13 @@ TEST(ParameterFile, NamesTheParameterThatIsWrong) {
   EXPECT_NE(error_of(with(R"("hop_latency": {"value": 1e-6})", R"("hop_latency": {"value": 1e-6, "units": "s"})"))
                 .find("unknown key \"units\""),
             std::string::npos);
+  EXPECT_NE(error_of(with(R"("receive_overhead": {"value": 1e-5})",
+                          R"("receive_overhead": {"value": 1e-5, "unit": "ms"})"))
+                .find("\"receive_overhead\": unit \"ms\" is not \"s\""),
+            std::string::npos);
+  EXPECT_EQ(error_of(with(R"("receive_overhead": {"value": 1e-5})",
+                          R"("receive_overhead": {"value": 1e-5, "unit": "s"})")),
+            "");
   EXPECT_NE(error_of("{ not json").find("malformed JSON"), std::string::npos);
   EXPECT_NE(error_of(std::string(kValid).substr(0, std::string(kValid).size() - 2) +
                      R"(, "turbo": {"value": 1}}})")

@@ -22,9 +22,11 @@ import copy
 import json
 import math
 import os
+import re
 import socket
 import stat
 import subprocess
+import sys
 from pathlib import Path
 
 # A light square at y = 2 facing down, a floor facing up and a wall: small enough that a
@@ -326,7 +328,28 @@ def machine_cases(root, work):
         path.write_text(json.dumps(p))
         cases.append({"group": "machine", "name": f"platform {name} {value}", "expect": expect,
                       "args": [str(scene), *QUICK, "--platform", str(path), "--json", str(out)],
-                      "outputs": [out]})
+                      "outputs": [out], "names": f'"{name}"'})
+
+    xml = (root / "platforms" / "ncube2.xml").read_text()
+
+    def xml_with(name, form, value):
+        """platforms/ncube2.xml with the parameter's speed or <prop> given `value` (None: the
+        <prop> left out)."""
+        if form == "kHostSpeed":
+            pattern, text = r'(<cluster [^>]*?\bspeed=")[^"]*(")', f"{value}f"
+        else:
+            pattern, text = r'(<prop id="%s" value=")[^"]*("/>)' % re.escape(name), str(value)
+        if not re.search(pattern, xml):
+            raise ValueError(f"platforms/ncube2.xml does not give {name} "
+                             f"(src/machine/machine_parameters.h: {form})")
+        changed = (re.sub(pattern, lambda m: m.group(1) + text + m.group(2), xml, count=1)
+                   if value is not None else re.sub(r'\s*' + pattern, "", xml, count=1))
+        path = work / f"platform-{len(cases)}.xml"
+        path.write_text(changed)
+        what = "left out" if value is None else value
+        cases.append({"group": "machine", "name": f"platform XML {name} {what}", "expect": "error",
+                      "args": [str(scene), *QUICK, "--platform", str(path), "--json", str(out)],
+                      "outputs": [out], "names": name})
 
     def costs_with(name, value, expect="error"):
         m = copy.deepcopy(model)
@@ -337,15 +360,27 @@ def machine_cases(root, work):
                       "args": [str(scene), *QUICK, "--cost-model", str(path), "--json", str(out)],
                       "outputs": [out]})
 
-    platform_with("node_speed", 1e-300)
+    # The bounds come from the one list of machine parameters (docs/platform_tables.py reads
+    # it): each parameter just past both ends of its range, far past them, and fractional
+    # where it must be whole, in the JSON file and (where the XML form carries it) in
+    # platforms/ncube2.xml; a <prop> left out. Every refusal names the parameter.
+    sys.path.insert(0, str(root / "docs"))
+    import platform_tables  # noqa: E402
+    parameters = platform_tables.machine_parameters(root)
+    assert len(parameters) >= 7, "fewer machine parameters than the nCube2's seven"
+    for p in parameters:
+        below = p["low"] - 1 if p["whole"] else math.nextafter(p["low"], -math.inf)
+        above = p["high"] + 1 if p["whole"] else math.nextafter(p["high"], math.inf)
+        far_below = 1e-300 if p["low"] > 0 else -1e300
+        values = [below, above, far_below, 1e300] + ([p["low"] + 0.5] if p["whole"] else [])
+        for value in values:
+            platform_with(p["name"], int(value) if value == int(value) and abs(value) < 2 ** 53 else value)
+        if p["xml"] != "kInterconnect":
+            xml_with(p["name"], p["xml"], repr(above))
+            xml_with(p["name"], p["xml"], repr(below))
+        if p["xml"] == "kProperty":
+            xml_with(p["name"], p["xml"], None)
     platform_with("node_speed", 0)
-    platform_with("link_bandwidth", 1e-300)
-    platform_with("hop_latency", 1e300)
-    platform_with("send_overhead", -1)
-    platform_with("send_overhead", 1e300)
-    platform_with("dimension", 14)
-    platform_with("dimension", 2.5)
-    platform_with("node_memory", 0)
     costs_with("flops_per_ray", 1e300)
     costs_with("flops_per_ray", -1)
     costs_with("element_bytes", 1e300)
