@@ -20,6 +20,12 @@
 namespace ncube {
 namespace {
 
+// How a node's value is named in an error: the speed attribute or the property.
+std::string xml_name(const MachineParameter& p) {
+  return p.xml == XmlForm::kHostSpeed ? std::string("speed (") + p.name + ")"
+                                      : std::string("property \"") + p.name + "\"";
+}
+
 // A node's value of a parameter the file carries (XmlForm::kHostSpeed or kProperty), held
 // to the parameter's range. A property is the host's, else its zone's (a <cluster>'s <prop>
 // belongs to the zone).
@@ -29,12 +35,12 @@ double node_value(const std::string& path, simgrid::s4u::Host* host, const Machi
   if (p.xml == XmlForm::kHostSpeed) {
     const double speed = host->get_speed();
     const std::string problem = value_problem(spec, speed, nlohmann::json(speed).dump());
-    if (!problem.empty()) throw InputError(host_name + "speed (" + p.name + "): " + problem);
+    if (!problem.empty()) throw InputError(host_name + xml_name(p) + ": " + problem);
     return speed;
   }
   const char* text = host->get_property(p.name);
   if (!text) text = host->get_englobing_zone()->get_property(p.name);
-  const std::string where = host_name + "property \"" + p.name + "\"";
+  const std::string where = host_name + xml_name(p);
   if (!text) throw InputError(where + ": missing");
   char* end = nullptr;
   const double value = std::strtod(text, &end);
@@ -43,12 +49,6 @@ double node_value(const std::string& path, simgrid::s4u::Host* host, const Machi
   const std::string problem = value_problem(spec, value, text);
   if (!problem.empty()) throw InputError(where + ": " + problem);
   return value;
-}
-
-// How a node's value is named in an error: the speed attribute or the property.
-std::string xml_name(const MachineParameter& p) {
-  return p.xml == XmlForm::kHostSpeed ? std::string("speed (") + p.name + ")"
-                                      : std::string("property \"") + p.name + "\"";
 }
 
 // "line <n>: <name>=" of the first attribute named `file` or `*_file` with a value, or "".
