@@ -219,27 +219,30 @@ def _product(values):
 BUILDERS = {"torus": torus, "fat_tree": fat_tree, "mesh": mesh}
 
 
+def network_doc(machine, nodes, network):
+    """The header's one-line description of a file's network."""
+    if nodes == 64:
+        return machine["network_doc"]
+    kind, shape = network
+    if kind == "torus" and set(shape) == {2}:
+        doc = ("a %d-dimensional binary hypercube routed dimension by dimension (e-cube), "
+               "written as a TORUS of extent 2 in %d dimensions" % (len(shape), len(shape)))
+    elif kind == "torus":
+        doc = "a %d-D torus of %s" % (len(shape), " x ".join(map(str, shape)))
+    elif kind == "mesh":
+        doc = ("a 2-D mesh of %d x %d routing chips without wrap-around links, one node on each; "
+               "shortest paths (Dijkstra)" % shape)
+    else:
+        doc = ("a 4-ary fat tree of %d levels (down %s, up %s): 20 MB/s a node into its group of "
+               "4, 10 MB/s into its group of 16 and 5 MB/s beyond"
+               % (len(shape[0]), ",".join(map(str, shape[0])), ",".join(map(str, shape[1]))))
+    return doc + "; every other figure is that of %s.xml" % machine["name"]
+
+
 def platform_text(machine, nodes, network):
     kind, shape = network
-    if kind == "torus":
-        doc = machine["network_doc"] if nodes == 64 else "a %s torus of %s" % (
-            "2-D" if len(shape) == 2 else "%d-D" % len(shape), " x ".join(map(str, shape)))
-        if kind == "torus" and set(shape) == {2}:
-            doc = machine["network_doc"] if nodes == 64 else (
-                "a %d-dimensional binary hypercube routed dimension by dimension (e-cube), "
-                "written as a TORUS of extent 2 in %d dimensions" % (len(shape), len(shape)))
-    elif kind == "mesh":
-        doc = machine["network_doc"] if nodes == 64 else (
-            "a 2-D mesh of %d x %d routing chips without wrap-around links, one node on each; "
-            "shortest paths (Dijkstra)" % shape)
-    else:
-        doc = machine["network_doc"] if nodes == 64 else (
-            "a 4-ary fat tree of %d levels (down %s, up %s): 20 MB/s a node into its group of 4, "
-            "10 MB/s into its group of 16 and 5 MB/s beyond"
-            % (len(shape[0]), ",".join(map(str, shape[0])), ",".join(map(str, shape[1]))))
-    if nodes != 64:
-        doc += "; every other figure is that of %s.xml" % machine["name"]
-    return header(machine, nodes, doc) + CONFIG + BUILDERS[kind](machine, nodes, shape) + "</platform>\n"
+    return (header(machine, nodes, network_doc(machine, nodes, network)) + CONFIG +
+            BUILDERS[kind](machine, nodes, shape) + "</platform>\n")
 
 
 def outputs():
