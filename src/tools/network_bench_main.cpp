@@ -56,8 +56,15 @@ int network_bench(int argc, char** argv) {
   });
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return ncube::kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return ncube::kExitOk;
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    std::cerr << "network_bench: " << e.what() << "\n(see network_bench --help)\n";
+    return ncube::kExitBadInput;
   }
   if (min_bytes % 8 != 0)
     throw ncube::InputError("--min-bytes " + std::to_string(min_bytes) + ": not a multiple of 8");
