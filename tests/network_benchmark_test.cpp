@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
+
+#include <simgrid/s4u/Engine.hpp>
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
@@ -114,6 +117,55 @@ TEST(NetworkBenchmark, MessageCarriesItsPayloadAsTheNodeProgramsCountIt) {
   const CostModel costs = load_cost_model(kRoot + "/platforms/cost_model.json");
   EXPECT_EQ(payload_bytes(*benchmark_message(8), costs), 8);
   EXPECT_EQ(payload_bytes(*benchmark_message(1048576), costs), 1048576);
+}
+
+// The pair choice's tie-breaks, on a made-up platform of 4 nodes whose routes tie on latency:
+// 0-1 (link a: 0.9 us, 1 link, 1 MB/s), 0-2 (b, c: 0.2 + 0.7 us, 2 links), 0-3 (d: 0.9 us,
+// 1 link, 0.1 MB/s); 1-2 (a, b, c: 1.8 us, 3 links, 1 MB/s), 1-3 (a, d: 1.8 us, 2 links),
+// 2-3 (b, c, d: 1.8 us, 3 links, 0.1 MB/s). Summed in route order, 1-2's latency comes out
+// 1.8000000000000001e-06 and 2-3's 1.8e-06: a tie all the same.
+TEST(NetworkBenchmark, PairsBreakLatencyTiesByLinksThenBottleneck) {
+  const std::string file = ::testing::TempDir() + "/network_pairs_test.xml";
+  {
+    std::ofstream xml(file);
+    xml << R"(<?xml version='1.0'?>
+<!DOCTYPE platform SYSTEM "https://simgrid.org/simgrid.dtd">
+<platform version="4.1">
+  <zone id="test" routing="Full">
+    <host id="node-0" speed="1f"/><host id="node-1" speed="1f"/>
+    <host id="node-2" speed="1f"/><host id="node-3" speed="1f"/>
+    <link id="a" bandwidth="1MBps" latency="9e-07"/>
+    <link id="b" bandwidth="1MBps" latency="2e-07"/>
+    <link id="c" bandwidth="1MBps" latency="7e-07"/>
+    <link id="d" bandwidth="0.1MBps" latency="9e-07"/>
+    <route src="node-0" dst="node-1"><link_ctn id="a"/></route>
+    <route src="node-0" dst="node-2"><link_ctn id="b"/><link_ctn id="c"/></route>
+    <route src="node-0" dst="node-3"><link_ctn id="d"/></route>
+    <route src="node-1" dst="node-2"><link_ctn id="a"/><link_ctn id="b"/><link_ctn id="c"/></route>
+    <route src="node-1" dst="node-3"><link_ctn id="a"/><link_ctn id="d"/></route>
+    <route src="node-2" dst="node-3"><link_ctn id="b"/><link_ctn id="c"/><link_ctn id="d"/></route>
+  </zone>
+</platform>
+)";
+  }
+  int argc = 1;
+  char name[] = "test";
+  char* argv[] = {name, nullptr};
+  simgrid::s4u::Engine engine(&argc, argv);
+  engine.load_platform(file);
+  engine.seal_platform();
+  std::vector<simgrid::s4u::Host*> nodes;
+  for (int k = 0; k < 4; ++k) nodes.push_back(engine.host_by_name("node-" + std::to_string(k)));
+  const NodeRoute near = nearest_to_node0(nodes);
+  EXPECT_EQ(near.to, 1);  // 0.9 us each: fewer links than node 2, wider than node 3
+  EXPECT_EQ(near.links, 1);
+  EXPECT_SECONDS(near.latency, 0.9e-6);
+  const NodeRoute far = farthest_pair(nodes);
+  EXPECT_EQ(far.from, 2);  // 1.8 us each: more links than 1-3, narrower than 1-2
+  EXPECT_EQ(far.to, 3);
+  EXPECT_EQ(far.links, 3);
+  EXPECT_SECONDS(far.latency, 1.8e-6);
+  EXPECT_DOUBLE_EQ(far.bottleneck_bandwidth, 0.1e6);
 }
 
 }  // namespace
