@@ -1,0 +1,126 @@
+// ./network_bench --platform FILE [--json OUT] — ping-pong and streaming bandwidth between
+// node 0 and its nearest node and between the platform's farthest pair, through the node
+// programs' runtime (tools/network_benchmark.h); prints a table, optionally writes JSON.
+// docs/network-benchmark.md.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <new>
+
+#include <simgrid/s4u/Engine.hpp>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+#include "machine/simgrid_session.h"
+#include "machine/simgrid_settings.h"
+#include "simulation/simulated_platform.h"
+#include "tools/network_benchmark.h"
+#include "tools/network_report.h"
+#include "tools/network_routes.h"
+#include "tools/output_files.h"
+#include "tools/simulate_options.h"
+#include "util/input_error.h"
+#include "util/version.h"
+
+namespace {
+
+int network_bench(int argc, char** argv) {
+  const std::string root = ncube::repository_root();
+  std::string platform_file, json_file, cost_model_file = root + "/platforms/cost_model.json";
+  long min_bytes = 8, max_bytes = 1 << 20;
+  ncube::NetworkBenchmarkSettings settings;
+  std::vector<std::string> cfg;
+  bool quiet = false;
+  CLI::App app{"Ping-pong and streaming bandwidth between node 0 and its nearest node and "
+               "between the farthest pair of a platform, through the node programs' runtime "
+               "(their message overheads and byte counts).",
+               "network_bench"};
+  app.add_option("--platform", platform_file, "platform file (JSON parameters or SimGrid XML)")
+      ->required();
+  app.add_option("--cost-model", cost_model_file, "cost model (its message header size)")
+      ->capture_default_str();
+  app.add_option("--json", json_file, "write the results here as JSON");
+  app.add_option("--min-bytes", min_bytes, "smallest payload, a multiple of 8")
+      ->capture_default_str()->check(CLI::Range(8L, 1L << 40));
+  app.add_option("--max-bytes", max_bytes, "largest payload; sizes double from the smallest")
+      ->capture_default_str()->check(CLI::Range(8L, 1L << 40));
+  app.add_option("--round-trips", settings.round_trips, "ping-pong round trips timed")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  app.add_option("--stream-messages", settings.stream_messages, "messages streamed back to back")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  app.add_option("--cfg", cfg, "a SimGrid setting, NAME:VALUE; overrides the platform's")
+      ->allow_extra_args(false);
+  app.add_flag("--quiet", quiet, "print no table");
+  app.set_version_flag("--version", [] {
+    return "network_bench " + ncube::code_version() + " (SimGrid " + ncube::simgrid_version() + ")";
+  });
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return ncube::kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return ncube::kExitOk;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "network_bench: " << e.what() << "\n(see network_bench --help)\n";
+    return ncube::kExitBadInput;
+  }
+  if (min_bytes % 8 != 0)
+    throw ncube::InputError("--min-bytes " + std::to_string(min_bytes) + ": not a multiple of 8");
+  if (max_bytes < min_bytes)
+    throw ncube::InputError("--max-bytes " + std::to_string(max_bytes) + ": below --min-bytes");
+  for (long bytes = min_bytes; bytes <= max_bytes; bytes *= 2) settings.sizes.push_back(double(bytes));
+
+  std::vector<std::string> simgrid_arguments;
+  for (const std::string& setting : cfg) simgrid_arguments.push_back("--cfg=" + setting);
+  ncube::check_simgrid_settings(simgrid_arguments);  // SimGrid would end the process
+  ncube::OutputFiles outputs({{"--json", json_file}}, {platform_file, cost_model_file});
+  const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
+  const ncube::PlatformConfig platform = ncube::load_platform_config(platform_file, simgrid_arguments);
+  if (platform.node_count() < 2)
+    throw ncube::InputError(platform_file + ": one node, no pair to measure");
+  const std::vector<simgrid::s4u::Host*> nodes =
+      ncube::build_simulated_platform(platform, simgrid_arguments);
+  // Routes are read before the first run: the platform is sealed first, as run() would
+  // (a DijkstraCache zone builds its graph then).
+  simgrid::s4u::Engine::get_instance()->seal_platform();
+
+  ncube::NetworkReport report;
+  report.platform_file = platform_file;
+  report.platform = platform;
+  report.message_header_bytes = costs.message_header_bytes;
+  report.simgrid_settings = ncube::simgrid_settings_used(simgrid_arguments);
+  report.settings = settings;
+  report.pairs.push_back(ncube::measure_pair("neighbours", ncube::nearest_to_node0(nodes), nodes,
+                                             platform, costs, settings));
+  report.pairs.push_back(ncube::measure_pair("farthest", ncube::farthest_pair(nodes), nodes,
+                                             platform, costs, settings));
+  if (!quiet) std::cout << ncube::network_report_table(report);
+  if (!json_file.empty()) outputs.write("--json", ncube::network_report_json(report).dump(1) + "\n");
+  outputs.commit();
+  return ncube::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return network_bench(argc, argv);
+  } catch (const ncube::InputError& e) {
+    std::cerr << "network_bench: " << e.what() << "\n";
+    return ncube::kExitBadInput;
+  } catch (const ncube::OutputError& e) {
+    std::cerr << "network_bench: " << e.what() << " (no output file was written)\n";
+    return ncube::kExitCannotWrite;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "network_bench: the host ran out of memory (no output file was written)\n";
+    return ncube::kExitHostOutOfMemory;
+  } catch (const std::runtime_error& e) {
+    std::cerr << "network_bench: the simulation failed: " << e.what() << "\n";
+    return ncube::kExitSimulationFailed;
+  } catch (const std::exception& e) {
+    std::cerr << "network_bench: internal error: " << e.what() << "\n";
+    return ncube::kExitInternalError;
+  }
+}
