@@ -139,7 +139,8 @@ TEST(CostModel, ResultFileNamesEveryCounterAsDocumented) {
                             "shooter_candidates", "receivers", "rays", "ray_patch_tests",
                             "plane_crossings", "form_factors", "element_updates",
                             "subdivision_tests", "elements_created", "octree_cells_visited",
-                            "octree_overlap_tests", "octree_cells_built"}));
+                            "octree_overlap_tests", "octree_cells_built", "increments_combined",
+                            "increments_applied"}));
   EXPECT_EQ(w.value("plane_crossings", -1), 11);
   EXPECT_EQ(w.value("rays", -1), 0);
   RenderCounts render;

@@ -1,6 +1,7 @@
 #include "simulation/result_file.h"
 
 #include "simulation/iteration_time.h"
+#include "simulation/parallelisations.h"
 #include "visibility/visibility_methods.h"
 
 namespace ncube {
@@ -69,6 +70,8 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
                  {"visibility", visibility_methods().at(config.options.visibility).name},
+                 {"parallelisation", parallelisations().at(config.parallelisation).name},
+                 {"shooters_per_iteration", config.shooters_per_iteration},
                  {"skip_facing_away", config.options.skip_facing_away},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},

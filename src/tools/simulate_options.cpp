@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "scene/scene_loader.h"
+#include "simulation/parallelisations.h"
 #include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
@@ -68,6 +69,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.choice("--visibility", config.options.visibility, visibility_methods().names(),
                "how rays find their blockers: " + visibility_methods().described(),
                "visibility");
+  table.choice("--parallelisation", config.parallelisation, parallelisations().names(),
+               "how the work is shared over the nodes: " + parallelisations().described(),
+               "parallelisation");
+  table.integer("--shooters-per-iteration", config.shooters_per_iteration, 0, kMaxInt,
+                "--parallelisation shooters: patches shot at once per iteration, at most one "
+                "per node (0: one per node)",
+                "shooters_per_iteration");
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",
