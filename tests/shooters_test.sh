@@ -31,6 +31,23 @@ assert r["patch_radiosity"] == s["patch_radiosity"], "patch radiosities differ"
 assert r["shooters"] == s["shooters"] and s["iterations"] == 25
 PY
 
+# The seam rule: the host's fast occluders and threads give the result file of the readable
+# definitions on one thread (apart from host fields); the octree the same radiosities.
+for run in "fast:--threads 2" "reference:--reference-visibility --threads 1" "octree:--visibility octree"; do
+  "$simulate" "$scene0" --R 4 --iterations 4 --samples 16 --parallelisation shooters ${run#*:} \
+    --json "$work/seam-${run%%:*}.json" --quiet || fail "seam ${run%%:*}: exit $?"
+done
+/usr/bin/python3 - "$work"/seam-{fast,reference,octree}.json <<'PY' || fail "seam rule"
+import json, sys
+fast, reference, octree = (json.load(open(p)) for p in sys.argv[1:4])
+for r in (fast, reference):
+    r.pop("host_seconds"); r.pop("provenance")
+assert fast == reference, "the fast occluders or threads changed the result file"
+assert fast["iterations"] == 4 and len(fast["shooters"]) > 4, fast["shooters"]
+assert octree["patch_radiosity"] == fast["patch_radiosity"], "the octree changed the radiosities"
+assert octree["counts"]["ray_patch_tests"] < fast["counts"]["ray_patch_tests"]
+PY
+
 # One line on stderr (a parse error adds "(see simulate --help)"), the given exit code, and
 # no result file, or (exit 3) one with status out_of_memory.
 refused() {
