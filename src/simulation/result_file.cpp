@@ -70,8 +70,6 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"samples", config.options.samples},
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
                  {"visibility", visibility_methods().at(config.options.visibility).name},
-                 {"parallelisation", parallelisations().at(config.parallelisation).name},
-                 {"shooters_per_iteration", config.shooters_per_iteration},
                  {"skip_facing_away", config.options.skip_facing_away},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},
@@ -89,7 +87,9 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"render_distribution", render_distribution_name(config.render.distribution)},
                  {"image_width", config.render.width},
                  {"image_height", config.render.height},
-                 {"outline_elements", config.render.outline_elements}};
+                 {"outline_elements", config.render.outline_elements},
+                 {"parallelisation", parallelisations().at(config.parallelisation).name},
+                 {"shooters_per_iteration", config.shooters_per_iteration}};
   j["status"] = status_name(result.status);
   if (result.status == RunStatus::kOutOfMemory)
     j["out_of_memory"] = {{"node", result.out_of_memory.node},

@@ -51,6 +51,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.integer("--R", config.radiosity_processors, 1, kMaxInt, "radiosity processors", "R");
   table.integer("--V", config.visibility_processors, 0, kMaxInt,
                 "visibility processors per radiosity processor", "V");
+  table.choice("--parallelisation", config.parallelisation, parallelisations().names(),
+               "how the work is shared over the nodes: " + parallelisations().described(),
+               "parallelisation");
+  table.integer("--shooters-per-iteration", config.shooters_per_iteration, 0, kMaxInt,
+                "--parallelisation shooters: patches shot at once per iteration, at most one "
+                "per node (0: one per node)",
+                "shooters_per_iteration");
   table.square("--samples", config.options.samples, 1, 64,
                "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
   table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
@@ -69,13 +76,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.choice("--visibility", config.options.visibility, visibility_methods().names(),
                "how rays find their blockers: " + visibility_methods().described(),
                "visibility");
-  table.choice("--parallelisation", config.parallelisation, parallelisations().names(),
-               "how the work is shared over the nodes: " + parallelisations().described(),
-               "parallelisation");
-  table.integer("--shooters-per-iteration", config.shooters_per_iteration, 0, kMaxInt,
-                "--parallelisation shooters: patches shot at once per iteration, at most one "
-                "per node (0: one per node)",
-                "shooters_per_iteration");
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",
