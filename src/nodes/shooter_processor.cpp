@@ -41,8 +41,9 @@ void ShooterProcessor::run() {
     // iterations of S shots each.
     converged_ = has_converged(best, setup_.emitted_power, o.convergence_fraction);
     if (converged_ || (o.max_iterations >= 0 && iteration >= o.max_iterations)) break;
-    XBT_VERB("rank %d, iteration %d: %zu shooters, the best patch %d (unshot power %g)", rank_,
-             iteration + 1, chosen.size(), best.patch, best.power);
+    if (rank_ == 0)  // every node chooses the same
+      XBT_VERB("iteration %d: %zu shooters, the best patch %d (unshot power %g)", iteration + 1,
+               chosen.size(), best.patch, best.power);
     std::vector<Rgb> increments(elements, Rgb(0.0));
     if (std::size_t(rank_) < chosen.size()) shoot(chosen[std::size_t(rank_)], increments);
     exchange_.sum(increments, iteration);
