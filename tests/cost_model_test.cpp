@@ -50,7 +50,7 @@ TEST(CostModel, RefusesAFileWithoutAnyOneParameter) {
   NCUBE_WORK_COUNTERS(NCUBE_EXPECT_REFUSED)
   NCUBE_RENDER_COUNTERS(NCUBE_EXPECT_REFUSED)
 #undef NCUBE_EXPECT_REFUSED
-  EXPECT_EQ(flops_parameters, 22);
+  EXPECT_EQ(flops_parameters, 24);
 #define NCUBE_EXPECT_SIZE_REFUSED(name, min, max, doc) \
   EXPECT_NE(error_without(#name).find("\"" #name "\""), std::string::npos);
   NCUBE_DATA_SIZES(NCUBE_EXPECT_SIZE_REFUSED)
@@ -139,7 +139,8 @@ TEST(CostModel, ResultFileNamesEveryCounterAsDocumented) {
                             "shooter_candidates", "receivers", "rays", "ray_patch_tests",
                             "plane_crossings", "form_factors", "element_updates",
                             "subdivision_tests", "elements_created", "octree_cells_visited",
-                            "octree_overlap_tests", "octree_cells_built"}));
+                            "octree_overlap_tests", "octree_cells_built", "increments_combined",
+                            "increments_applied"}));
   EXPECT_EQ(w.value("plane_crossings", -1), 11);
   EXPECT_EQ(w.value("rays", -1), 0);
   RenderCounts render;

@@ -21,6 +21,7 @@ namespace ncube {
   X(patch_geometry_bytes, 1, 1e9, "a patch as stored for intersection tests")                   \
   X(patch_radiosity_bytes, 1, 1e9, "an owned patch's radiosity data (besides geometry)")        \
   X(element_bytes, 1, 1e9, "one element with its radiosity")                                    \
+  X(radiosity_increment_bytes, 1, 1e9, "one element's RGB increment (--parallelisation shooters)") \
   X(octree_cell_bytes, 1, 1e9, "one octree cell: bounds, children, patch list")                 \
   X(octree_reference_bytes, 1, 1e9, "one entry of a leaf's patch list")                         \
   X(node_reserve_bytes, 0, 0x1p50, "program, operating system and stack on every node")         \

@@ -59,4 +59,22 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   return nodes;
 }
 
+std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const CostModel& costs) {
+  const double patches = double(setup.scene.patches.size());
+  const double elements = double(setup.scene.element_total());
+  const double structure =
+      search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs);
+  // As a radiosity processor of the paper's program without visibility processors holding
+  // every patch (section 2.2's first version), plus its vector of increments and the one it
+  // receives in each step of the exchange.
+  const double bytes = costs.node_reserve_bytes + 2.0 * costs.shooter_record_bytes +
+                       patches * (costs.patch_geometry_bytes + costs.patch_radiosity_bytes) +
+                       structure + elements * costs.element_bytes +
+                       2.0 * elements * costs.radiosity_increment_bytes;
+  std::vector<NodeMemory> nodes;
+  for (int rank = 0; rank < setup.placement.radiosity_processors; ++rank)
+    nodes.push_back({setup.placement.radiosity_node(rank), NodeRole::kRadiosity, rank, bytes});
+  return nodes;
+}
+
 }  // namespace ncube

@@ -31,4 +31,10 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
                                     const std::vector<std::vector<int>>& owned_patches,
                                     const CostModel& costs);
 
+// The shooter-centred scheme (--parallelisation shooters, V = 0): one entry per node, each
+// holding the whole scene (geometry, search structure, every patch's radiosity data and
+// every element), the shooter records, and two increment vectors (its own sum and the one
+// being received).
+std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const CostModel& costs);
+
 }  // namespace ncube

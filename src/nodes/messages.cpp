@@ -28,6 +28,8 @@ double payload_bytes(const Message& message, const CostModel& costs) {
         bytes += patch_record_bytes(records, message.patch_geometry, costs);
       return bytes;
     }
+    case MessageKind::kIncrements:
+      return double(message.increments.size()) * costs.radiosity_increment_bytes;
     case MessageKind::kElements: {
       double bytes = 0.0;
       for (const ElementShare& share : message.shares) bytes += render_record_bytes(*share, costs);

@@ -28,6 +28,9 @@ enum class MessageKind {
                // ceil(M / 8) bytes per mask (part_mask_bytes)
   kPatches,    // patches with their elements, from one radiosity processor to another (4.2):
                // each patch's bytes as held (patch_record_bytes)
+  kIncrements,  // the shooter-centred scheme (--parallelisation shooters): one step of the
+                // exchange of the iteration's radiosity increments, a node's sum so far for
+                // every element of the scene: radiosity_increment_bytes per element
   // The rendering phase (section 2.3):
   kElements,   // render records of one or more nodes' shares, passed on (ring, hypercube):
                // a render element record per element carried, a render vertex per T-vertex
@@ -67,6 +70,8 @@ struct Message {
   std::vector<int> point_patches;  // kPoints: the patch of each point
   std::vector<PartMask> masks;     // kAnswers
   int mask_parts = 0;              // kAnswers: parts per mask (the shooter's M)
+  std::vector<Rgb> increments;       // kIncrements: per scene element, in scene order
+  int iteration = -1;                // kIncrements: the iteration (block: the step)
   std::vector<ElementShare> shares;  // kElements: the shares carried (block: the step)
   ExposureRound exposure;            // kHistogram, kSelection (block: the round)
   Image pixels;                      // kPixels: the sender's rows, in order

@@ -2,6 +2,8 @@
 // of the algorithm.
 #pragma once
 
+#include <string>
+
 #include "nodes/load_balancing.h"
 #include "nodes/placement.h"
 #include "radiosity/radiosity_engine.h"
@@ -18,6 +20,10 @@ struct ProgramOptions {
   bool pipelined = false;      // send the next block before using the answers of this one
   bool memory_cap = true;      // false: nodes never run out of memory (--unlimited-memory)
   BalancingOptions balancing;  // dynamic load balancing (section 4.2), off by default
+  // --parallelisation: a name in parallelisations() (simulation/parallelisations.h): the
+  // paper's receivers (the default) or the shooter-centred scheme it replaced.
+  std::string parallelisation = "receivers";
+  int shooters_per_iteration = 0;  // shooters: shots per iteration (0: one per node)
 
   // Whether the radiosity processors' loads can change during the run (sections 4.1, 4.2),
   // so that they travel with the shooter candidates.

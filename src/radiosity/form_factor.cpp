@@ -1,8 +1,11 @@
 #include "radiosity/form_factor.h"
 
 #include <array>
+#include <bitset>
 #include <cmath>
 #include <glm/geometric.hpp>
+
+#include "radiosity/radiosity_engine.h"
 
 namespace ncube {
 namespace {
@@ -87,6 +90,19 @@ double visible_parts_form_factor(const Vec3& point, const Vec3& normal, const Sh
       if (weight != 0) sum += weight * edge_term(corner(i, j), corner(i, j + 1), normal);
     }
   return std::fabs(sum) / (2.0 * M_PI);
+}
+
+std::vector<double> ray_traced_form_factors(RadiosityEngine& engine, const OccluderSet& occluders,
+                                            const std::vector<ElementRef>& receivers,
+                                            const Shooter& shooter, WorkCounts& counts) {
+  const std::vector<PartMask> visible = visible_parts(engine, occluders, receivers, shooter, counts);
+  std::vector<double> form_factors = engine.form_factors(shooter, receivers, visible);
+  // As the paper's gather counts them (RadiosityEngine::add_light): the visible parts of a
+  // receiver the shooter lights.
+  for (std::size_t k = 0; k < receivers.size(); ++k)
+    if (shooter_lights(shooter, engine.store().element(receivers[k]).centre))
+      counts.form_factors += std::bitset<64>(visible[k]).count();
+  return form_factors;
 }
 
 }  // namespace ncube

@@ -3,8 +3,11 @@
 // distance, so elements close to the shooter get accurate values.
 #pragma once
 
+#include <vector>
+
 #include "geometry/polygon.h"
 #include "radiosity/shooter.h"
+#include "radiosity/work_counts.h"
 
 namespace ncube {
 
@@ -22,5 +25,20 @@ double point_to_polygon_form_factor(const Vec3& point, const Vec3& normal,
 // per-part sum computes it (same to about 1e-15 relative; docs/performance.md).
 double visible_parts_form_factor(const Vec3& point, const Vec3& normal, const Shooter& shooter,
                                  PartMask mask);
+
+class RadiosityEngine;
+class OccluderSet;
+struct ElementRef;
+
+// The paper's ray-traced form factors (section 2.2) from `shooter` to each of `engine`'s
+// `receivers` (in order): visibility by one ray from the receiver's centre to each of the
+// shooter's M parts against the patches of `occluders`, then the analytic point-to-polygon
+// form factor of the visible parts (zero for a receiver behind the shooter's plane). Adds
+// the rays' counts and one `form_factors` per visible part that lights the receiver, as the
+// paper's program counts them; adds no light. The form-factor step of a node program that
+// takes a shooter's form factors to every element it holds (nodes/shooter_processor.cpp).
+std::vector<double> ray_traced_form_factors(RadiosityEngine& engine, const OccluderSet& occluders,
+                                            const std::vector<ElementRef>& receivers,
+                                            const Shooter& shooter, WorkCounts& counts);
 
 }  // namespace ncube

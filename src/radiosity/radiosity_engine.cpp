@@ -87,40 +87,48 @@ void RadiosityEngine::gather_block(const Shooter& shooter, const std::vector<Ele
   add_light(shooter, part, masks, form_factors, counts);
 }
 
-void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<ElementRef>& receivers,
-                                const std::vector<PartMask>& masks,
-                                const double* computed_form_factors, WorkCounts& counts) {
+std::vector<double> RadiosityEngine::form_factors(const Shooter& shooter,
+                                                  const std::vector<ElementRef>& receivers,
+                                                  const std::vector<PartMask>& masks) {
   std::vector<double> form_factors;
   std::vector<Vec3> points;
   std::vector<int> patches;
-  const bool remembering = !computed_form_factors && assist_ && assist_->remembers_form_factors();
+  const bool remembering = assist_ && assist_->remembers_form_factors();
   if (remembering) {  // the same question asked in an earlier shot?
     visibility_points(receivers, points, patches);
     form_factors.assign(receivers.size(), 0.0);
     if (assist_->remembered_form_factors(shooter, PointBlock(points, patches), masks.data(),
                                          form_factors.data()))
-      computed_form_factors = form_factors.data();
+      return form_factors;
   }
-  if (!computed_form_factors) {
-    form_factors.assign(receivers.size(), 0.0);
-    const auto compute = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const StoredElement& element = store_.element(receivers[k]);
-        const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
-        form_factors[k] = receiver_form_factor(shooter, element.centre,
-                                               scene().patches[std::size_t(patch)].normal, masks[k]);
-      }
-    };
-    // Each receiver's form factor is independent of the others': the host may compute them
-    // on several threads (host_assist.h).
-    if (assist_) {
-      assist_->share_out(receivers.size(), 64, compute);
-      if (remembering)
-        assist_->remember_form_factors(shooter, PointBlock(points, patches), masks.data(),
-                                       form_factors.data());
-    } else {
-      compute(0, receivers.size());
+  form_factors.assign(receivers.size(), 0.0);
+  const auto compute = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const StoredElement& element = store_.element(receivers[k]);
+      const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
+      form_factors[k] = receiver_form_factor(shooter, element.centre,
+                                             scene().patches[std::size_t(patch)].normal, masks[k]);
     }
+  };
+  // Each receiver's form factor is independent of the others': the host may compute them
+  // on several threads (host_assist.h).
+  if (assist_) {
+    assist_->share_out(receivers.size(), 64, compute);
+    if (remembering)
+      assist_->remember_form_factors(shooter, PointBlock(points, patches), masks.data(),
+                                     form_factors.data());
+  } else {
+    compute(0, receivers.size());
+  }
+  return form_factors;
+}
+
+void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                                const std::vector<PartMask>& masks,
+                                const double* computed_form_factors, WorkCounts& counts) {
+  std::vector<double> form_factors;
+  if (!computed_form_factors) {
+    form_factors = this->form_factors(shooter, receivers, masks);
     computed_form_factors = form_factors.data();
   }
   for (std::size_t k = 0; k < receivers.size(); ++k) {

@@ -73,6 +73,11 @@ class RadiosityEngine {
   void gather_block(const Shooter& shooter, const std::vector<ElementRef>& receivers,
                     const PointBlocks& blocks, int block, const std::vector<PartMask>& masks,
                     WorkCounts& counts);
+  // The receivers' form factors (receiver_form_factor) to the shooter's parts their masks
+  // mark visible, in receiver order: remembered from an earlier shot with the same question,
+  // or computed (on the host's threads; host_assist.h). Adds no light and counts nothing.
+  std::vector<double> form_factors(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                                   const std::vector<PartMask>& masks);
   // Section 4.1, after the shot's light has been distributed: tests the elements that have
   // just received it and cuts those whose corner radiosities differ too much. A cut
   // element's children start from its radiosity before this shot (its share of the shot is

@@ -33,7 +33,11 @@ namespace ncube {
     "octree cells slab-tested against a ray (octree.h)")                                        \
   X(octree_overlap_tests, flops_per_octree_overlap_test,                                        \
     "building the octree: patch box against cell box")                                          \
-  X(octree_cells_built, flops_per_octree_cell_built, "building the octree: cells created")
+  X(octree_cells_built, flops_per_octree_cell_built, "building the octree: cells created")        \
+  X(increments_combined, flops_per_increment_combined,                                          \
+    "the shooter-centred scheme: element increments received and added in the exchange")        \
+  X(increments_applied, flops_per_increment_applied,                                            \
+    "the shooter-centred scheme: summed element increments added to radiosity and unshot")
 
 struct WorkCounts {
 #define NCUBE_MEMBER(member, cost, doc) std::uint64_t member = 0;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "radiosity/shooter.h"
+#include "simulation/parallelisations.h"
 #include "simulation/render_phase.h"
 #include "util/input_error.h"
 
@@ -27,6 +28,7 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
   if (config.block_size < 1)
     throw InputError("--block-size " + std::to_string(config.block_size) + ": must be at least 1");
   check_render_configuration(config.render, config.node_count());
+  parallelisations().at(config.parallelisation).check(scene, config);
 }
 
 }  // namespace ncube

@@ -1,6 +1,7 @@
 #include "simulation/memory_check.h"
 
 #include "nodes/placement.h"
+#include "simulation/parallelisations.h"
 #include "simulation/render_phase.h"
 
 namespace ncube {
@@ -9,7 +10,7 @@ std::vector<NodeMemory> node_memory(const Scene& scene, const SimulationConfig& 
                                     const CostModel& costs) {
   const ProgramSetup setup{scene, Placement{config.radiosity_processors, config.visibility_processors},
                            config, 0.0};
-  return plan_memory(setup, partition_patches_by_elements(scene, config.radiosity_processors), costs);
+  return parallelisations().at(config.parallelisation).plan_memory(setup, costs);
 }
 
 OutOfMemory first_node_out_of_memory(const Scene& scene, const SimulationConfig& config,

@@ -60,20 +60,6 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
   }
 }
 
-void report_iterations(const NodePrograms& programs, const SimulationConfig& config,
-                       double emitted_power) {
-  if (!config.on_iteration) return;
-  const RadiosityProcessor& master = programs.radiosity.front();
-  const double threshold = emitted_power * config.options.convergence_fraction;
-  auto reported = std::make_shared<std::size_t>(0);
-  simgrid::s4u::Engine::on_time_advance_cb([&master, &config, threshold, reported](double) {
-    if (master.iteration_ends().size() == *reported) return;
-    *reported = master.iteration_ends().size();
-    config.on_iteration({int(*reported), master.largest_unshot_power(), threshold,
-                         simgrid::s4u::Engine::get_clock()});
-  });
-}
-
 void collect_solution(const Scene& scene, const NodePrograms& programs,
                       std::vector<PatchSolution>& solution, std::vector<Rgb>& patch_radiosity,
                       std::vector<std::vector<int>>& held_patches) {

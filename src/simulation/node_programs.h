@@ -4,10 +4,12 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <simgrid/s4u/Engine.hpp>
 #include <simgrid/s4u/Host.hpp>
 
 #include "machine/cost_model.h"
@@ -16,6 +18,7 @@
 #include "nodes/node_runtime.h"
 #include "nodes/program_setup.h"
 #include "nodes/radiosity_processor.h"
+#include "nodes/shooter_processor.h"
 #include "nodes/visibility_processor.h"
 #include "simulation/actor_exceptions.h"
 #include "radiosity/radiosity_engine.h"
@@ -33,6 +36,7 @@ struct NodePrograms {
   std::deque<RadiosityEngine> engines;
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
+  std::deque<ShooterProcessor> shooters;  // --parallelisation shooters: in rank order
   // An exception a node program threw (the host out of memory), rethrown after the run.
   ActorExceptions exceptions;
   // The occluder sets and the engines' host help (host_machinery.h); last, so that the
@@ -53,9 +57,20 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
                           const std::vector<std::vector<int>>& owned,
                           const std::vector<simgrid::s4u::Host*>& hosts);
 
-// Calls config.on_iteration (if set) as the master decides each iteration.
-void report_iterations(const NodePrograms& programs, const SimulationConfig& config,
-                       double emitted_power);
+// Calls config.on_iteration (if set) as `master` (a RadiosityProcessor, or node 0 of the
+// shooter-centred scheme) decides each iteration.
+template <class Master>
+void report_iterations(const Master& master, const SimulationConfig& config, double emitted_power) {
+  if (!config.on_iteration) return;
+  const double threshold = emitted_power * config.options.convergence_fraction;
+  auto reported = std::make_shared<std::size_t>(0);
+  simgrid::s4u::Engine::on_time_advance_cb([&master, &config, threshold, reported](double) {
+    if (master.iteration_ends().size() == *reported) return;
+    *reported = master.iteration_ends().size();
+    config.on_iteration({int(*reported), master.largest_unshot_power(), threshold,
+                         simgrid::s4u::Engine::get_clock()});
+  });
+}
 
 // The solution as the radiosity processors' element stores hold it at the end (section 4):
 // every patch's elements and radiosities and its radiosity (one entry per scene patch, in

@@ -1,6 +1,7 @@
 #include "simulation/result_file.h"
 
 #include "simulation/iteration_time.h"
+#include "simulation/parallelisations.h"
 #include "visibility/visibility_methods.h"
 
 namespace ncube {
@@ -86,7 +87,9 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"render_distribution", render_distribution_name(config.render.distribution)},
                  {"image_width", config.render.width},
                  {"image_height", config.render.height},
-                 {"outline_elements", config.render.outline_elements}};
+                 {"outline_elements", config.render.outline_elements},
+                 {"parallelisation", parallelisations().at(config.parallelisation).name},
+                 {"shooters_per_iteration", config.shooters_per_iteration}};
   j["status"] = status_name(result.status);
   if (result.status == RunStatus::kOutOfMemory)
     j["out_of_memory"] = {{"node", result.out_of_memory.node},

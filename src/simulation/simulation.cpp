@@ -8,6 +8,7 @@
 #include "machine/simgrid_session.h"
 #include "nodes/placement.h"
 #include "simulation/node_programs.h"
+#include "simulation/parallelisations.h"
 #include "simulation/simulated_platform.h"
 
 namespace ncube {
@@ -41,50 +42,22 @@ std::string failure_of(const SimulationResult& result, const NodePrograms& progr
   return "";
 }
 
-// The master's record of the run: its shooters, when each iteration ended, and (sections
-// 4.1, 4.2) every radiosity processor's elements at the start of each iteration.
-void collect_iterations(const RadiosityProcessor& master, SimulationResult& result) {
-  result.converged = master.converged();
-  result.shooters = master.shooters();
-  result.iterations = int(master.shooters().size());
-  double previous = 0.0;
-  for (double end : master.iteration_ends()) {
-    result.iteration_seconds.push_back(end - previous);
-    previous = end;
-  }
-  result.elements_per_iteration = master.elements_per_iteration();
-}
-
 // Runs the node programs to the end on the simulated machine, then the rendering phase if
 // it is enabled and the radiosity run finished.
 void run_programs(const Scene& scene, const SimulationConfig& config,
                   const PlatformConfig& platform, const CostModel& costs,
-                  const ProgramSetup& setup, const std::vector<std::vector<int>>& owned,
-                  NodePrograms& programs, SimulationResult& result) {
+                  const ProgramSetup& setup, NodePrograms& programs, SimulationResult& result) {
+  const Parallelisation& parallelisation = parallelisations().at(setup.parallelisation);
   const std::vector<simgrid::s4u::Host*> hosts =
       build_simulated_platform(platform, config.simgrid_arguments);
   result.simgrid_config = simgrid_settings_used(config.simgrid_arguments);
-  launch_node_programs(programs, setup, owned, hosts);
-  report_iterations(programs, config, setup.emitted_power);
+  parallelisation.launch(programs, setup, config, hosts);
   simgrid::s4u::Engine::get_instance()->run();
   programs.exceptions.rethrow_first();  // before anything is written
   result.simulated_seconds = simgrid::s4u::Engine::get_clock();
   result.activities = std::move(programs.activities);
-  const RadiosityProcessor& master = programs.radiosity.front();
-  collect_iterations(master, result);
-  collect_solution(scene, programs, result.solution, result.patch_radiosity, result.held_patches);
+  parallelisation.collect(scene, programs, platform, result);
   result.element_radiosity = level_zero_radiosity(scene, result.solution);
-  for (const RadiosityProcessor& rp : programs.radiosity) {
-    result.patches_moved += rp.patches_sent();
-    result.transfer_messages += rp.transfers_sent();
-    result.transfer_bytes += rp.transfer_bytes_sent();
-  }
-  if (master.out_of_memory().node >= 0) {  // a processor could not make its cuts (4.1, 4.2)
-    result.status = RunStatus::kOutOfMemory;
-    const NodeStats& node = programs.runtimes[std::size_t(master.out_of_memory().node)].stats();
-    result.out_of_memory = {node.node, node.role, master.out_of_memory().needed_bytes,
-                            platform.node_memory};
-  }
   if (config.render.enabled && result.status == RunStatus::kOk && failure_of(result, programs).empty()) {
     result.render = run_render_phase(scene, config.render, setup.placement.radiosity_processors,
                                      setup.placement.visibility_processors, result.solution, hosts,
@@ -108,7 +81,6 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   SimulationResult result;
   const int R = config.radiosity_processors, V = config.visibility_processors;
   const ProgramSetup setup{scene, Placement{R, V}, config, scene.emitted_power()};
-  const std::vector<std::vector<int>> owned = partition_patches_by_elements(scene, R);
 
   // Memory: every node's modeled bytes against its capacity, before anything runs.
   if (config.memory_cap) {
@@ -117,10 +89,10 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
   }
 
   NodePrograms programs;
-  create_runtimes(programs, plan_memory(setup, owned, costs), platform, costs,
-                  config.record_trace ? &result.trace : nullptr);
+  create_runtimes(programs, parallelisations().at(setup.parallelisation).plan_memory(setup, costs),
+                  platform, costs, config.record_trace ? &result.trace : nullptr);
   if (result.status == RunStatus::kOk)  // a node out of memory stops the run before it starts
-    run_programs(scene, config, platform, costs, setup, owned, programs, result);
+    run_programs(scene, config, platform, costs, setup, programs, result);
 
   for (const NodeRuntime& runtime : programs.runtimes) {
     result.nodes.push_back(runtime.stats());

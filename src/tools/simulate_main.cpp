@@ -49,6 +49,9 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
                 r.out_of_memory.available_bytes);
   std::fprintf(out, "iterations            %d (%s)\n", r.iterations,
               r.converged ? "converged" : "not converged");
+  if (config.parallelisation != ncube::ProgramOptions{}.parallelisation)
+    std::fprintf(out, "parallelisation       %s, %zu shots\n", config.parallelisation.c_str(),
+                r.shooters.size());
   std::fprintf(out, "simulated seconds     %.3f in all\n", r.simulated_seconds);
   if (const std::optional<double> per_iteration = ncube::seconds_per_iteration(r.iteration_seconds))
     std::fprintf(out, "seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,

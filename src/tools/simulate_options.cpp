@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "scene/scene_loader.h"
+#include "simulation/parallelisations.h"
 #include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
@@ -50,6 +51,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.integer("--R", config.radiosity_processors, 1, kMaxInt, "radiosity processors", "R");
   table.integer("--V", config.visibility_processors, 0, kMaxInt,
                 "visibility processors per radiosity processor", "V");
+  table.choice("--parallelisation", config.parallelisation, parallelisations().names(),
+               "how the work is shared over the nodes: " + parallelisations().described(),
+               "parallelisation");
+  table.integer("--shooters-per-iteration", config.shooters_per_iteration, 0, kMaxInt,
+                "--parallelisation shooters: patches shot at once per iteration, at most one "
+                "per node (0: one per node)",
+                "shooters_per_iteration");
   table.square("--samples", config.options.samples, 1, 64,
                "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
   table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
@@ -170,7 +178,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                 "platform's");
   table.setting("--log", log, "SETTING",
                 "a SimGrid log setting, e.g. ncube_messages.thresh:debug (categories: "
-                "ncube_radiosity, ncube_visibility, ncube_render, ncube_messages)");
+                "ncube_radiosity, ncube_visibility, ncube_shooters, ncube_render, ncube_messages)");
   // At most 64: libgomp reserves a stack of several MB per thread and ends the process
   // (exit 1, no message of ours) when it cannot create one, e.g. 128 threads under a 1 GB
   // address-space limit; more threads than cores gains nothing anyway.

@@ -404,8 +404,12 @@ def machine_cases(root, work):
 # them: not numbers, the infinities, a negative zero, the smallest subnormal, overflow.
 SPECIAL_VALUES = ["nan", "NaN", "inf", "-inf", "infinity", "-0", "4.9e-324", "1e999", "0x10", ""]
 # In range, but refused by the configuration check (exit 2 all the same): the room has 3
-# patches and the platform 64 nodes.
-CONFIGURATION_LIMITS = {"--R": lambda v: v <= 3, "--V": lambda v: v <= 63}
+# patches and the platform 64 nodes; the paper's program (the default parallelisation) takes
+# no --shooters-per-iteration but 0.
+CONFIGURATION_LIMITS = {"--R": lambda v: v <= 3, "--V": lambda v: v <= 63,
+                        "--shooters-per-iteration": lambda v: v == 0}
+# How the configuration check names the count it refuses ("R=2147483647"); the others by flag.
+CONFIGURATION_NAMES = {"--R": "R=", "--V": "V="}
 
 
 def _accepts(option, text):
@@ -436,7 +440,7 @@ def _named(option, text):
     check refuses, the count as that check names it ("R=2147483647")."""
     limit = CONFIGURATION_LIMITS.get(option["flag"])
     if limit and _accepts({**option, "flag": ""}, text):
-        return option["flag"][2:] + "="
+        return CONFIGURATION_NAMES.get(option["flag"], option["flag"])
     return option["flag"]
 
 

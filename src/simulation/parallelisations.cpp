@@ -1,0 +1,156 @@
+#include "simulation/parallelisations.h"
+
+#include <numeric>
+
+#include <simgrid/s4u/Actor.hpp>
+
+#include "nodes/placement.h"
+#include "util/input_error.h"
+
+namespace ncube {
+
+namespace {
+
+// The paper's program (sections 2.2, 3, 4): patches partitioned by elements over R
+// radiosity processors, each with V visibility processors.
+std::vector<std::vector<int>> owned_patches(const ProgramSetup& setup) {
+  return partition_patches_by_elements(setup.scene, setup.placement.radiosity_processors);
+}
+
+void check_receivers(const Scene&, const SimulationConfig& config) {
+  if (config.shooters_per_iteration != 0)
+    throw InputError("--shooters-per-iteration " + std::to_string(config.shooters_per_iteration) +
+                     ": applies to --parallelisation shooters only (the paper's program shoots "
+                     "one patch per iteration)");
+}
+
+void launch_receivers(NodePrograms& programs, const ProgramSetup& setup,
+                      const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
+  launch_node_programs(programs, setup, owned_patches(setup), hosts);
+  report_iterations(programs.radiosity.front(), config, setup.emitted_power);
+}
+
+void collect_receivers(const Scene& scene, const NodePrograms& programs,
+                       const PlatformConfig& platform, SimulationResult& result) {
+  const RadiosityProcessor& master = programs.radiosity.front();
+  result.converged = master.converged();
+  result.shooters = master.shooters();
+  result.iterations = int(master.shooters().size());
+  double previous = 0.0;
+  for (double end : master.iteration_ends()) {
+    result.iteration_seconds.push_back(end - previous);
+    previous = end;
+  }
+  // Sections 4.1, 4.2: every radiosity processor's elements at the start of each iteration.
+  result.elements_per_iteration = master.elements_per_iteration();
+  collect_solution(scene, programs, result.solution, result.patch_radiosity, result.held_patches);
+  for (const RadiosityProcessor& rp : programs.radiosity) {
+    result.patches_moved += rp.patches_sent();
+    result.transfer_messages += rp.transfers_sent();
+    result.transfer_bytes += rp.transfer_bytes_sent();
+  }
+  if (master.out_of_memory().node >= 0) {  // a processor could not make its cuts (4.1, 4.2)
+    result.status = RunStatus::kOutOfMemory;
+    const NodeStats& node = programs.runtimes[std::size_t(master.out_of_memory().node)].stats();
+    result.out_of_memory = {node.node, node.role, master.out_of_memory().needed_bytes,
+                            platform.node_memory};
+  }
+}
+
+// The shooter-centred scheme (nodes/shooter_processor.h): R nodes, each the whole scene.
+void check_shooters(const Scene&, const SimulationConfig& config) {
+  const std::string what = "--parallelisation shooters: ";
+  if (config.visibility_processors != 0)
+    throw InputError(what + "V=" + std::to_string(config.visibility_processors) +
+                     ", but every node of the shooter-centred scheme holds the whole scene and "
+                     "traces its own rays (use --V 0)");
+  if (config.options.subdivision.enabled)
+    throw InputError(what + "--subdivide is not modelled (every node would have to cut the "
+                            "same elements)");
+  if (config.balancing.enabled)
+    throw InputError(what + "--balance does not apply (every node holds every patch)");
+  if (config.render.enabled)
+    throw InputError(what + "--render-parallel is not modelled for this scheme");
+  if (config.shooters_per_iteration > config.radiosity_processors)
+    throw InputError("--shooters-per-iteration " + std::to_string(config.shooters_per_iteration) +
+                     ": at most one shooter per node, and R=" +
+                     std::to_string(config.radiosity_processors));
+}
+
+void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
+                     const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
+  const Scene& scene = setup.scene;
+  const int R = setup.placement.radiosity_processors;
+  std::vector<int> all(scene.patches.size());
+  std::iota(all.begin(), all.end(), 0);
+  // The host's fast occluders over the whole scene, shared by every node (read-only), as
+  // the paper's program without visibility processors has them.
+  build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
+  const OccluderSet& occluders = *programs.host.occluders.front();
+  ActorExceptions::check_stacks(std::size_t(R));
+  for (int rank = 0; rank < R; ++rank) {
+    RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
+    engine.use_host_assist(programs.host.assist.get(), rank);
+    ShooterProcessor& node = programs.shooters.emplace_back(
+        setup, rank, programs.runtimes[std::size_t(rank)], engine, occluders);
+    simgrid::s4u::Actor::create("shooter-" + std::to_string(rank),
+                                hosts[setup.placement.radiosity_node(rank)],
+                                programs.exceptions.guard([&node] { node.run(); }));
+  }
+  report_iterations(programs.shooters.front(), config, setup.emitted_power);
+}
+
+void collect_shooters(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
+                      SimulationResult& result) {
+  const ShooterProcessor& first = programs.shooters.front();
+  result.converged = first.converged();
+  result.shooters = first.shooters();
+  result.iterations = int(first.iteration_ends().size());
+  double previous = 0.0;
+  for (double end : first.iteration_ends()) {
+    result.iteration_seconds.push_back(end - previous);
+    previous = end;
+  }
+  // Every node holds the same solution; node 0's is reported. A node whose radiosities
+  // differ would be a bug of the exchange: the run fails (exit 4) naming it.
+  const RadiosityEngine& reported = programs.engines.front();
+  result.solution = reported.store().solution();
+  result.patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
+  for (const PatchSolution& p : result.solution)
+    result.patch_radiosity[std::size_t(p.patch)] = reported.patch_radiosity(p.patch);
+  for (const RadiosityEngine& engine : programs.engines) {
+    result.held_patches.push_back(engine.store().patch_indices());
+    const std::vector<PatchSolution> solution = engine.store().solution();
+    for (std::size_t p = 0; p < solution.size() && result.status == RunStatus::kOk; ++p)
+      if (solution[p].radiosity != result.solution[p].radiosity) {
+        result.status = RunStatus::kFailed;
+        result.failure = "node " + std::to_string(result.held_patches.size() - 1) +
+                         " ends with radiosities that differ from node 0's";
+      }
+  }
+}
+
+}  // namespace
+
+const MethodRegistry<Parallelisation>& parallelisations() {
+  static const MethodRegistry<Parallelisation> registry(
+      "parallelisation",
+      {
+          {"receivers",
+           "the paper's: each radiosity processor holds a share of the patches and gathers "
+           "each shooter's light at its own elements, sections 2.2 to 4",
+           check_receivers,
+           [](const ProgramSetup& setup, const CostModel& costs) {
+             return plan_memory(setup, owned_patches(setup), costs);
+           },
+           launch_receivers, collect_receivers},
+          {"shooters",
+           "the earlier scheme of sections 2.2 and 6: every node holds the whole scene, shoots "
+           "its own shooter to every element, and the radiosity increments are summed over "
+           "all nodes each iteration; V = 0",
+           check_shooters, plan_shooter_memory, launch_shooters, collect_shooters},
+      });
+  return registry;
+}
+
+}  // namespace ncube
