@@ -192,12 +192,13 @@ TEST(ReferenceFormFactors, ErrorMeasureOnHandMadeSolutions) {
   const std::vector<Rgb> reference = {Rgb(1.0), Rgb(2.0), Rgb(4.0)};
   const std::vector<Rgb> solution = {Rgb(1.5), Rgb(3.0), Rgb(3.0)};
   const SolutionError error = solution_error(scene, solution, reference);
-  // sum A d^2 = 0.25 + 0.5 + 0.5 = 1.25; sum A ref^2 = 1 + 2 + 8 = 11.
-  EXPECT_NEAR(error.element_rms, std::sqrt(1.25 / 11.0), 1e-14);
+  // Relative errors 0.5, 0.5, -0.25 on areas 1, 1/2, 1/2: sum A r^2 = 0.25 + 0.125 +
+  // 0.03125 over an area of 2.
+  EXPECT_NEAR(error.element_rms, std::sqrt(0.40625 / 2.0), 1e-14);
   // Patches: reference 1 and 3, solution 1.5 and 3: relative errors 0.5 and 0.
   EXPECT_NEAR(error.patch_max, 0.5, 1e-14);
   EXPECT_EQ(error.worst_patch, 0);
-  EXPECT_NEAR(error.patch_rms, std::sqrt(0.25 / 10.0), 1e-14);
+  EXPECT_NEAR(error.patch_rms, std::sqrt(0.25 / 2.0), 1e-14);
 }
 
 }  // namespace
