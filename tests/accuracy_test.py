@@ -68,10 +68,11 @@ with tempfile.TemporaryDirectory() as folder:
     near(result["patch_rms"], math.sqrt(0.25 / 2), "patch_rms")
     near(result["per_element"][2], -0.25, "per_element[2]")
     near(result["per_patch"][1], 0.0, "per_patch[1]")
-    # Luminance is Rec. 709's: red alone off by 1 on a white reference of Y = 1.
-    mesh.write_bytes(ply_bytes([(0, 0, 2, 1, 1)]))
+    # Luminance is Rec. 709's: off by 0.5, 1 and 2 in red, green and blue on a white
+    # reference of Y = 1: 0.2126 x 0.5 + 0.7152 + 0.0722 x 2.
+    mesh.write_bytes(ply_bytes([(0, 0, 1.5, 2, 3)]))
     result = accuracy.compare(accuracy.solution_from_ply(mesh), reference([[0, 2.0, 1, 1, 1]]))
-    near(result["element_rms"], 0.2126, "luminance weights")
+    near(result["element_rms"], 0.2126 * 0.5 + 0.7152 + 0.0722 * 2, "luminance weights")
     # A reference of another element count or other patches is refused.
     for wrong in ([[0, 2.0, 1, 1, 1], [0, 1.0, 1, 1, 1]], [[1, 2.0, 1, 1, 1]]):
         try:

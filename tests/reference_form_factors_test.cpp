@@ -71,15 +71,26 @@ TEST(ReferenceFormFactors, HowellClosedFormsAreTheCatalogueValues) {
   EXPECT_NEAR(perpendicular_rectangles(1, 1), 0.2000, 5e-5);
 }
 
-TEST(ReferenceFormFactors, StratifiedWeightsIntegrateAreaOfTrianglesAndQuads) {
-  // The Jacobian weights' mean is the area exactly for a parallelogram, on average otherwise.
+TEST(ReferenceFormFactors, StratifiedPointsIntegrateOverTrianglesAndQuads) {
+  // The weighted mean of 1 and of the point is the area and the first moment (area times
+  // centroid): the bilinear map of a triangle (collapsed at v2) or of a skew quad is not
+  // area-uniform, and the Jacobian weights make up for it.
   const Polygon skew = Polygon::quad({0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.2, 0.7, 0});
   const Polygon triangle = Polygon::triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   for (const Polygon& polygon : {skew, triangle}) {
     const auto points = stratified_points(polygon, 32, 7);
-    double sum = 0.0;
-    for (const AreaSample& s : points) sum += s.weight;
-    EXPECT_NEAR(sum / double(points.size()), polygon.area(), 2e-3 * polygon.area());
+    double area = 0.0;
+    Vec3 moment(0.0);
+    for (const AreaSample& s : points) {
+      area += s.weight;
+      moment += s.weight * s.point;
+    }
+    area /= double(points.size());
+    moment /= double(points.size());
+    EXPECT_NEAR(area, polygon.area(), 2e-3 * polygon.area());
+    const Vec3 expected = polygon.area() * polygon.centroid();
+    EXPECT_NEAR(moment.x, expected.x, 2e-3 * polygon.area());
+    EXPECT_NEAR(moment.y, expected.y, 2e-3 * polygon.area());
   }
 }
 
@@ -89,6 +100,18 @@ TEST(ReferenceFormFactors, OpposedUnitSquaresConvergeToHowell) {
   const double coarse = std::fabs(entry(form_factors(scene, 2), 0, 1) - exact);
   const double fine = std::fabs(entry(form_factors(scene, 16), 0, 1) - exact);
   EXPECT_LT(fine, 2e-3 * exact);
+  EXPECT_LT(fine, coarse);
+}
+
+TEST(ReferenceFormFactors, FarOpposedSquaresSampledAtBothEndsConvergeToHowell) {
+  // 0.2 x 0.2 squares one unit apart: far (centres 1 apart, radii 0.14), so the kernel is
+  // sampled at both ends, K point pairs.
+  const Scene scene = scene_of({Polygon::quad({0, 0, 0}, {0.2, 0, 0}, {0.2, 0.2, 0}, {0, 0.2, 0}),
+                                Polygon::quad({0, 0, 1}, {0, 0.2, 1}, {0.2, 0.2, 1}, {0.2, 0, 1})});
+  const double exact = opposed_rectangles(0.2, 0.2);
+  const double coarse = std::fabs(entry(form_factors(scene, 1), 0, 1) - exact);
+  const double fine = std::fabs(entry(form_factors(scene, 16), 0, 1) - exact);
+  EXPECT_LT(fine, 1e-3 * exact);
   EXPECT_LT(fine, coarse);
 }
 
