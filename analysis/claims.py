@@ -133,10 +133,16 @@ def plot(rows, path):
     plotting.save(fig, path)
 
 
+def shown(path):
+    """A path as the page names it: from the repository's root when inside it."""
+    path = Path(path)
+    return path.relative_to(ROOT) if path.is_relative_to(ROOT) else path
+
+
 def markdown(rows, references, sweep_files):
     out = ["# The paper's claims, measured", "",
            "Written by `analysis/claims.py` (issue 31 item 5) from the sweeps "
-           + ", ".join(f"`{Path(f).relative_to(ROOT)}`" for f in sweep_files)
+           + ", ".join(f"`{shown(f)}`" for f in sweep_files)
            + "; how to run it: `docs/reproduce.md`; the reference and the error measure: "
            "`docs/accuracy.md`.", "",
            "Error: the area-weighted RMS of the elements' relative luminance errors against the "

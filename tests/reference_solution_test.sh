@@ -31,9 +31,14 @@ rc=$?
 [[ $rc == 2 && $(cat "$scratch/err") == *none.json* ]] || fail "missing scene: exit $rc"
 
 # Threads change nothing.
-"$solver" cornell-box --samples 16 --threads 1 --quiet --out "$scratch/one.json" &&
+"$solver" cornell-box --samples 16 --threads 1 --quiet --out "$scratch/one.json" \
+  --mesh "$scratch/one.ply" &&
   "$solver" cornell-box --samples 16 --threads 2 --quiet --out "$scratch/two.json" &&
   same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
+
+# --mesh is the same solution in ./simulate's mesh layout: no error against the file.
+measured=$(/usr/bin/python3 "$root/analysis/ncube/accuracy.py" "$scratch/one.ply" "$scratch/one.json")
+[[ $measured == "element RMS 0  patch RMS 0  largest patch error 0 "* ]] || fail "--mesh: $measured"
 
 # A closed furnace: the unit cube's six faces inward, 4 x 4 elements each, every one emitting
 # 1 with reflectance 0.5. Every row of F sums to 1, so B = E / (1 - rho) = 2 everywhere,

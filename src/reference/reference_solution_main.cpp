@@ -9,10 +9,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "models/solution_mesh.h"
 #include "reference/area_form_factors.h"
 #include "reference/radiosity_solve.h"
 #include "reference/reference_file.h"
 #include "reference/solution_error.h"
+#include "render/rasterizer.h"
+#include "scene/patch_mesh.h"
 #include "scene/scene_loader.h"
 #include "tools/output_files.h"
 #include "util/input_error.h"
@@ -37,7 +40,7 @@ int run(int argc, char** argv) {
   CLI::App app{"The accuracy reference (docs/accuracy.md): element-to-element form factors "
                "integrated over both elements, solved to convergence.",
                "reference_solution"};
-  std::string scene_name, out_path;
+  std::string scene_name, out_path, mesh_path;
   int samples = 64, threads = 0;
   bool quiet = false;
   app.add_option("scene", scene_name, "scene file (JSON); a bare name is also looked up in scenes/")
@@ -47,6 +50,9 @@ int run(int argc, char** argv) {
                  "self-agreement is measured against K/4")
       ->capture_default_str();
   app.add_option("--out", out_path, "write the reference solution (JSON) here")->required();
+  app.add_option("--mesh", mesh_path,
+                 "also write the reference as ./simulate's --mesh writes a solution (PLY: every "
+                 "element a polygon, the picture's tone mapping, raw radiosity as doubles)");
   app.add_option("--threads", threads, "host threads (0: every core); the result does not depend on it")
       ->capture_default_str();
   app.add_flag("--quiet", quiet, "print nothing but errors");
@@ -65,7 +71,7 @@ int run(int argc, char** argv) {
   if (threads < 0) throw InputError("--threads " + std::to_string(threads) + ": must be 0 or more");
   const std::string scene_file = resolve_scene(scene_name);
   const Scene scene = load_scene(scene_file);
-  OutputFiles outputs({{"--out", out_path}}, {scene_file});
+  OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
 
   const auto start = std::chrono::steady_clock::now();
   reference::ReferenceRun result;
@@ -87,6 +93,24 @@ int run(int argc, char** argv) {
   result.host_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outputs.write("--out", reference::reference_text(scene, result));
+  if (!mesh_path.empty()) {
+    // The scene's own grid, patch by patch in scene order (Scene::build_elements: row j,
+    // then column i), as a run without --subdivide hands its solution to the mesh.
+    std::vector<PatchSolution> solution;
+    for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+      const Patch& patch = scene.patches[p];
+      PatchSolution& s = solution.emplace_back();
+      s.patch = int(p);
+      for (int j = 0; j < patch.nv; ++j)
+        for (int i = 0; i < patch.nu; ++i) {
+          s.cells.push_back({0, i, j});
+          s.radiosity.push_back(result.radiosity[std::size_t(patch.first_element + j * patch.nu + i)]);
+        }
+    }
+    outputs.write("--mesh", solution_mesh_ply(scene, solution,
+                                              solution_exposure(scene, scene.camera, solution,
+                                                                800, 600)));
+  }
   outputs.commit();
   if (!quiet)
     std::printf("%s: %zu elements, K = %d points per element (%lld rays), K/4 = %d (%lld rays); "
