@@ -98,6 +98,7 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
             ++ray_total;
             if (rays.visible(x.point, ni, y.point, nj)) seen += term;
           }
+          // No point of j in front of x (a sliver of j seen edge-on): taken as unblocked.
           sum += x.weight * unoccluded * (all > 0.0 ? seen / all : 1.0);
         }
         count = double(k);
@@ -115,11 +116,13 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
     }
   }
   FormFactorRows rows(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < n; ++i) {
     for (const FormFactorEntry& e : upper[std::size_t(i)]) {
       rows[std::size_t(i)].push_back({e.element, e.value / scene.elements[std::size_t(i)].area});
       rows[std::size_t(e.element)].push_back({i, e.value / scene.elements[std::size_t(e.element)].area});
     }
+    std::vector<FormFactorEntry>().swap(upper[std::size_t(i)]);  // the host's memory back
+  }
   for (auto& row : rows)
     std::sort(row.begin(), row.end(),
               [](const FormFactorEntry& a, const FormFactorEntry& b) { return a.element < b.element; });
