@@ -1,0 +1,217 @@
+#!/usr/bin/python3
+"""The paper's claims, measured (issue 31 item 5): error against simulated time to convergence.
+
+Reads the sweep files experiments/claims/accuracy*.yaml with the sweep tool's own loader (the
+same validation, defaults and cell identity as experiments/sweep), runs every cell's ./simulate
+command itself with --mesh added (a sweep cell has no mesh output: docs/accuracy.md, "The
+study"), keeps each cell's result and mesh under RESULTS/claims/ named after the cell's
+identity (a finished cell is not run again; a changed option or input is another cell), and
+compares each mesh with its scene's reference (analysis/reference/<scene>.json, made by
+experiments/claims/references) by analysis/ncube/accuracy.py. Writes analysis/claims.md and
+analysis/figures/claims_accuracy.png.
+
+  /usr/bin/python3 analysis/claims.py [--results results] [--jobs 2] [--sweeps FILE ...]
+
+A series is a cell's every option but its accuracy knob (samples for ray-traced form factors,
+hemicube_resolution for the hemicube), so that the hemicube's and the shooters' cells, added
+as further sweep files, become further lines of the same plots and rows of the same tables."""
+import argparse
+import concurrent.futures
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from ncube import accuracy, output_file, paths, plotting, sweep  # noqa: E402
+
+ROOT = paths.ROOT
+KNOBS = ("samples", "hemicube_resolution")   # the accuracy knob of each form-factor method
+# What tells series apart in the legend, in this order, when the sweep sets it.
+SERIES_KEYS = ("form_factors", "hemicube_placement", "parallelisation", "R", "V")
+
+
+def knob(cell):
+    """The accuracy knob of the cell's form-factor method, and its value."""
+    method = cell.options.get("form_factors", "ray-traced")
+    name = "hemicube_resolution" if method == "hemicube" else "samples"
+    return name, cell.options.get(name)
+
+
+def series_of(cell):
+    return tuple(sorted((k, json.dumps(v)) for k, v in cell.options.items() if k not in KNOBS))
+
+
+def series_label(cell):
+    o = cell.options
+    method = o.get("form_factors", "ray-traced")
+    label = method + (f" ({o['hemicube_placement']})" if method == "hemicube" else "")
+    if o.get("parallelisation", "receivers") != "receivers":
+        label += f", {o['parallelisation']}"
+    return label + f", R={o['R']} V={o['V']}"
+
+
+def run_cell(cell, folder):
+    """The cell's result and mesh under `folder`, run now unless both are there."""
+    stem = Path(cell.file).stem
+    result, mesh = folder / f"{stem}.json", folder / f"{stem}.ply"
+    if result.exists() and mesh.exists():
+        return result, mesh
+    partial_result, partial_mesh = folder / f"{stem}.partial.json", folder / f"{stem}.partial.ply"
+    command = cell.command(str(partial_result)) + ["--mesh", str(partial_mesh), "--quiet"]
+    run = subprocess.run(command, env=paths.simulate_environment(), capture_output=True, text=True)
+    if run.returncode != 0:
+        raise RuntimeError(f"{cell.label} ({cell.file}): ./simulate exit {run.returncode}: "
+                           f"{run.stderr.strip()}")
+    os.replace(partial_mesh, mesh)   # the mesh first: a result alone is not taken as done
+    os.replace(partial_result, result)
+    return result, mesh
+
+
+def measure(cells, results, jobs):
+    folder = results / "claims" / "cells"
+    folder.mkdir(parents=True, exist_ok=True)
+    references = {}
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        runs = list(pool.map(lambda c: run_cell(c, folder), cells))
+    for cell, (result_path, mesh_path) in zip(cells, runs):
+        reference_path = ROOT / "analysis" / "reference" / f"{cell.scene}.json"
+        if cell.scene not in references:
+            if not reference_path.exists():
+                raise SystemExit(f"claims: no reference for {cell.scene}: run "
+                                 f"experiments/claims/references {cell.scene}")
+            references[cell.scene] = accuracy.read_reference(reference_path)
+        reference = references[cell.scene]
+        if reference["scene_sha256"] != cell.scene_sha256:
+            raise SystemExit(f"claims: {reference_path} is of another {cell.scene} (its "
+                             "scene_sha256 differs): run experiments/claims/references again")
+        result = json.loads(result_path.read_text())
+        error = accuracy.compare(accuracy.solution_from_ply(mesh_path), reference,
+                                 str(mesh_path), str(reference_path))
+        name, value = knob(cell)
+        rows.append({"scene": cell.scene, "series": series_of(cell), "label": series_label(cell),
+                     "knob": name, "value": value, "status": result["status"],
+                     "converged": result["converged"], "iterations": result["iterations"],
+                     "simulated_seconds": result["simulated_seconds"],
+                     "element_rms": error["element_rms"], "patch_rms": error["patch_rms"],
+                     "patch_max": error["patch_max"], "worst_patch": error["worst_patch"],
+                     "cell": cell.file})
+    return rows, references
+
+
+def plot(rows, path):
+    import matplotlib.pyplot as plt
+    scenes = sorted({r["scene"] for r in rows})
+    fig, axes = plt.subplots(3, len(scenes), figsize=(5.5 * len(scenes), 11), squeeze=False,
+                             layout="constrained")
+    for column, scene in enumerate(scenes):
+        mine = [r for r in rows if r["scene"] == scene]
+        for row_index, (measure, title) in enumerate(
+                (("element_rms", "element RMS relative error"),
+                 ("patch_rms", "patch RMS relative error"),
+                 ("patch_max", "largest patch error"))):
+            ax = axes[row_index][column]
+            for series in sorted({r["series"] for r in mine}):
+                points = sorted((r for r in mine if r["series"] == series),
+                                key=lambda r: r["value"])
+                xs = [r["simulated_seconds"] for r in points]
+                ys = [r[measure] for r in points]
+                ax.plot(xs, ys, marker="o", label=points[0]["label"])
+                for r in points:
+                    short = "M" if r["knob"] == "samples" else "N"
+                    ax.annotate(f"{short}={r['value']}", (r["simulated_seconds"], r[measure]),
+                                textcoords="offset points", xytext=(4, 4), fontsize=8)
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("simulated seconds to convergence")
+            ax.set_ylabel(title)
+            ax.set_title(f"{scene}: {title}")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
+    plotting.save(fig, path)
+
+
+def shown(path):
+    """A path as the page names it: from the repository's root when inside it."""
+    path = Path(path)
+    return path.relative_to(ROOT) if path.is_relative_to(ROOT) else path
+
+
+def markdown(rows, references, sweep_files):
+    out = ["# The paper's claims, measured", "",
+           "Written by `analysis/claims.py` (issue 31 item 5) from the sweeps "
+           + ", ".join(f"`{shown(f)}`" for f in sweep_files)
+           + "; how to run it: `docs/reproduce.md`; the reference and the error measure: "
+           "`docs/accuracy.md`.", "",
+           "Error: the area-weighted RMS of the elements' relative luminance errors against the "
+           "reference (element RMS), the same over patches (patch RMS), and the largest patch "
+           "error. Time: the simulated seconds of the whole run to convergence (largest unshot "
+           "power below 1e-4 of the emitted power).", "", "## The references", "",
+           "| scene | elements | K | self-agreement K/4 vs K: element RMS | patch RMS | "
+           "largest patch | host seconds |", "|---|---:|---:|---:|---:|---:|---:|"]
+    for scene, ref in sorted(references.items()):
+        s = ref["self_agreement"]
+        out.append(f"| {scene} | {ref['element_count']} | {ref['samples']} | "
+                   f"{s['element_rms']:.2e} | {s['patch_rms']:.2e} | {s['patch_max']:.2e} | "
+                   f"{ref['host_seconds']:.0f} |")
+    out += ["", "## Error against simulated time to convergence", "",
+            "![error against time](figures/claims_accuracy.png)", ""]
+    for scene in sorted({r["scene"] for r in rows}):
+        out += [f"### {scene}", "",
+                "| method | knob | iterations | simulated s | element RMS | patch RMS | "
+                "largest patch error (patch) |", "|---|---:|---:|---:|---:|---:|---:|"]
+        for r in sorted((r for r in rows if r["scene"] == scene),
+                        key=lambda r: (r["label"], r["value"])):
+            converged = "" if r["converged"] else " (not converged)"
+            out.append(f"| {r['label']} | {r['knob']}={r['value']} | {r['iterations']}{converged} | "
+                       f"{r['simulated_seconds']:.2f} | {r['element_rms']:.3f} | "
+                       f"{r['patch_rms']:.3f} | {r['patch_max']:.3f} ({r['worst_patch']}) |")
+        out.append("")
+    methods = {r["label"].split(",")[0] for r in rows}
+    out += ["## The claims", "",
+            "1. *Ray-traced form factors are much more accurate than the hemicube* (section 6): "
+            + ("not yet measured: no hemicube cells in the sweeps (`form_factors: hemicube` "
+               "comes as `experiments/claims/accuracy-hemicube.yaml`)."
+               if not any(m.startswith("hemicube") for m in methods) else
+               "see the tables above."), "",
+            "2. *No need to distribute radiosity values after the form factors* (section 6): "
+            "not yet measured: no `parallelisation: shooters` cells in the sweeps.", ""]
+    return "\n".join(out)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--results", type=Path, default=ROOT / "results")
+    parser.add_argument("--jobs", type=int, default=2, help="cells run at once")
+    parser.add_argument("--sweeps", nargs="*", type=Path,
+                        default=sorted((ROOT / "experiments" / "claims").glob("accuracy*.yaml")))
+    parser.add_argument("--out", type=Path, default=ROOT / "analysis" / "claims.md")
+    parser.add_argument("--figure", type=Path,
+                        default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
+    args = parser.parse_args()
+    try:
+        sweeps = sweep.load_all(args.sweeps)
+    except sweep.SweepError as e:
+        print(f"claims: {e}", file=sys.stderr)
+        return 2
+    cells, seen = [], set()
+    for s in sweeps:
+        for cell in s.cells:
+            if cell.id not in seen:
+                seen.add(cell.id)
+                cells.append(cell)
+    try:
+        rows, references = measure(cells, args.results.resolve(), args.jobs)
+    except (RuntimeError, accuracy.AccuracyError) as e:
+        print(f"claims: {e}", file=sys.stderr)
+        return 4
+    plot(rows, args.figure)
+    output_file.write(args.out, markdown(rows, references, [s.file for s in sweeps]) + "\n")
+    print(f"claims: {len(rows)} cells; written: {args.out}, {args.figure}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,133 @@
+#include "reference/area_form_factors.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <glm/geometric.hpp>
+
+#include "reference/point_polygon_factor.h"
+#include "reference/ray_visibility.h"
+#include "reference/stratified_points.h"
+
+namespace ncube::reference {
+namespace {
+
+// Whether any corner of `polygon` lies strictly in front of the plane through `point`.
+bool some_in_front(const Polygon& polygon, const Vec3& point, const Vec3& normal) {
+  for (int c = 0; c < polygon.count; ++c)
+    if (glm::dot(polygon[c] - point, normal) > 0.0) return true;
+  return false;
+}
+
+double radius(const Element& e) {
+  double r = 0.0;
+  for (int c = 0; c < e.polygon.count; ++c) r = std::max(r, glm::length(e.polygon[c] - e.centre));
+  return r;
+}
+
+// The kernel cos cos / (pi r^2) times the two points' weights, 0 where either faces away.
+double kernel(const AreaSample& x, const Vec3& nx, const AreaSample& y, const Vec3& ny) {
+  const Vec3 d = y.point - x.point;
+  const double r2 = glm::dot(d, d);
+  if (r2 <= 0.0) return 0.0;
+  const double cos_x = glm::dot(nx, d);
+  const double cos_y = -glm::dot(ny, d);
+  if (cos_x <= 0.0 || cos_y <= 0.0) return 0.0;
+  return x.weight * y.weight * cos_x * cos_y / (M_PI * r2 * r2);
+}
+
+// The kernel, 0 also where the segment is blocked.
+double pair_term(const AreaSample& x, const Vec3& nx, const AreaSample& y, const Vec3& ny,
+                 const RayVisibility& rays, long long& ray_count) {
+  const double term = kernel(x, nx, y, ny);
+  if (term <= 0.0) return 0.0;
+  ++ray_count;
+  return rays.visible(x.point, nx, y.point, ny) ? term : 0.0;
+}
+
+}  // namespace
+
+FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& options,
+                                 FormFactorStats* stats) {
+  const int n = int(scene.elements.size());
+  const int k = options.side * options.side;
+  const RayVisibility rays(scene);
+  std::vector<std::vector<AreaSample>> points(static_cast<std::size_t>(n));
+  std::vector<double> radii(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    points[std::size_t(i)] = stratified_points(scene.elements[std::size_t(i)].polygon, options.side,
+                                               mix_seed(options.seed, std::uint64_t(i), 1));
+    radii[std::size_t(i)] = radius(scene.elements[std::size_t(i)]);
+  }
+  // upper[i]: (j, I_ij) for j > i, the double integral.
+  std::vector<std::vector<FormFactorEntry>> upper(static_cast<std::size_t>(n));
+  long long ray_total = 0, near_total = 0, pair_total = 0;
+  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) \
+    reduction(+ : ray_total, near_total, pair_total)
+  for (int i = 0; i < n; ++i) {
+    const Element& ei = scene.elements[std::size_t(i)];
+    const Vec3& ni = scene.patches[std::size_t(ei.patch)].normal;
+    std::vector<int> order(static_cast<std::size_t>(k));
+    for (int j = i + 1; j < n; ++j) {
+      const Element& ej = scene.elements[std::size_t(j)];
+      if (ej.patch == ei.patch) continue;
+      const Vec3& nj = scene.patches[std::size_t(ej.patch)].normal;
+      if (!some_in_front(ej.polygon, ei.centre, ni) || !some_in_front(ei.polygon, ej.centre, nj))
+        continue;
+      ++pair_total;
+      const auto& pi = points[std::size_t(i)];
+      const auto& pj = points[std::size_t(j)];
+      const bool near = glm::length(ej.centre - ei.centre) <
+                        FormFactorOptions::kNearFactor * (radii[std::size_t(i)] + radii[std::size_t(j)]);
+      double sum = 0.0;
+      double count = 0.0;
+      if (near) {
+        ++near_total;
+        // The inner integral over j in closed form, visibility from every point pair.
+        for (const AreaSample& x : pi) {
+          const double unoccluded = point_polygon_factor(x.point, ni, ej.polygon);
+          if (unoccluded <= 0.0) continue;
+          double seen = 0.0, all = 0.0;
+          for (const AreaSample& y : pj) {
+            const double term = kernel(x, ni, y, nj);
+            if (term <= 0.0) continue;
+            all += term;
+            ++ray_total;
+            if (rays.visible(x.point, ni, y.point, nj)) seen += term;
+          }
+          // No point of j in front of x (a sliver of j seen edge-on): taken as unblocked.
+          sum += x.weight * unoccluded * (all > 0.0 ? seen / all : 1.0);
+        }
+        count = double(k);
+      } else {
+        std::iota(order.begin(), order.end(), 0);
+        SampleStream shuffle(mix_seed(options.seed, std::uint64_t(i), std::uint64_t(j) + 2));
+        for (int a = k - 1; a > 0; --a)
+          std::swap(order[std::size_t(a)], order[shuffle.next_bits() % std::uint64_t(a + 1)]);
+        for (int a = 0; a < k; ++a)
+          sum += pair_term(pi[std::size_t(a)], ni, pj[std::size_t(order[std::size_t(a)])], nj, rays,
+                           ray_total);
+        count = double(k);
+      }
+      if (sum > 0.0) upper[std::size_t(i)].push_back({j, sum / count});
+    }
+  }
+  FormFactorRows rows(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    for (const FormFactorEntry& e : upper[std::size_t(i)]) {
+      rows[std::size_t(i)].push_back({e.element, e.value / scene.elements[std::size_t(i)].area});
+      rows[std::size_t(e.element)].push_back({i, e.value / scene.elements[std::size_t(e.element)].area});
+    }
+    std::vector<FormFactorEntry>().swap(upper[std::size_t(i)]);  // the host's memory back
+  }
+  for (auto& row : rows)
+    std::sort(row.begin(), row.end(),
+              [](const FormFactorEntry& a, const FormFactorEntry& b) { return a.element < b.element; });
+  if (stats) *stats = {ray_total, near_total, pair_total};
+  return rows;
+}
+
+}  // namespace ncube::reference

@@ -1,0 +1,49 @@
+// Element-to-element form factors integrated over both ends (docs/accuracy.md): the
+// reference's replacement for the two methods it judges (the paper's point-to-shooter form
+// factor from each element's centre with M rays, and the hemicube at the shooter).
+//   F_ij = 1/A_i  integral_i integral_j  cos(theta_i) cos(theta_j) / (pi r^2)  V(x, y)  dA_j dA_i
+// Each element gets K = side x side jittered points (stratified_points.h) with fixed seeds.
+// A pair of elements far apart pairs its points one to one (K rays: point k of i with point
+// pi(k) of j, pi a fixed random permutation of the pair): the kernel at both ends, as
+// sampled. A near pair (centres closer than kNearFactor x the sum of the elements' radii)
+// is where the kernel varies most and, for elements that share an edge, is singular: sampled
+// at both ends its estimate has infinite variance (row sums of a closed cube were 1-3 % short
+// at K = 256). There each point x of i takes the inner integral over j in closed form
+// (point_polygon_factor.h) times the share of the kernel cos cos / (pi r^2) over the K points
+// y of j whose ray is unblocked (K x K rays): exact when j is wholly seen or wholly hidden.
+// The double integral I_ij is computed once per pair (i < j), so F_ij A_i = F_ji A_j holds
+// exactly. Pairs on one patch are planar: F = 0.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace ncube::reference {
+
+struct FormFactorEntry {
+  int element = 0;   // j
+  double value = 0.0;  // F_ij
+};
+
+struct FormFactorOptions {
+  int side = 4;                  // K = side^2 points per element
+  std::uint64_t seed = 1994;     // fixed: the same scene and K give the same matrix
+  int threads = 0;               // host threads (0: every core); the result does not depend on it
+  static constexpr double kNearFactor = 2.0;
+};
+
+// Row i: the nonzero F_ij, j ascending.
+using FormFactorRows = std::vector<std::vector<FormFactorEntry>>;
+
+struct FormFactorStats {
+  long long rays = 0;
+  long long near_pairs = 0;
+  long long pairs = 0;  // unordered pairs that face each other (tested)
+};
+
+FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& options,
+                                 FormFactorStats* stats = nullptr);
+
+}  // namespace ncube::reference

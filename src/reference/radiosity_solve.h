@@ -1,0 +1,25 @@
+// The reference's radiosity: B_i = E_i + rho_i sum_j F_ij B_j on the scene's elements, all
+// three colours at once, by Gauss-Seidel sweeps to convergence (every element, not the
+// simulator's patch-level shooting: the element-level answer the discretisation allows).
+#pragma once
+
+#include <vector>
+
+#include "reference/area_form_factors.h"
+#include "scene/scene.h"
+
+namespace ncube::reference {
+
+struct SolveReport {
+  int sweeps = 0;
+  double last_change = 0.0;  // largest change of an element's luminance in the last sweep,
+                             // relative to the largest luminance
+};
+
+// Stops when a sweep changes no element's luminance by more than `tolerance` of the largest
+// (or after max_sweeps). Elements' emission and reflectance are their patch's.
+std::vector<Rgb> solve_radiosity(const Scene& scene, const FormFactorRows& rows,
+                                 double tolerance = 1e-13, int max_sweeps = 100000,
+                                 SolveReport* report = nullptr);
+
+}  // namespace ncube::reference

@@ -1,0 +1,143 @@
+// build/reference_solution SCENE --samples K --out ref.json — the accuracy reference of
+// docs/accuracy.md: a converged element solution from form factors integrated over both
+// elements, with its self-agreement (K/4 against K points per element) in the file.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "models/solution_mesh.h"
+#include "reference/area_form_factors.h"
+#include "reference/radiosity_solve.h"
+#include "reference/reference_file.h"
+#include "reference/solution_error.h"
+#include "render/rasterizer.h"
+#include "scene/patch_mesh.h"
+#include "scene/scene_loader.h"
+#include "tools/output_files.h"
+#include "util/input_error.h"
+#include "util/input_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace ncube;
+
+std::string resolve_scene(const std::string& name) {
+  std::error_code error;
+  if (fs::exists(name, error)) return name;
+  for (const std::string& candidate : {name, name + ".json"}) {
+    const fs::path in_scenes = fs::path(NCUBE_SOURCE_DIR) / "scenes" / candidate;
+    if (fs::exists(in_scenes, error)) return in_scenes.string();
+  }
+  return name;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"The accuracy reference (docs/accuracy.md): element-to-element form factors "
+               "integrated over both elements, solved to convergence.",
+               "reference_solution"};
+  std::string scene_name, out_path, mesh_path;
+  int samples = 64, threads = 0;
+  bool quiet = false;
+  app.add_option("scene", scene_name, "scene file (JSON); a bare name is also looked up in scenes/")
+      ->required();
+  app.add_option("--samples", samples,
+                 "K, points per element: the square of an even number from 4 to 1024; the "
+                 "self-agreement is measured against K/4")
+      ->capture_default_str();
+  app.add_option("--out", out_path, "write the reference solution (JSON) here")->required();
+  app.add_option("--mesh", mesh_path,
+                 "also write the reference as ./simulate's --mesh writes a solution (PLY: every "
+                 "element a polygon, the picture's tone mapping, raw radiosity as doubles)");
+  app.add_option("--threads", threads, "host threads (0: every core); the result does not depend on it")
+      ->capture_default_str();
+  app.add_flag("--quiet", quiet, "print nothing but errors");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    throw InputError(e.what());
+  }
+  const int side = int(std::lround(std::sqrt(double(samples))));
+  if (side * side != samples || side % 2 != 0 || samples < 4 || samples > 1024)
+    throw InputError("--samples " + std::to_string(samples) +
+                     ": must be the square of an even number from 4 to 1024 (4, 16, 36, 64, ...)");
+  if (threads < 0) throw InputError("--threads " + std::to_string(threads) + ": must be 0 or more");
+  const std::string scene_file = resolve_scene(scene_name);
+  const Scene scene = load_scene(scene_file);
+  OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
+
+  const auto start = std::chrono::steady_clock::now();
+  reference::ReferenceRun result;
+  result.scene_file = fs::path(scene_file).filename().string();
+  result.scene_sha256 = input_sha256(scene_file, kSceneFile);
+  result.samples = samples;
+  result.check_samples = samples / 4;
+  const auto solve = [&](int point_side, reference::FormFactorStats& stats,
+                         reference::SolveReport* report) {
+    reference::FormFactorOptions options;
+    options.side = point_side;
+    options.threads = threads;
+    const reference::FormFactorRows rows = reference::area_form_factors(scene, options, &stats);
+    return reference::solve_radiosity(scene, rows, 1e-13, 100000, report);
+  };
+  const std::vector<Rgb> check = solve(side / 2, result.check_stats, nullptr);
+  result.radiosity = solve(side, result.stats, &result.solve);
+  result.self_agreement = reference::solution_error(scene, check, result.radiosity);
+  result.host_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outputs.write("--out", reference::reference_text(scene, result));
+  if (!mesh_path.empty()) {
+    // The scene's own grid, patch by patch in scene order (Scene::build_elements: row j,
+    // then column i), as a run without --subdivide hands its solution to the mesh.
+    std::vector<PatchSolution> solution;
+    for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+      const Patch& patch = scene.patches[p];
+      PatchSolution& s = solution.emplace_back();
+      s.patch = int(p);
+      for (int j = 0; j < patch.nv; ++j)
+        for (int i = 0; i < patch.nu; ++i) {
+          s.cells.push_back({0, i, j});
+          s.radiosity.push_back(result.radiosity[std::size_t(patch.first_element + j * patch.nu + i)]);
+        }
+    }
+    outputs.write("--mesh", solution_mesh_ply(scene, solution,
+                                              solution_exposure(scene, scene.camera, solution,
+                                                                800, 600)));
+  }
+  outputs.commit();
+  if (!quiet)
+    std::printf("%s: %zu elements, K = %d points per element (%lld rays), K/4 = %d (%lld rays); "
+                "K/4 against K: element RMS %.3g, patch RMS %.3g, largest patch %.3g; %.1f s\n",
+                scene.name.c_str(), scene.elements.size(), samples, result.stats.rays,
+                samples / 4, result.check_stats.rays, result.self_agreement.element_rms,
+                result.self_agreement.patch_rms, result.self_agreement.patch_max,
+                result.host_seconds);
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const ncube::InputError& e) {
+    std::cerr << "reference_solution: " << e.what() << "\n";
+    return ncube::kExitBadInput;
+  } catch (const ncube::OutputError& e) {
+    std::cerr << "reference_solution: " << e.what() << " (no output file was written)\n";
+    return ncube::kExitCannotWrite;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "reference_solution: the host ran out of memory (no output file was written)\n";
+    return ncube::kExitHostOutOfMemory;
+  } catch (const std::exception& e) {
+    std::cerr << "reference_solution: internal error: " << e.what() << "\n";
+    return ncube::kExitInternalError;
+  }
+}

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# build/reference_solution (docs/accuracy.md): every committed reference in analysis/reference/
+# reproduces from its one command (experiments/claims/references) but for host_seconds and
+# code_version; the result does not depend on the number of threads; bad input is exit 2 with
+# one line. About 1-3 minutes (two references at K = 256 on 2 cores).
+set -u
+simulate=$1 root=$2
+solver=$(dirname "$simulate")/reference_solution
+scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+same() {  # two reference files equal but for their host-time and version fields
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+for d in (a, b):
+    d.pop("host_seconds"); d.pop("code_version")
+sys.exit(0 if a == b else 1)
+PY
+}
+
+# Bad input: one line, exit 2, no file.
+for args in "--samples 9" "--samples 2" "--samples 4096" "--threads -1" "--samples x"; do
+  "$solver" cornell-box $args --out "$scratch/bad.json" > "$scratch/out" 2> "$scratch/err"
+  rc=$?
+  [[ $rc == 2 && $(wc -l < "$scratch/err") == 1 && ! -e $scratch/bad.json ]] ||
+    fail "$args: exit $rc, $(cat "$scratch/err")"
+done
+"$solver" "$scratch/none.json" --out "$scratch/bad.json" 2> "$scratch/err"
+rc=$?
+[[ $rc == 2 && $(cat "$scratch/err") == *none.json* ]] || fail "missing scene: exit $rc"
+
+# Threads change nothing.
+"$solver" cornell-box --samples 16 --threads 1 --quiet --out "$scratch/one.json" \
+  --mesh "$scratch/one.ply" &&
+  "$solver" cornell-box --samples 16 --threads 2 --quiet --out "$scratch/two.json" &&
+  same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
+
+# --mesh is the same solution in ./simulate's mesh layout: no error against the file.
+measured=$(/usr/bin/python3 "$root/analysis/ncube/accuracy.py" "$scratch/one.ply" "$scratch/one.json")
+[[ $measured == "element RMS 0  patch RMS 0  largest patch error 0 "* ]] || fail "--mesh: $measured"
+
+# A closed furnace: the unit cube's six faces inward, 4 x 4 elements each, every one emitting
+# 1 with reflectance 0.5. Every row of F sums to 1, so B = E / (1 - rho) = 2 everywhere,
+# through the whole tool (scene loading, rays, solver, file): within 1 % at K = 64.
+/usr/bin/python3 - "$scratch/furnace.json" <<'PY'
+import json, sys
+faces = [[[0,0,0],[1,0,0],[1,1,0],[0,1,0]], [[0,0,1],[0,1,1],[1,1,1],[1,0,1]],
+         [[0,0,0],[0,1,0],[0,1,1],[0,0,1]], [[1,0,0],[1,0,1],[1,1,1],[1,1,0]],
+         [[0,0,0],[0,0,1],[1,0,1],[1,0,0]], [[0,1,0],[1,1,0],[1,1,1],[0,1,1]]]
+json.dump({"name": "furnace", "patches": [{"vertices": f, "reflectance": [0.5] * 3,
+           "emission": [1, 1, 1], "elements": [4, 4]} for f in faces]}, open(sys.argv[1], "w"))
+PY
+"$solver" "$scratch/furnace.json" --samples 64 --quiet --out "$scratch/furnace-ref.json" &&
+  /usr/bin/python3 -c '
+import json, sys
+r = json.load(open(sys.argv[1]))
+worst = max(abs(c - 2) for e in r["elements"] for c in e[2:])
+sys.exit(0 if len(r["elements"]) == 96 and worst < 0.01 else "furnace: |B - 2| up to %g" % worst)
+' "$scratch/furnace-ref.json" || fail "the furnace is not 2 everywhere"
+
+# Each committed reference reproduces.
+for committed in "$root"/analysis/reference/*.json; do
+  scene=$(basename "$committed" .json)
+  samples=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["samples"])' "$committed")
+  "$root/experiments/claims/references" --build "$(dirname "$solver")" --out "$scratch" \
+    --samples "$samples" "$scene" > /dev/null || fail "$scene: the command failed"
+  same "$committed" "$scratch/$scene.json" || fail "$scene: analysis/reference/$scene.json does not reproduce"
+done
+[[ $failed == 0 ]] && echo "reference_solution_test: passed"
+exit $failed
