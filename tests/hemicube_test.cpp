@@ -185,6 +185,35 @@ TEST(Hemicube, WorkOfAOneCellCaseCountedByHand) {
             150u);
 }
 
+TEST(Hemicube, WorkOfAReceiverAcrossTwoFacesCountedByHand) {
+  // N = 10. A ceiling at z = 1 over x in [0.8, 1.2], y in [0.27, 0.47], across the top face's
+  // edge x = z. Clip tests and cuts, face by face:
+  //   top: d - a = 1 - x cuts two edges (4 tests, 2 cuts), the clipped x in [0.8, 1] is
+  //        inside the other four planes (16 tests); one cell centre, (0.9, 0.3), cell (9, 6);
+  //   +x (a = y, b = z, d = x): inside d - a and d + a (8), d - b = x - 1 cuts two edges (4
+  //        tests, 2 cuts), inside b >= 0 and the near plane (8): 20 tests; the clipped x in
+  //        [1, 1.2] projects to b / d in [0.83, 1], row 4 (z = 0.9), and at that row to a / d
+  //        in [0.243, 0.423], column 6 (y = 0.3);
+  //   -x: d - a = y - x < 0, out at once (4); +y: d - a = y - x < 0 (4); -y: inside
+  //        d - a = x - y, out at d + a = -x - y (8). 56 tests, 4 cuts in all.
+  WorkCounts counts;
+  const std::vector<double> f =
+      point_form_factors(10, {receiver(ceiling(0.8, 1.2, 0.27, 0.47, 1.0))}, {}, &counts);
+  WorkCounts expected;
+  expected.hemicube_vertices_transformed = 4;
+  expected.hemicube_polygons_set_up = 1;
+  expected.hemicube_clip_tests = 56;
+  expected.hemicube_clip_cuts = 4;
+  expected.hemicube_vertices_projected = 8;
+  expected.hemicube_polygons_scanned = 2;
+  expected.hemicube_rows_scanned = 2;
+  expected.hemicube_depth_tests = 2;
+  expected.hemicube_cells_read = 300;
+  EXPECT_EQ(counts, expected);
+  // Top cell (x, y) = (0.9, 0.3) and side cell (y, z) = (0.3, 0.9): r = 1.9 for both.
+  EXPECT_NEAR(f[0], 0.04 / (M_PI * 1.9 * 1.9) + 0.9 * 0.04 / (M_PI * 1.9 * 1.9), 1e-15);
+}
+
 TEST(Hemicube, Resolutions) {
   EXPECT_TRUE(is_valid_hemicube_resolution(2));
   EXPECT_TRUE(is_valid_hemicube_resolution(100));
