@@ -10,7 +10,7 @@
 //   top face   dA / (pi (x^2 + y^2 + 1)^2),
 //   side faces z dA / (pi (y^2 + z^2 + 1)^2),
 // NOT normalised: their sum over the whole hemicube is 1 only to the midpoint rule's
-// accuracy (DeltaFormFactors::sum; about 1 - 4e-5 at N = 100). A receiver's point form factor
+// accuracy (DeltaFormFactors::sum: 1 + 5.4e-5 at N = 100). A receiver's point form factor
 // F(eye -> receiver) is the sum over its cells; its form factor to the shooter follows by
 // reciprocity, F(receiver -> shooter) = F(shooter -> receiver) A_shooter / A_receiver.
 //
