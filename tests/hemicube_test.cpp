@@ -22,11 +22,11 @@ Polygon ceiling(double x0, double x1, double y0, double y1, double height) {
   return Polygon::quad({x0, y0, height}, {x0, y1, height}, {x1, y1, height}, {x1, y0, height});
 }
 
-HemicubeReceiver receiver(const Polygon& polygon) { return {polygon, polygon.normal(), polygon.area()}; }
+HemicubePolygon receiver(const Polygon& polygon) { return hemicube_polygon(polygon); }
 
 // F(eye -> receivers[k]) from one hemicube at the origin looking up.
-std::vector<double> point_form_factors(int n, const std::vector<HemicubeReceiver>& receivers,
-                                       const std::vector<Polygon>& occluders = {},
+std::vector<double> point_form_factors(int n, const std::vector<HemicubePolygon>& receivers,
+                                       const std::vector<HemicubePolygon>& occluders = {},
                                        WorkCounts* counts = nullptr) {
   WorkCounts ignored;
   std::vector<double> f(receivers.size(), 0.0);
@@ -58,7 +58,7 @@ TEST(Hemicube, DeltaFormFactorsSumToOneToTheMidpointRulesAccuracy) {
 
 TEST(Hemicube, ASquareOverTheEyeGetsItsCellsAndConvergesToTheClosedForm) {
   // Side 1 at height 1: on the top face it covers [-0.5, 0.5]^2, whole cells for N = 100.
-  const std::vector<HemicubeReceiver> square = {receiver(ceiling(-0.5, 0.5, -0.5, 0.5, 1.0))};
+  const std::vector<HemicubePolygon> square = {receiver(ceiling(-0.5, 0.5, -0.5, 0.5, 1.0))};
   double cells = 0.0;  // the cells whose centres lie in it, each dA / (pi (x^2 + y^2 + 1)^2)
   for (int j = 0; j < 100; ++j)
     for (int i = 0; i < 100; ++i) {
@@ -103,14 +103,14 @@ TEST(Hemicube, TheNearestPolygonTakesTheCellAndBackFacesReceiveNothing) {
   const Polygon far = ceiling(-0.5, 0.5, -0.5, 0.5, 2.0);
   const Polygon near = ceiling(-1.0, 1.0, -1.0, 1.0, 1.0);
   // Blocked by an occluder, in either order of drawing; the occluder is not read out.
-  EXPECT_EQ(point_form_factors(100, {receiver(far)}, {near})[0], 0.0);
+  EXPECT_EQ(point_form_factors(100, {receiver(far)}, {receiver(near)})[0], 0.0);
   const std::vector<double> both = point_form_factors(100, {receiver(near), receiver(far)});
   EXPECT_EQ(both[1], 0.0);
   EXPECT_EQ(both[0], point_form_factors(100, {receiver(near)})[0]);
   EXPECT_EQ(point_form_factors(100, {receiver(far), receiver(near)})[0], 0.0);
   // Half hidden: the hidden half's cells go to the occluder.
   const double alone = point_form_factors(100, {receiver(far)})[0];
-  const double half = point_form_factors(100, {receiver(far)}, {ceiling(0.0, 1.0, -1.0, 1.0, 1.0)})[0];
+  const double half = point_form_factors(100, {receiver(far)}, {receiver(ceiling(0.0, 1.0, -1.0, 1.0, 1.0))})[0];
   EXPECT_NEAR(half, alone / 2, 1e-12);
   // Seen from behind: it blocks the far square but gets nothing.
   const Polygon turned = Polygon::quad(near[3], near[2], near[1], near[0]);
@@ -125,9 +125,9 @@ TEST(Hemicube, TheShootersFormFactorsFollowByReciprocityAndPlacement) {
   // The hand-counted scene: the light (patch 0, 1 x 1 at y = 2, facing down), the floor's
   // 5 elements under it (patch 1) and the table top (patch 2).
   const Scene scene = hand_counted_scene();
-  std::vector<HemicubeReceiver> floor;
+  std::vector<HemicubePolygon> floor;
   for (int e = scene.patches[1].first_element; e < scene.patches[1].first_element + 5; ++e)
-    floor.push_back({scene.elements[e].polygon, scene.patches[1].normal, scene.elements[e].area});
+    floor.push_back(hemicube_polygon(scene, 1, scene.elements[e].polygon, scene.elements[e].area));
   WorkCounts counts;
   HemicubeOptions options;
   const std::vector<double> f = hemicube_form_factors(scene, 0, floor, {}, options, counts);

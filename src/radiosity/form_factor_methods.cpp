@@ -17,34 +17,47 @@ void shoot_ray_traced(RadiosityEngine& engine, const OccluderSet& occluders, con
 
 // The shooter's hemicube over the node's geometry: its receivers as items, every other
 // polygon it holds (its other elements, the patches it holds for visibility only) as
-// occluders; the shooter's own patch lies in the eye's plane and is left out.
+// occluders; the shooter's own patch lies in the eye's plane and is left out. Without
+// subdivision every processor draws the same polygons (each patch's elements), so the
+// answers do not depend on R.
 void shoot_hemicube(RadiosityEngine& engine, const OccluderSet& occluders, const Shooter& shooter,
                     const std::vector<ElementRef>& receivers, const ProgressiveOptions& options,
                     WorkCounts& counts) {
   const Scene& scene = engine.scene();
   const ElementStore& store = engine.store();
-  std::vector<HemicubeReceiver> items;
+  std::vector<HemicubePolygon> items;
   items.reserve(receivers.size());
   std::vector<std::vector<bool>> receiving(store.patches().size());
   for (std::size_t slot = 0; slot < store.patches().size(); ++slot)
     receiving[slot].assign(store.patches()[slot].elements.size(), false);
   for (const ElementRef& ref : receivers) {
     const StoredElement& element = store.element(ref);
-    const Patch& patch = scene.patches[std::size_t(store.patches()[std::size_t(ref.slot)].patch)];
-    items.push_back({cell_polygon(patch, element.cell), patch.normal, element.area});
+    const int patch = store.patches()[std::size_t(ref.slot)].patch;
+    items.push_back(hemicube_polygon(scene, patch, cell_polygon(scene.patches[std::size_t(patch)], element.cell),
+                                     element.area));
     receiving[std::size_t(ref.slot)][std::size_t(ref.index)] = true;
   }
-  std::vector<Polygon> blockers;
+  std::vector<HemicubePolygon> blockers;
   for (std::size_t slot = 0; slot < store.patches().size(); ++slot) {
     const StoredPatch& s = store.patches()[slot];
     if (s.patch == shooter.patch) continue;
     const Patch& patch = scene.patches[std::size_t(s.patch)];
     for (std::size_t k = 0; k < s.elements.size(); ++k)
-      if (!receiving[slot][k]) blockers.push_back(cell_polygon(patch, s.elements[k].cell));
+      if (!receiving[slot][k])
+        blockers.push_back(hemicube_polygon(scene, s.patch, cell_polygon(patch, s.elements[k].cell),
+                                            s.elements[k].area));
   }
+  // The patches it holds for visibility only, cut into the scene's element grid (nu x nv,
+  // known to every node): drawn whole, a patch's outline would cover a cell centre lying on
+  // it where its owner's elements, whose edges are the outline's to rounding, do not, and the
+  // answers would depend on how the patches are spread (R = 1 against R = 8, scene1: 0.3 %).
   for (int patch : occluders.patch_indices())
-    if (patch != shooter.patch && !store.holds(patch))
-      blockers.push_back(scene.patches[std::size_t(patch)].polygon);
+    if (patch != shooter.patch && !store.holds(patch)) {
+      const Patch& p = scene.patches[std::size_t(patch)];
+      for (int e = p.first_element; e < p.first_element + p.element_count(); ++e)
+        blockers.push_back(hemicube_polygon(scene, patch, scene.elements[std::size_t(e)].polygon,
+                                            scene.elements[std::size_t(e)].area));
+    }
   const std::vector<double> form_factors =
       hemicube_form_factors(scene, shooter.patch, items, blockers, options.hemicube, counts);
   engine.gather_form_factors(shooter, receivers, form_factors, counts);

@@ -69,6 +69,7 @@ struct FramePolygon {
   double offset;  // normal . (any vertex): the plane's signed distance from the eye
   double extent;  // largest coordinate, for the near plane
   int item;       // receiver index, or -1: takes cells but is not read out
+  int key;        // ties of depth go to the lower key
 };
 
 constexpr int kMaxClipped = 12;  // 4 vertices + at most one per clip plane, with room
@@ -122,13 +123,14 @@ Clipped clip_to_face(int face, const FramePolygon& polygon, WorkCounts& counts) 
 struct FaceBuffer {
   int columns = 0, rows = 0;
   std::vector<double> inverse_depth;
-  std::vector<int> item;
+  std::vector<int> item, key;
 
   void clear(int c, int r) {
     columns = c;
     rows = r;
     inverse_depth.assign(std::size_t(c) * std::size_t(r), 0.0);
     item.assign(inverse_depth.size(), -1);
+    key.assign(inverse_depth.size(), 0);
   }
 };
 
@@ -181,17 +183,22 @@ void scan_polygon(int face, const Clipped& clipped, const FramePolygon& polygon,
       ++counts.hemicube_depth_tests;
       const double w = w_0 + w_x * (column + 0.5) + w_y * yc;
       const std::size_t cell = std::size_t(row) * std::size_t(buffer.columns) + std::size_t(column);
-      if (w > buffer.inverse_depth[cell]) {
+      if (w > buffer.inverse_depth[cell] ||
+          (w == buffer.inverse_depth[cell] && polygon.key < buffer.key[cell])) {
         buffer.inverse_depth[cell] = w;
         buffer.item[cell] = polygon.item;
+        buffer.key[cell] = polygon.key;
       }
     }
   }
 }
 
-FramePolygon to_frame(const Polygon& polygon, const Vec3& plane_normal, int item, const Vec3& eye,
-                      const Vec3& u, const Vec3& v, const Vec3& w, WorkCounts& counts) {
+FramePolygon to_frame(const HemicubePolygon& drawn, int item, const Vec3& eye, const Vec3& u,
+                      const Vec3& v, const Vec3& w, WorkCounts& counts) {
+  const Polygon& polygon = drawn.polygon;
+  const Vec3& plane_normal = drawn.normal;
   FramePolygon f;
+  f.key = drawn.key;
   f.count = polygon.count;
   f.extent = 0.0;
   for (int k = 0; k < polygon.count; ++k) {
@@ -202,7 +209,7 @@ FramePolygon to_frame(const Polygon& polygon, const Vec3& plane_normal, int item
   }
   counts.hemicube_vertices_transformed += std::uint64_t(polygon.count);
   f.normal = {glm::dot(plane_normal, u), glm::dot(plane_normal, v), glm::dot(plane_normal, w)};
-  f.offset = glm::dot(f.normal, f.vertices[0]);
+  f.offset = glm::dot(plane_normal, drawn.plane_point - eye);
   // A receiver seen from behind (the eye behind its plane, offset >= 0) blocks but receives
   // nothing: patches receive on their front only.
   f.item = item >= 0 && f.offset < 0.0 ? item : -1;
@@ -212,18 +219,26 @@ FramePolygon to_frame(const Polygon& polygon, const Vec3& plane_normal, int item
 
 }  // namespace
 
+HemicubePolygon hemicube_polygon(const Polygon& polygon, int key) {
+  return {polygon, polygon.normal(), polygon[0], polygon.area(), key};
+}
+
+HemicubePolygon hemicube_polygon(const Scene& scene, int patch, const Polygon& piece, double area) {
+  const Patch& p = scene.patches[std::size_t(patch)];
+  return {piece, p.normal, p.polygon[0], area, patch};
+}
+
 void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
-                     const std::vector<HemicubeReceiver>& receivers,
-                     const std::vector<Polygon>& occluders, const DeltaFormFactors& deltas,
+                     const std::vector<HemicubePolygon>& receivers,
+                     const std::vector<HemicubePolygon>& occluders, const DeltaFormFactors& deltas,
                      double weight, std::vector<double>& point_form_factors, WorkCounts& counts) {
   const Vec3 v = glm::cross(normal, tangent);
   std::vector<FramePolygon> polygons;
   polygons.reserve(receivers.size() + occluders.size());
   for (std::size_t k = 0; k < receivers.size(); ++k)
-    polygons.push_back(to_frame(receivers[k].polygon, receivers[k].normal, int(k), eye, tangent, v,
-                                normal, counts));
-  for (const Polygon& occluder : occluders)
-    polygons.push_back(to_frame(occluder, occluder.normal(), -1, eye, tangent, v, normal, counts));
+    polygons.push_back(to_frame(receivers[k], int(k), eye, tangent, v, normal, counts));
+  for (const HemicubePolygon& occluder : occluders)
+    polygons.push_back(to_frame(occluder, -1, eye, tangent, v, normal, counts));
   const int n = deltas.resolution;
   FaceBuffer buffer;
   for (int face = 0; face < 5; ++face) {
@@ -241,8 +256,8 @@ void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
 }
 
 std::vector<double> hemicube_form_factors(const Scene& scene, int shooter_patch,
-                                          const std::vector<HemicubeReceiver>& receivers,
-                                          const std::vector<Polygon>& occluders,
+                                          const std::vector<HemicubePolygon>& receivers,
+                                          const std::vector<HemicubePolygon>& occluders,
                                           const HemicubeOptions& options, WorkCounts& counts) {
   // The table is the node's from its start (hemicube_setup_work); the host keeps the last
   // one made on this thread.

@@ -61,12 +61,24 @@ struct DeltaFormFactors {
   double sum() const;  // top + 4 x side: the whole hemicube
 };
 
-// A polygon the hemicube gives cells to: its normal (unit, front) and area.
-struct HemicubeReceiver {
+// A polygon the hemicube draws: a receiver (given cells, read out) or an occluder (given
+// cells, not read out). Its depth comes from its plane (unit front `normal` through
+// `plane_point`), so that pieces of one patch (its elements) and the whole patch have the
+// same depth at every cell to the last bit; a cell at the same depth in two polygons goes to
+// the lower `key` (the scene patch it lies on), so that a radiosity processor reads off its
+// own elements what a single processor rendering every element would: the answers do not
+// depend on how the patches are spread over the processors.
+struct HemicubePolygon {
   Polygon polygon;
   Vec3 normal{0.0};
-  double area = 0.0;
+  Vec3 plane_point{0.0};
+  double area = 0.0;  // receivers: for reciprocity
+  int key = 0;
 };
+// A polygon standing alone: its own plane and area.
+HemicubePolygon hemicube_polygon(const Polygon& polygon, int key = 0);
+// `piece` (of area `area`) of the scene's patch `patch`, on the patch's plane.
+HemicubePolygon hemicube_polygon(const Scene& scene, int patch, const Polygon& piece, double area);
 
 // One hemicube with its eye at `eye`, its top face towards the unit `normal` and its first
 // axis along the unit `tangent` (perpendicular to `normal`): adds `weight` x F(eye ->
@@ -74,8 +86,8 @@ struct HemicubeReceiver {
 // receiver). `occluders` take cells too (nearer, they hide the receivers) but are not read
 // out. Counts the work.
 void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
-                     const std::vector<HemicubeReceiver>& receivers,
-                     const std::vector<Polygon>& occluders, const DeltaFormFactors& deltas,
+                     const std::vector<HemicubePolygon>& receivers,
+                     const std::vector<HemicubePolygon>& occluders, const DeltaFormFactors& deltas,
                      double weight, std::vector<double>& point_form_factors, WorkCounts& counts);
 
 // The form factors F(receiver k -> shooter) of the scene's patch `shooter_patch`, computed
@@ -85,8 +97,8 @@ void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
 // parallelisation). Counts the work; the delta form factors' table is the node's from its
 // start (hemicube_setup_work) and is not counted here.
 std::vector<double> hemicube_form_factors(const Scene& scene, int shooter_patch,
-                                          const std::vector<HemicubeReceiver>& receivers,
-                                          const std::vector<Polygon>& occluders,
+                                          const std::vector<HemicubePolygon>& receivers,
+                                          const std::vector<HemicubePolygon>& occluders,
                                           const HemicubeOptions& options, WorkCounts& counts);
 
 // The work of a node computing the delta form factors' table when it starts.
