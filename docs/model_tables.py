@@ -28,7 +28,8 @@ MODEL_DOC = ROOT / "docs" / "model.md"
 SOURCES = ROOT / "src"
 
 # Where a counter list's counts appear in a result file (docs/result-format.md).
-COUNTER_LISTS = {"NCUBE_WORK_COUNTERS": "counts", "NCUBE_RENDER_COUNTERS": "render.counts"}
+COUNTER_LISTS = {"NCUBE_WORK_COUNTERS": "counts", "NCUBE_HEMICUBE_COUNTERS": "counts",
+                 "NCUBE_RENDER_COUNTERS": "render.counts"}
 
 
 class Problem(Exception):

@@ -61,6 +61,8 @@ def allowed(option):
                                  number(r["high"]), "]" if r["high_included"] else ")")
         if option.get("perfect_square"):
             text += ", a perfect square"
+        if option.get("even"):
+            text += ", even"
         if option["kind"] == "number":
             text += ", finite"
         return text

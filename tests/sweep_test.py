@@ -54,6 +54,12 @@ def test_validation(work):
         "bad value (samples 20)": ({"samples": 20}, "'samples'"),
         "R not a whole number": ({"R": 2.5}, "'R'"),
         "unknown scene": ({"scene": "nowhere"}, "'scene'"),
+        "hemicube with V > 0": ({"form_factors": "hemicube", "samples": 64}, "'V'"),
+        "hemicube with a ray option": ({"form_factors": "hemicube", "V": 0}, "'samples'"),
+        "odd hemicube resolution": ({"form_factors": "hemicube", "hemicube_resolution": 51},
+                                    "'hemicube_resolution'"),
+        "hemicube option without hemicube": ({"hemicube_placement": "elements"},
+                                             "'hemicube_placement'"),
         # SimGrid settings are asked of ./simulate --check-settings before anything runs.
         "unknown SimGrid setting": ({"cfg": {"bogus/name": "1"}}, "Bad config key: bogus/name"),
         "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "network/model must be one of LV08"),

@@ -21,6 +21,9 @@ class Option:
     config_field: str    # where the result file records it ("config" object)
     check: object = None  # value -> error text or None
     doc: str = ""
+    # {option: value}: the result file records the field only when those options have those
+    # values (the hemicube's options: hemicube runs only, so the paper's runs keep their files)
+    recorded_when: object = None
 
 
 def _show(value):
@@ -47,6 +50,10 @@ def _square_check(value):
     return None if root * root == value else "must be a perfect square"
 
 
+def _even_check(value):
+    return None if value % 2 == 0 else "must be even"
+
+
 def _both(first, second):
     return lambda value: first(value) or second(value)
 
@@ -65,11 +72,13 @@ def _option(described):
         check = _range_check(described["range"])
     if described.get("perfect_square"):
         check = _both(check, _square_check)
+    if described.get("even"):
+        check = _both(check, _even_check)
     if "values" in described:
         check = _choice_check(described["values"])
     default = described["default"]
     return Option(described["flag"], kind, float(default) if kind is float else default,
-                  described["field"], check, described["help"])
+                  described["field"], check, described["help"], described.get("recorded_when"))
 
 
 def _load():
@@ -112,6 +121,8 @@ def config_fields(options):
     fields = {}
     for name, option in OPTIONS.items():
         value = full[name]
+        if option.recorded_when and any(full[k] != v for k, v in option.recorded_when.items()):
+            continue
         # --unlimited-memory is recorded inverted, as memory_cap.
         fields[option.config_field] = (not value) if name == "unlimited_memory" else value
     return fields

@@ -368,6 +368,22 @@ def _cell(spec, label, sweep_name, base, where):
              f"nodes; the platform {files['platform'].name} has {nodes}")
     if R > patches:
         fail("R", f"R={R}: more radiosity processors than the scene's {patches} patches")
+    # The form-factor method's rules, as ./simulate's configuration check has them
+    # (src/simulation/configuration_check.cpp): a method's options only with that method,
+    # the hemicube with V = 0 and the rays' options at their defaults.
+    for name, option in opts.OPTIONS.items():
+        when = option.recorded_when or {}
+        if name not in when and any(options[k] != v for k, v in when.items()) \
+                and options[name] != option.default:
+            fail(name, f"{options[name]!r} needs " + ", ".join(f"{k}: {v}" for k, v in when.items()))
+    if options["form_factors"] == "hemicube":
+        if V > 0:
+            fail("V" if "V" in spec else "form_factors",
+                 f"V={V}: form_factors hemicube is defined with V = 0 only (docs/model.md, 'The hemicube')")
+        for name in ("visibility", "ray_test", "samples"):
+            if options[name] != opts.OPTIONS[name].default:
+                fail(name, f"{options[name]!r}: form_factors hemicube traces no rays; leave "
+                     f"{name} at {opts.OPTIONS[name].default!r}")
     return Cell(sweep=sweep_name, label=label, scene=scene_name, scene_file=str(files["scene"]),
                 scene_sha256=file_sha256(files["scene"]), platform_file=str(files["platform"]),
                 platform_sha256=file_sha256(files["platform"]),

@@ -24,6 +24,8 @@ namespace ncube {
   X(radiosity_increment_bytes, 1, 1e9, "one element's RGB increment (--parallelisation shooters)") \
   X(octree_cell_bytes, 1, 1e9, "one octree cell: bounds, children, patch list")                 \
   X(octree_reference_bytes, 1, 1e9, "one entry of a leaf's patch list")                         \
+  X(hemicube_cell_bytes, 1, 1e9, "one cell of a hemicube face's item and depth buffers")       \
+  X(delta_form_factor_bytes, 1, 1e9, "one entry of the hemicube's delta form factors' table")    \
   X(node_reserve_bytes, 0, 0x1p50, "program, operating system and stack on every node")         \
   X(load_record_bytes, 1, 1e9, "a radiosity processor's load, with its candidate (4.1, 4.2)")   \
   X(transfer_order_bytes, 1, 1e9, "one balancing order, with the shooter (4.2)")                \

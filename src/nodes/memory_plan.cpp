@@ -1,6 +1,7 @@
 #include "nodes/memory_plan.h"
 
 #include "nodes/messages.h"
+#include "radiosity/form_factor_methods.h"
 #include "visibility/visibility_methods.h"
 
 namespace ncube {
@@ -27,6 +28,8 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   // group.
   const double whole_structure =
       V == 0 ? search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs) : 0.0;
+  const double form_factor_bytes =
+      form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs);
   std::vector<double> share_structure(std::size_t(V), 0.0), share_patches(std::size_t(V), 0.0);
   for (int j = 0; j < V; ++j) {
     const std::vector<int> share = visibility_share(setup.scene, V, j);
@@ -43,6 +46,8 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
     // Section 2.2: without visibility processors every radiosity processor holds the
     // geometry of all patches; section 3: with them, only its own.
     rp.bytes += (V == 0 ? patches : owned) * costs.patch_geometry_bytes + whole_structure;
+    // With V = 0 it computes the form factors itself: its method's buffers (the hemicube's).
+    if (V == 0) rp.bytes += form_factor_bytes;
     rp.bytes += owned * costs.patch_radiosity_bytes + owned_elements * costs.element_bytes;
     if (V > 0)  // a block of points out, V blocks of answers in
       rp.bytes += in_flight * block * (costs.point_bytes + V * mask_bytes);

@@ -4,6 +4,8 @@
 #include <limits>
 #include <xbt/log.h>
 
+#include "radiosity/form_factor_methods.h"
+
 // --log=ncube_radiosity.thresh:verbose shows every decision, :debug every shot.
 XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_radiosity, "the radiosity processors (sections 2.2, 3, 4)");
 
@@ -22,6 +24,11 @@ void RadiosityProcessor::run() {
   runtime_.start();
   // Section 6: with octree visibility, a node that tests rays first builds its octree.
   if (occluders_) runtime_.charge(occluders_->build_work());
+  // A node that computes form factors first does its method's setup (the hemicube's table).
+  if (occluders_) {
+    const WorkCounts setup = form_factor_methods().at(setup_.options.form_factors).setup_work(setup_.options);
+    if (!(setup == WorkCounts{})) runtime_.charge(setup);
+  }
   for (;;) {
     // Every processor offers the patch with the most unshot radiosity (and, when loads can
     // change, its load); the master chooses the globally best as shooter, and the patches
@@ -172,10 +179,10 @@ void RadiosityProcessor::find_visible_parts_and_gather(const Shooter& shooter,
     return;
   }
   // Section 2.2: trace a ray from each receiver to every part of the shooter and intersect
-  // it with all other patches.
+  // it with all other patches (or the run's other form-factor method over the same patches).
   WorkCounts work;
-  const std::vector<PartMask> visible = visible_parts(engine_, *occluders_, receivers, shooter, work);
-  engine_.gather(shooter, receivers, visible, work);
+  form_factor_methods().at(setup_.options.form_factors)
+      .shoot(engine_, *occluders_, shooter, receivers, setup_.options, work);
   runtime_.charge(work);
 }
 

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiosity/form_factor.h"
+#include "radiosity/form_factor_methods.h"
 
 namespace ncube {
 
@@ -132,18 +133,31 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
     computed_form_factors = form_factors.data();
   }
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    StoredPatch& s = store_.patches()[std::size_t(receivers[k].slot)];
-    StoredElement& element = s.elements[std::size_t(receivers[k].index)];
-    const Patch& patch = scene().patches[std::size_t(s.patch)];
-    const PartMask mask = shooter_lights(shooter, element.centre) ? masks[k] : 0;
+    const PartMask mask = shooter_lights(shooter, store_.element(receivers[k]).centre) ? masks[k] : 0;
     counts.form_factors += std::bitset<64>(mask).count();
-    // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
-    const Rgb gained = patch.reflectance * shooter.unshot * computed_form_factors[k];
-    element.radiosity += gained;
-    element.shot_gain = gained;
-    s.unshot += gained * (element.area / patch.area);
-    ++counts.element_updates;
+    receive(shooter, receivers[k], computed_form_factors[k], counts);
   }
+}
+
+void RadiosityEngine::gather_form_factors(const Shooter& shooter,
+                                          const std::vector<ElementRef>& receivers,
+                                          const std::vector<double>& form_factors,
+                                          WorkCounts& counts) {
+  for (std::size_t k = 0; k < receivers.size(); ++k)
+    receive(shooter, receivers[k], form_factors[k], counts);
+}
+
+void RadiosityEngine::receive(const Shooter& shooter, const ElementRef& ref, double form_factor,
+                              WorkCounts& counts) {
+  StoredPatch& s = store_.patches()[std::size_t(ref.slot)];
+  StoredElement& element = s.elements[std::size_t(ref.index)];
+  const Patch& patch = scene().patches[std::size_t(s.patch)];
+  // Reciprocity: B_e gains rho_e * F(e -> shooter) * unshot (section 1.1, shooting form).
+  const Rgb gained = patch.reflectance * shooter.unshot * form_factor;
+  element.radiosity += gained;
+  element.shot_gain = gained;
+  s.unshot += gained * (element.area / patch.area);
+  ++counts.element_updates;
 }
 
 std::vector<ElementRef> RadiosityEngine::subdivide(const std::vector<ElementRef>& shot,
@@ -252,8 +266,8 @@ ProgressiveRun run_progressive(RadiosityEngine& engine, const OccluderSet& occlu
     // Section 4.1: shoot, then cut where the light changes too fast and shoot the current
     // shooter to the new elements, until no element is cut.
     while (!receivers.empty()) {
-      const std::vector<PartMask> masks = visible_parts(engine, occluders, receivers, shooter, counts);
-      engine.gather(shooter, receivers, masks, counts);
+      form_factor_methods().at(options.form_factors).shoot(engine, occluders, shooter, receivers,
+                                                           options, counts);
       if (!options.subdivision.enabled) break;
       bool out_of_room = false;
       receivers = engine.subdivide(receivers, options.subdivision, 1L << 62, out_of_room, counts);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "radiosity/element_store.h"
+#include "radiosity/hemicube.h"
 #include "radiosity/host_assist.h"
 #include "radiosity/shooter.h"
 #include "radiosity/subdivision.h"
@@ -78,6 +79,11 @@ class RadiosityEngine {
   // or computed (on the host's threads; host_assist.h). Adds no light and counts nothing.
   std::vector<double> form_factors(const Shooter& shooter, const std::vector<ElementRef>& receivers,
                                    const std::vector<PartMask>& masks);
+  // Adds the shooter's light to each receiver through its form factor to the shooter,
+  // form_factors[k] for receivers[k], computed by another method (the hemicube); the light is
+  // added in receiver order, as gather adds it.
+  void gather_form_factors(const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                           const std::vector<double>& form_factors, WorkCounts& counts);
   // Section 4.1, after the shot's light has been distributed: tests the elements that have
   // just received it and cuts those whose corner radiosities differ too much. A cut
   // element's children start from its radiosity before this shot (its share of the shot is
@@ -106,6 +112,9 @@ class RadiosityEngine {
                  const std::vector<PartMask>& masks, const double* form_factors,
                  WorkCounts& counts);
 
+  // Receiver `ref` gains the shooter's light through form factor `form_factor`.
+  void receive(const Shooter& shooter, const ElementRef& ref, double form_factor, WorkCounts& counts);
+
   ElementStore store_;
   HostAssist* assist_ = nullptr;
 };
@@ -116,6 +125,9 @@ struct ProgressiveOptions {
   RayTestPolicy ray_policy = RayTestPolicy::kTestAllPatches;
   std::string visibility = "brute-force";  // --visibility: a name in visibility_methods()
                                           // (visibility/visibility_methods.h; section 6)
+  std::string form_factors = "ray-traced";  // --form-factors: a name in form_factor_methods()
+                                           // (radiosity/form_factor_methods.h)
+  HemicubeOptions hemicube;                // --hemicube-resolution, --hemicube-placement
   bool skip_facing_away = false;       // true: receivers that cannot see the shooter trace no rays
   double convergence_fraction = 1e-4;  // stop when max unshot power < this x emitted power
   int max_iterations = -1;             // -1: until converged

@@ -37,7 +37,33 @@ namespace ncube {
   X(increments_combined, flops_per_increment_combined,                                          \
     "the shooter-centred scheme: element increments received and added in the exchange")        \
   X(increments_applied, flops_per_increment_applied,                                            \
-    "the shooter-centred scheme: summed element increments added to radiosity and unshot")
+    "the shooter-centred scheme: summed element increments added to radiosity and unshot")  \
+  NCUBE_HEMICUBE_COUNTERS(X)
+
+// The hemicube's counters (--form-factors hemicube, radiosity/hemicube.h), part of the list
+// above. The result file writes them only for runs that use the hemicube, so that the paper's
+// runs keep their result files (result_file.cpp).
+#define NCUBE_HEMICUBE_COUNTERS(X)                                                              \
+  X(hemicube_delta_form_factors, flops_per_hemicube_delta_form_factor,                          \
+    "hemicube: entries of the delta form factors' table, computed once per node")               \
+  X(hemicube_vertices_transformed, flops_per_hemicube_vertex_transformed,                       \
+    "hemicube: polygon vertices moved into a hemicube's frame")                                 \
+  X(hemicube_polygons_set_up, flops_per_hemicube_polygon_set_up,                                \
+    "hemicube: polygons' planes moved into a hemicube's frame, with the facing test")           \
+  X(hemicube_clip_tests, flops_per_hemicube_clip_test,                                          \
+    "hemicube: polygon vertices tested against one clip plane of a face")                       \
+  X(hemicube_clip_cuts, flops_per_hemicube_clip_cut,                                            \
+    "hemicube: vertices made where a polygon's edge crosses a clip plane")                      \
+  X(hemicube_vertices_projected, flops_per_hemicube_vertex_projected,                           \
+    "hemicube: clipped vertices projected onto a face, each starting an edge")                  \
+  X(hemicube_polygons_scanned, flops_per_hemicube_polygon_scanned,                              \
+    "hemicube: clipped polygons scan-converted into a face (depth plane set up)")               \
+  X(hemicube_rows_scanned, flops_per_hemicube_row_scanned,                                      \
+    "hemicube: rows of cells a polygon spans on a face (its span's ends found)")                \
+  X(hemicube_depth_tests, flops_per_hemicube_depth_test,                                        \
+    "hemicube: cells whose centre a polygon covers, depth computed and compared")               \
+  X(hemicube_cells_read, flops_per_hemicube_cell_read,                                          \
+    "hemicube: item-buffer cells read out (delta form factor added to the cell's receiver)")
 
 struct WorkCounts {
 #define NCUBE_MEMBER(member, cost, doc) std::uint64_t member = 0;

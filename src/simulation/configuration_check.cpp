@@ -2,12 +2,55 @@
 
 #include <string>
 
+#include "radiosity/form_factor_methods.h"
 #include "radiosity/shooter.h"
 #include "simulation/parallelisations.h"
 #include "simulation/render_phase.h"
 #include "util/input_error.h"
 
 namespace ncube {
+
+namespace {
+
+// The form-factor method and the options that go with it (a method's options without it, or
+// options it cannot honour, are refused rather than silently ignored).
+void check_form_factor_options(const SimulationConfig& config) {
+  const ProgressiveOptions& o = config.options;
+  const FormFactorMethod& method = form_factor_methods().at(o.form_factors);
+  const std::string named = "--form-factors " + method.name;
+  if (config.visibility_processors > 0 && !method.with_visibility_processors)
+    throw InputError(named + " with --V " + std::to_string(config.visibility_processors) +
+                     ": not defined with visibility processors (V = 0 only): " +
+                     method.without_visibility_processors);
+  const ProgressiveOptions defaults;
+  if (method.name == "hemicube") {
+    if (!is_valid_hemicube_resolution(o.hemicube.resolution))
+      throw InputError("--hemicube-resolution " + std::to_string(o.hemicube.resolution) +
+                       ": must be an even number from " + std::to_string(kMinHemicubeResolution) +
+                       " to " + std::to_string(kMaxHemicubeResolution));
+    // No rays are traced: the options of the rays would have no effect.
+    if (o.visibility != defaults.visibility)
+      throw InputError(named + " with --visibility " + o.visibility +
+                       ": the hemicube traces no rays (leave --visibility at " +
+                       defaults.visibility + ")");
+    if (o.ray_policy != defaults.ray_policy)
+      throw InputError(named + " with --ray-test first-blocker: the hemicube traces no rays");
+    if (o.samples != defaults.samples)
+      throw InputError(named + " with --samples " + std::to_string(o.samples) +
+                       ": the hemicube does not cut the shooter into parts (leave --samples at " +
+                       std::to_string(defaults.samples) + ")");
+  } else {
+    if (o.hemicube.resolution != defaults.hemicube.resolution)
+      throw InputError("--hemicube-resolution " + std::to_string(o.hemicube.resolution) +
+                       " without --form-factors hemicube: it would have no effect");
+    if (o.hemicube.placement != defaults.hemicube.placement)
+      throw InputError(std::string("--hemicube-placement ") +
+                       hemicube_placement_name(o.hemicube.placement) +
+                       " without --form-factors hemicube: it would have no effect");
+  }
+}
+
+}  // namespace
 
 void check_configuration(const Scene& scene, const SimulationConfig& config,
                          const PlatformConfig& platform) {
@@ -25,6 +68,7 @@ void check_configuration(const Scene& scene, const SimulationConfig& config,
   if (!is_valid_part_count(config.options.samples))
     throw InputError("--samples " + std::to_string(config.options.samples) +
                      ": must be a perfect square from 1 to 64 (e.g. 16 or 64)");
+  check_form_factor_options(config);
   if (config.block_size < 1)
     throw InputError("--block-size " + std::to_string(config.block_size) + ": must be at least 1");
   check_render_configuration(config.render, config.node_count());

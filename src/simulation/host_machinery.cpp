@@ -10,6 +10,7 @@
 #include "host/scene_blockers.h"
 #include "host/threaded_assist.h"
 #include "host/threaded_occluders.h"
+#include "radiosity/form_factor_methods.h"
 #include "visibility/brute_force_occluders.h"
 #include "visibility/octree.h"
 #include "visibility/visibility_methods.h"
@@ -105,6 +106,26 @@ const MethodRegistry<HostVisibilityMethod>& host_visibility_methods() {
   return registry;
 }
 
+// The host's version of each form-factor method (radiosity/form_factor_methods.h), under
+// the same name: what the host adds to the method's readable definition. The ray-traced form
+// factors' help comes with the visibility method's host version above (the answer cache,
+// the form factors computed on the host threads or ahead); the hemicube runs as defined, on
+// one thread (bench/hemicube_bench.cpp measures it against the rays' host time).
+struct HostFormFactorMethod {
+  std::string name;
+  const char* host_version;
+};
+
+const MethodRegistry<HostFormFactorMethod>& host_form_factor_methods() {
+  static const MethodRegistry<HostFormFactorMethod> registry(
+      "host version of a form-factor method",
+      {
+          {"ray-traced", "the visibility method's host version"},
+          {"hemicube", "the readable definition"},
+      });
+  return registry;
+}
+
 }  // namespace
 
 void build_host_machinery(HostMachinery& machinery, const Scene& scene,
@@ -112,6 +133,7 @@ void build_host_machinery(HostMachinery& machinery, const Scene& scene,
                           const ProgressiveOptions& options, int visibility_processors,
                           int radiosity_processors, int block_size, bool loads_change) {
   const VisibilityMethod& method = visibility_methods().at(options.visibility);
+  host_form_factor_methods().at(form_factor_methods().at(options.form_factors).name);
   if (options.reference_visibility) {
     // The program computes everything itself, on one thread.
     for (const std::vector<int>& patches : patch_sets)

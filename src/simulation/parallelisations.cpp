@@ -143,14 +143,22 @@ const MethodRegistry<Parallelisation>& parallelisations() {
            [](const ProgramSetup& setup, const CostModel& costs) {
              return plan_memory(setup, owned_patches(setup), costs);
            },
-           launch_receivers, collect_receivers},
+           launch_receivers, collect_receivers, ""},
           {"shooters",
            "the earlier scheme of sections 2.2 and 6: every node holds the whole scene, shoots "
            "its own shooter to every element, and the radiosity increments are summed over "
            "all nodes each iteration; V = 0",
-           check_shooters, plan_shooter_memory, launch_shooters, collect_shooters},
+           check_shooters, plan_shooter_memory, launch_shooters, collect_shooters,
+           "increments_"},
       });
   return registry;
+}
+
+bool parallelisation_writes_counter(const std::string& parallelisation, const std::string& counter) {
+  for (const Parallelisation& p : parallelisations().all())
+    if (!p.counter_prefix.empty() && counter.rfind(p.counter_prefix, 0) == 0)
+      return p.name == parallelisation;
+  return true;
 }
 
 }  // namespace ncube

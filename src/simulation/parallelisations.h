@@ -39,9 +39,15 @@ struct Parallelisation {
   // After the simulation: the iterations, the solution and what else the programs report.
   std::function<void(const Scene&, const NodePrograms&, const PlatformConfig&, SimulationResult&)>
       collect;
+  // The prefix of the WorkCounts counters only this parallelisation counts ("": none): the
+  // result file writes them for its runs only, so that the paper's runs keep their files.
+  std::string counter_prefix;
 };
 
 // The paper's receivers first (the default), then shooters.
 const MethodRegistry<Parallelisation>& parallelisations();
+
+// Whether the result file of a run with parallelisation `parallelisation` writes `counter`.
+bool parallelisation_writes_counter(const std::string& parallelisation, const std::string& counter);
 
 }  // namespace ncube

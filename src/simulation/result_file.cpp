@@ -2,19 +2,26 @@
 
 #include "simulation/iteration_time.h"
 #include "simulation/parallelisations.h"
+#include "radiosity/form_factor_methods.h"
 #include "visibility/visibility_methods.h"
 
 namespace ncube {
 
-nlohmann::json counts_to_json(const WorkCounts& c) {
+nlohmann::json counts_to_json(const WorkCounts& c, const std::string& form_factors,
+                              const std::string& parallelisation) {
   nlohmann::json j;
-#define NCUBE_COUNT_TO_JSON(member, cost, doc) j[#member] = c.member;
-  NCUBE_WORK_COUNTERS(NCUBE_COUNT_TO_JSON)
+#define NCUBE_WORK_COUNT_TO_JSON(member, cost, doc) \
+  if (writes_counter(form_factors, #member) &&                  \
+      parallelisation_writes_counter(parallelisation, #member))  \
+    j[#member] = c.member;
+  NCUBE_WORK_COUNTERS(NCUBE_WORK_COUNT_TO_JSON)
+#undef NCUBE_WORK_COUNT_TO_JSON
   return j;
 }
 
 nlohmann::json render_counts_to_json(const RenderCounts& c) {
   nlohmann::json j;
+#define NCUBE_COUNT_TO_JSON(member, cost, doc) j[#member] = c.member;
   NCUBE_RENDER_COUNTERS(NCUBE_COUNT_TO_JSON)
 #undef NCUBE_COUNT_TO_JSON
   return j;
@@ -71,6 +78,9 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"ray_test", ray_policy_name(config.options.ray_policy)},
                  {"visibility", visibility_methods().at(config.options.visibility).name},
                  {"skip_facing_away", config.options.skip_facing_away},
+                 {"form_factors", form_factor_methods().at(config.options.form_factors).name},
+                 {"hemicube_resolution", config.options.hemicube.resolution},
+                 {"hemicube_placement", hemicube_placement_name(config.options.hemicube.placement)},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},
                  {"block_size", config.block_size},
@@ -90,6 +100,13 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"outline_elements", config.render.outline_elements},
                  {"parallelisation", parallelisations().at(config.parallelisation).name},
                  {"shooters_per_iteration", config.shooters_per_iteration}};
+  // The form-factor method's fields only for the hemicube, the parallelisation's only for
+  // the shooter-centred scheme: the paper's runs keep their files.
+  if (config.options.form_factors != "hemicube")
+    for (const char* field : {"form_factors", "hemicube_resolution", "hemicube_placement"})
+      j["config"].erase(field);
+  if (parallelisations().at(config.parallelisation).name == parallelisations().paper_default().name)
+    for (const char* field : {"parallelisation", "shooters_per_iteration"}) j["config"].erase(field);
   j["status"] = status_name(result.status);
   if (result.status == RunStatus::kOutOfMemory)
     j["out_of_memory"] = {{"node", result.out_of_memory.node},
@@ -116,7 +133,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   nlohmann::json radiosity = nlohmann::json::array();
   for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});
   j["patch_radiosity"] = radiosity;
-  j["counts"] = counts_to_json(result.counts);
+  j["counts"] = counts_to_json(result.counts, config.options.form_factors, config.parallelisation);
   nlohmann::json nodes = nlohmann::json::array();
   for (const NodeStats& n : result.nodes)
     nodes.push_back({{"node", n.node},
@@ -130,7 +147,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                      {"messages_received", n.messages_received},
                      {"peak_memory_bytes", n.peak_memory_bytes},
                      {"memory_bytes_at_end", n.memory_bytes_at_end},
-                     {"counts", counts_to_json(n.counts)}});
+                     {"counts", counts_to_json(n.counts, config.options.form_factors, config.parallelisation)}});
   j["nodes"] = nodes;
   if (result.render.ran) j["render"] = render_to_json(config, result.render);
   j["host_seconds"] = result.host_seconds;

@@ -16,7 +16,10 @@ constexpr int kResultSchemaVersion = 2;
 
 // The counters of the lists (radiosity/work_counts.h, render/render_counts.h), each under
 // its member's name: the result file's "counts" objects.
-nlohmann::json counts_to_json(const WorkCounts& counts);
+// The counters a run of form-factor method `form_factors` and parallelisation
+// `parallelisation` writes (writes_counter, parallelisation_writes_counter).
+nlohmann::json counts_to_json(const WorkCounts& counts, const std::string& form_factors = "ray-traced",
+                              const std::string& parallelisation = "receivers");
 nlohmann::json render_counts_to_json(const RenderCounts& counts);
 
 nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config,

@@ -30,9 +30,9 @@ bool in_range(double value, const ValueRange& range) {
 
 // Counts are written in decimal: CLI11 would read "010" as 8 (octal) and accept "0x10";
 // both are almost surely typos in a command line of this program.
-CLI::Validator decimal_integer(ValueRange range, bool square) {
+CLI::Validator decimal_integer(ValueRange range, bool square, bool even = false) {
   return CLI::Validator(
-      [range, square](std::string& text) -> std::string {
+      [range, square, even](std::string& text) -> std::string {
         static const std::regex decimal("-?(0|[1-9][0-9]{0,9})");
         if (!std::regex_match(text, decimal))
           return "'" + text + "' is not a decimal integer (digits without leading zeros or "
@@ -42,6 +42,7 @@ CLI::Validator decimal_integer(ValueRange range, bool square) {
         const long root = std::lround(std::sqrt(value));
         if (square && root * root != long(value))
           return "'" + text + "' is not a perfect square";
+        if (even && long(value) % 2 != 0) return "'" + text + "' is not even";
         return "";
       },
       "INT");
@@ -102,6 +103,15 @@ CLI::Option* OptionTable::square(const std::string& flag, int& value, long low, 
       .update({{"default", value}, {"range", range_json(range, true)}, {"perfect_square", true}});
   return app_.add_option(flag, value, help)->capture_default_str()->check(
       decimal_integer(range, true));
+}
+
+CLI::Option* OptionTable::even(const std::string& flag, int& value, long low, long high,
+                               const std::string& help, const std::string& field) {
+  const ValueRange range{double(low), double(high)};
+  entry(flag, "integer", help, field)
+      .update({{"default", value}, {"range", range_json(range, true)}, {"even", true}});
+  return app_.add_option(flag, value, help)->capture_default_str()->check(
+      decimal_integer(range, false, true));
 }
 
 CLI::Option* OptionTable::number(const std::string& flag, double& value, ValueRange range,

@@ -29,6 +29,9 @@ class OptionTable {
   // An integer that must also be a perfect square (--samples).
   CLI::Option* square(const std::string& flag, int& value, long low, long high,
                       const std::string& help, const std::string& field);
+  // An integer that must also be even (--hemicube-resolution).
+  CLI::Option* even(const std::string& flag, int& value, long low, long high,
+                    const std::string& help, const std::string& field);
   // Every floating-point option: a finite decimal number in `range`. NaN and the
   // infinities are refused for all of them by this one rule; -0 reads as 0.
   CLI::Option* number(const std::string& flag, double& value, ValueRange range,

@@ -39,9 +39,16 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
                    const ncube::SimulationResult& r) {
   std::fprintf(out, "scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
               scene.patches.size(), std::size_t(scene.element_total()));
-  std::fprintf(out, "configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
-              config.radiosity_processors, config.visibility_processors, config.node_count(),
-              config.options.samples);
+  const bool hemicube = config.options.form_factors == "hemicube";
+  if (hemicube)
+    std::fprintf(out, "configuration         R=%d V=%d on %d nodes, hemicube N=%d at the shooter's %s\n",
+                config.radiosity_processors, config.visibility_processors, config.node_count(),
+                config.options.hemicube.resolution,
+                ncube::hemicube_placement_name(config.options.hemicube.placement));
+  else
+    std::fprintf(out, "configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
+                config.radiosity_processors, config.visibility_processors, config.node_count(),
+                config.options.samples);
   std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
   if (r.status == ncube::RunStatus::kOutOfMemory)
     std::fprintf(out, "                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
@@ -57,9 +64,14 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
     std::fprintf(out, "seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,
                 ncube::iterations_measured(r.iteration_seconds),
                 r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
-  std::fprintf(out, "ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
-              (unsigned long long)r.counts.ray_patch_tests,
-              (unsigned long long)r.counts.plane_crossings);
+  if (hemicube)
+    std::fprintf(out, "hemicube cells        %llu depth-tested, %llu read out\n",
+                (unsigned long long)r.counts.hemicube_depth_tests,
+                (unsigned long long)r.counts.hemicube_cells_read);
+  else
+    std::fprintf(out, "ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
+                (unsigned long long)r.counts.ray_patch_tests,
+                (unsigned long long)r.counts.plane_crossings);
   if (r.render.ran)
     std::fprintf(out, "rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
                 ncube::row_partition_name(config.render.partition),

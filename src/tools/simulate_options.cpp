@@ -6,6 +6,7 @@
 #include <iostream>
 #include <limits>
 
+#include "radiosity/form_factor_methods.h"
 #include "scene/scene_loader.h"
 #include "simulation/parallelisations.h"
 #include "tools/option_table.h"
@@ -58,6 +59,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                 "--parallelisation shooters: patches shot at once per iteration, at most one "
                 "per node (0: one per node)",
                 "shooters_per_iteration");
+  // The result file records them for shooter-centred runs only (so that the paper's runs
+  // keep their files); the sweep tool compares them likewise (analysis/ncube/options.py).
+  for (const char* flag : {"--parallelisation", "--shooters-per-iteration"})
+    table.annotate(flag, "recorded_when", {{"parallelisation", "shooters"}});
   table.square("--samples", config.options.samples, 1, 64,
                "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
   table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
@@ -76,6 +81,22 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.choice("--visibility", config.options.visibility, visibility_methods().names(),
                "how rays find their blockers: " + visibility_methods().described(),
                "visibility");
+  table.choice("--form-factors", config.options.form_factors, form_factor_methods().names(),
+               "how a shooter's form factors are computed: " + form_factor_methods().described(),
+               "form_factors");
+  table.even("--hemicube-resolution", config.options.hemicube.resolution, kMinHemicubeResolution,
+             kMaxHemicubeResolution,
+             "hemicube: N, cells on a side of the top face (the side faces are N x N/2); even",
+             "hemicube_resolution");
+  std::string hemicube_placement = hemicube_placement_name(config.options.hemicube.placement);
+  table.choice("--hemicube-placement", hemicube_placement, {"centre", "elements"},
+               "hemicube: one at the shooter's centre (centre), or one at the centre of each "
+               "of the shooter's elements, weighted by area (elements)",
+               "hemicube_placement");
+  // The result file records them for hemicube runs only (so that the paper's runs keep
+  // their files); the sweep tool compares them likewise (analysis/ncube/options.py).
+  for (const char* flag : {"--form-factors", "--hemicube-resolution", "--hemicube-placement"})
+    table.annotate(flag, "recorded_when", {{"form_factors", "hemicube"}});
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",
@@ -239,6 +260,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
   options.scene_file = resolve_scene_path(options.scene_file);
   options.quiet = quiet;
+  config.options.hemicube.placement =
+      hemicube_placement == "elements" ? HemicubePlacement::kElements : HemicubePlacement::kCentre;
   config.render.enabled = render_parallel != "off";
   config.render.partition =
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;

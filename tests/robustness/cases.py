@@ -426,6 +426,8 @@ def _accepts(option, text):
         digits = text[1:] if text.startswith("-") else text
         if not digits.isdigit() or (len(digits) > 1 and digits[0] == "0"):
             return False
+        if option.get("even") and int(value) % 2 != 0:
+            return False
         if option.get("perfect_square") and (value < 0 or math.isqrt(int(value)) ** 2 != value):
             return False
     r = option["range"]
@@ -453,7 +455,9 @@ def _past(end, step, kind):
 # Model-file options run on tests/models/room.obj: what they must end with beyond the range
 # (a grid so fine that the elements do not fit a 4 MB node is out of memory, exit 3).
 MODEL_OUTCOMES = {"--element-size": lambda v: "ok" if v == 0 or v >= 0.05 else "oom",
-                  "--element-budget": lambda v: "ok" if v <= 10000 else "oom"}
+                  "--element-budget": lambda v: "ok" if v <= 10000 else "oom",
+                  # The hemicube's table and face buffer: 20 bytes x N^2 on a 4 MB node.
+                  "--hemicube-resolution": lambda v: "ok" if v <= 400 else "oom"}
 
 
 def number_cases(simulate, work):
@@ -484,8 +488,11 @@ def number_cases(simulate, work):
             if ok and option["flag"] in MODEL_OUTCOMES:
                 expect = MODEL_OUTCOMES[option["flag"]](float(text))
             iterations = [] if option["flag"] == "--iterations" else QUICK
+            # An option of one method only (the hemicube's) is tried with that method chosen.
+            method = [a for key, value in option.get("recorded_when", {}).items()
+                      for a in ("--" + key.replace("_", "-"), value)]
             cases.append({"group": "numbers", "name": f"{option['flag']} {text!r}",
-                          "args": [str(model_scene if model else scene), *iterations,
+                          "args": [str(model_scene if model else scene), *iterations, *method,
                                    option["flag"], text, "--json", str(out)],
                           "expect": expect, "outputs": [out],
                           "names": None if ok else _named(option, text)})

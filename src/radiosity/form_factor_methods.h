@@ -1,0 +1,51 @@
+// The form-factor methods a run can choose (--form-factors), each registered once
+// (util/method_registry.h; docs/architecture.md, "How to add a method"): its name (the
+// option's value and the result file's config.form_factors), what the docs say of it, and its
+// readable definition: how a node that holds the geometry of `occluders`' patches shoots a
+// shooter to its receiving elements (their form factors and the light they gain, with the work
+// counted), the work a node does once when it starts, and the memory the method needs on a
+// node beside the patches and elements. The definition is the host's version too (no host
+// machinery changes a hemicube's answers or counts; host_machinery.cpp says so under the same
+// name); tests/method_registry_test.cpp checks that every consumer knows every name.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "machine/cost_model.h"
+#include "radiosity/radiosity_engine.h"
+#include "util/method_registry.h"
+#include "visibility/occluder_set.h"
+
+namespace ncube {
+
+struct FormFactorMethod {
+  std::string name;
+  std::string doc;
+  // Shoots `shooter` to `receivers` (held by `engine`, in store order) on a node that holds
+  // the geometry of the patches of `occluders` for visibility; adds the work to `counts`.
+  std::function<void(RadiosityEngine& engine, const OccluderSet& occluders, const Shooter& shooter,
+                     const std::vector<ElementRef>& receivers, const ProgressiveOptions& options,
+                     WorkCounts& counts)>
+      shoot;
+  // The work of a node that computes form factors, once when it starts (none: all zero).
+  std::function<WorkCounts(const ProgressiveOptions& options)> setup_work;
+  // Modeled bytes of such a node beyond its patches and elements.
+  std::function<double(const ProgressiveOptions& options, const CostModel& costs)> node_bytes;
+  // Whether the method is defined with visibility processors (V > 0); if not, such a run is
+  // refused (exit 2) with `without_visibility_processors` as the reason.
+  bool with_visibility_processors = true;
+  std::string without_visibility_processors;
+  // The prefix of the WorkCounts counters only this method counts ("": none): the result
+  // file writes them for runs of this method only, so that other runs keep their files.
+  std::string counter_prefix;
+};
+
+// The paper's ray-traced form factors first (the default), then the hemicube.
+const MethodRegistry<FormFactorMethod>& form_factor_methods();
+
+// Whether the result file of a run with form-factor method `method` writes `counter`.
+bool writes_counter(const std::string& method, const std::string& counter);
+
+}  // namespace ncube
