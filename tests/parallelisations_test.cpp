@@ -76,8 +76,14 @@ TEST(Parallelisations, EveryOneIsRecordedInTheResultFile) {
     config.parallelisation = p.name;
     config.shooters_per_iteration = 2;
     const nlohmann::json recorded = result_to_json(scene, config, SimulationResult{})["config"];
-    EXPECT_EQ(recorded["parallelisation"], p.name);
-    EXPECT_EQ(recorded["shooters_per_iteration"], 2);
+    // The paper's program keeps its result files: the fields are written for the others only.
+    if (p.name == parallelisations().paper_default().name) {
+      EXPECT_FALSE(recorded.contains("parallelisation"));
+      EXPECT_FALSE(recorded.contains("shooters_per_iteration"));
+      continue;
+    }
+    EXPECT_EQ(recorded.value("parallelisation", ""), p.name);
+    EXPECT_EQ(recorded.value("shooters_per_iteration", -1), 2);
   }
   SimulationConfig config;
   config.parallelisation = "everywhere";
