@@ -209,9 +209,10 @@ def header(study, args, missing):
              f"`{sweep_file}` (issue 32): Table 4's configurations (R x (V + 1) = 64 nodes, "
              f"64 samples, the mean of the first 20 iterations) of "
              + ", ".join(study.scenes) + " with " + " and ".join(study.methods) + " on "
-             + ", ".join(study.machines) + " (their platform files: "
-             + ", ".join(f"`{rel(p)}`" for p in ordered(c.platform_file
-                                                       for c in study.sweep.cells))
+             + ", ".join(study.machines) + " (their platform files and the start of their "
+             "SHA-256: " + ", ".join(f"`{shown(f)}` {h.removeprefix('sha256:')[:12]}"
+                                     for f, h in ordered((c.platform_file, c.platform_sha256)
+                                                         for c in study.sweep.cells))
              + "; the machine pages: `docs/machines/`). Seconds are simulated seconds per "
              "iteration of each machine; every figure and sentence below is computed from the "
              "result files, so rerunning the study rewrites them.", "",
@@ -380,11 +381,13 @@ def memory_section(study):
 
 
 def figure(study, folder):
+    from matplotlib.ticker import NullLocator
     from ncube import plotting
     plt = plotting.plt
     fig, axes = plt.subplots(len(study.methods), len(study.scenes), squeeze=False,
                              figsize=(4.2 * len(study.scenes), 3.4 * len(study.methods)),
-                             sharex=True)
+                             sharey=True)
+    colours = {m: f"C{k}" for k, m in enumerate(study.machines)}   # one colour a machine
     for i, method in enumerate(study.methods):
         for j, scene in enumerate(study.scenes):
             ax = axes[i][j]
@@ -394,9 +397,10 @@ def figure(study, folder):
                                 and e.scene == scene and study.normalised(e) is not None)
                 if points:
                     ax.plot([p[0] for p in points], [p[1] for p in points], marker="o",
-                            label=machine)
+                            label=machine, color=colours[machine])
             ax.set_xscale("log", base=2)
             ax.set_yscale("log")
+            ax.xaxis.set_minor_locator(NullLocator())
             ax.set_xticks([r for r, _ in study.rows(scene)])
             ax.set_xticklabels([str(r) for r, _ in study.rows(scene)])
             ax.set_title(f"{scene}, {method}", fontsize=10)
@@ -405,8 +409,12 @@ def figure(study, folder):
                 ax.set_xlabel("R (V = 64 / R - 1)")
             if j == 0:
                 ax.set_ylabel(f"s per iteration / {study.reference}'s")
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=len(study.machines),
+    shown_lines = {}
+    for ax in axes.flat:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            shown_lines.setdefault(label, handle)
+    labels = [m for m in study.machines if m in shown_lines]
+    fig.legend([shown_lines[m] for m in labels], labels, loc="lower center", ncol=len(study.machines),
                bbox_to_anchor=(0.5, -0.04))
     fig.tight_layout(rect=(0, 0.04, 1, 1))
     Path(folder).mkdir(parents=True, exist_ok=True)
