@@ -131,11 +131,18 @@ def seconds(value):
     return format(value, ",.4g")
 
 
+def number(x):
+    """Three significant digits, whole numbers from 100 on (no exponents)."""
+    return f"{x:,.0f}" if x >= 100 else f"{x:.3g}"
+
+
 def factor_text(factor):
-    """How much faster: 'x times as fast' or, below 1, 'x times as long'."""
+    """How much faster: 'x times as fast' or, below 1, 'x times as slow'."""
+    if abs(factor - 1) < 0.005:
+        return "as fast"
     if factor >= 1:
-        return f"{factor:,.3g} times as fast"
-    return f"{1 / factor:,.3g} times as slow"
+        return f"{number(factor)} times as fast"
+    return f"{number(1 / factor)} times as slow"
 
 
 def cell_text(entry):
@@ -151,7 +158,10 @@ def config_text(entry, with_method=True):
 
 
 def percent(share):
-    return "" if share is None else f"{100 * share:.0f} %"
+    if share is None:
+        return ""
+    value = 100 * share
+    return f"{value:.0f} %" if value >= 10 else f"{value:.1f} %" if value >= 1 else f"{value:.2g} %"
 
 
 class Study:
@@ -490,11 +500,13 @@ def describe_cells(found):
 
 def factors_range(factors):
     low, high = min(factors), max(factors)
+    if number(low) == number(high):
+        return factor_text(low)
     if low >= 1:
-        return f"{low:,.3g} to {high:,.3g} times as fast"
+        return f"{number(low)} to {number(high)} times as fast"
     if high <= 1:
-        return f"{1 / high:,.3g} to {1 / low:,.3g} times as slow"
-    return f"between {1 / low:,.3g} times as slow and {high:,.3g} times as fast"
+        return f"{number(1 / high)} to {number(1 / low)} times as slow"
+    return f"between {number(1 / low)} times as slow and {number(high)} times as fast"
 
 
 def simulate_command(cell):

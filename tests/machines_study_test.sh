@@ -65,7 +65,7 @@ grep -q "key 'Rs': not a cell key" "$work/out" || fail "unclear message: $(cat "
 # fat against the nCube2: 40/10=4, 30/6=5, 50/5=10, 10/2.5=4, 12/2=6 -> 4 to 10 times as fast;
 # bigmem: 5, 6, 5, 5, 3 -> 3 to 6. Best: nCube2 R=16 V=3 octree (10 s), fat R=64 V=0 octree
 # (2 s: 5 times as fast), bigmem R=4 V=15 octree (1 s: 10 times as fast). Nodes: compute 90,
-# overhead 5, waiting 5 (10 % (5 %)), but fat's R=64 V=0 octree: 30, 10, 60 -> 70 % (10 %).
+# overhead 5, waiting 5 (10 % (5.0 %)), but fat's R=64 V=0 octree: 30, 10, 60 -> 70 % (10 %).
 sed 's/value="4194304"/value="16777216"/' "$root/docs/examples/fat-tree-64.xml" >"$work/bigmem.xml"
 cp "$root/docs/examples/fat-tree-64.xml" "$work/fat.xml"
 cat >"$work/study.yaml" <<'EOF'
@@ -125,7 +125,7 @@ has "| 16 | 3 | 10 | 2.5 | 2 |"
 has "| nCube2 | R=16 V=3 octree: 10 s |"
 has "| fat | R=64 V=0 octree: 2 s (5 times as fast) |"
 has "| bigmem | R=4 V=15 octree: 1 s (10 times as fast) |"
-has "| fat | octree | 10 % (5 %) | 10 % (5 %) | 70 % (10 %) |"
+has "| fat | octree | 10 % (5.0 %) | 10 % (5.0 %) | 70 % (10 %) |"
 has "| fat | 0.83 (does not pay; best R=16 V=3) | 0.80 (does not pay; best R=16 V=3) |"
 has "| bigmem | 2.00 (pays; best R=16 V=3) | 4.00 (pays; best R=4 V=15) |"
 has "* scene1, brute-force: on the nCube2 V > 0 pays; it stops paying on the fat; as on the nCube2 on the bigmem."
