@@ -45,6 +45,9 @@ RESULTS = "results/machines"
 # How a machine's platform file is named in the text; any other file by its name.
 DISPLAY = {"ncube2": "nCube2", "transputer-t800": "T800 network", "ipsc860": "iPSC/860",
            "paragon": "Paragon", "cm5": "CM-5", "cluster-2024": "cluster of 2024"}
+# Factors of speed against the reference that differ by less than this ratio across a machine's
+# configurations count as one factor (a port that only changes the node speed).
+UNIFORM = 1.05
 # The options a cell's method is made of even when they do not vary (so a study of one method
 # still names it); any other option that varies between the cells joins them.
 METHOD_OPTIONS = ("visibility",)
@@ -128,7 +131,8 @@ def ordered(values):
 
 
 def seconds(value):
-    return format(value, ",.4g")
+    """Four significant digits, whole seconds from 1,000 on (no exponents)."""
+    return f"{value:,.0f}" if value >= 1000 else f"{value:.4g}"
 
 
 def number(x):
@@ -453,7 +457,15 @@ def porting_section(study):
             lines += [f"* **{machine}**: no configuration finished on both it and the {ref}.", ""]
             continue
         text = (f"* **{machine}**: the same program runs Table 4's configurations "
-                f"{factors_range(factors)} as on the {ref}.")
+                f"{factors_range(factors)} as on the {ref}")
+        if max(factors) / min(factors) < UNIFORM:
+            text += (f": every configuration that runs on both by the same factor (within "
+                     f"{100 * (UNIFORM - 1):.0f} %), a change of node speed, not of the balance "
+                     "between computing and communication.")
+        else:
+            text += (f": the factor differs {max(factors) / min(factors):.2f} times between "
+                     "configurations, so the balance between computing and communication is "
+                     f"not the {ref}'s.")
         for scene in study.scenes:
             best, ref_best = study.best(machine=machine, scene=scene), \
                 study.best(machine=ref, scene=scene)
