@@ -48,6 +48,9 @@ DISPLAY = {"ncube2": "nCube2", "transputer-t800": "T800 network", "ipsc860": "iP
 # Factors of speed against the reference that differ by less than this ratio across a machine's
 # configurations count as one factor (a port that only changes the node speed).
 UNIFORM = 1.05
+# Waiting shares of one configuration within this many percentage points of the reference's on
+# every machine count as the same (the network does not show in them).
+SAME_WAITING = 1.0
 # The options a cell's method is made of even when they do not vary (so a study of one method
 # still names it); any other option that varies between the cells joins them.
 METHOD_OPTIONS = ("visibility",)
@@ -165,6 +168,8 @@ def percent(share):
     if share is None:
         return ""
     value = 100 * share
+    if value < 0.001:
+        return "< 0.001 %"
     return f"{value:.0f} %" if value >= 10 else f"{value:.1f} %" if value >= 1 else f"{value:.2g} %"
 
 
@@ -198,6 +203,28 @@ class Study:
         if entry.status != "ok" or ref is None or ref.status != "ok":
             return None
         return entry.value / ref.value
+
+    def factors(self, machine):
+        """How many times as fast as the reference, per configuration that runs on both."""
+        return [1 / self.normalised(e) for e in self.found
+                if e.machine == machine and self.normalised(e) is not None]
+
+    def v_ratio(self, machine, method, scene):
+        """The V = 0 time over the best V > 0 time, None unless both finished."""
+        with_v, without = self.v_pays(machine, method, scene)
+        if with_v is None or without is None or without.status != "ok":
+            return None
+        return without.value / with_v.value
+
+    def waiting_spread(self):
+        """(largest difference in percentage points between a cell's waiting share and the
+        reference machine's for the same configuration, that cell), None without a pair."""
+        pairs = []
+        for e in self.found:
+            ref = self.get(self.reference, e.method, e.scene, e.row)
+            if e.machine != self.reference and e.status == "ok" and ref and ref.status == "ok":
+                pairs.append((100 * abs(e.share("waiting") - ref.share("waiting")), e))
+        return max(pairs, key=lambda p: p[0], default=None)
 
     def v_pays(self, machine, method, scene):
         """(best with V > 0, the V = 0 cell): whether visibility processors pay here."""
@@ -311,7 +338,27 @@ def communication_section(study):
                                  if e and e.status == "ok" else (cell_text(e) if e else ""))
                 lines.append(f"| {machine} | {method} | " + " | ".join(cells) + " |")
         lines.append("")
-    return lines
+    ok = [e for e in study.found if e.status == "ok"]
+    if not ok:
+        return lines
+    top = max(ok, key=lambda e: e.share("overhead"))
+    lines.append(f"The message overhead is at most {percent(top.share('overhead'))} of node "
+                 f"time ({top.scene} {config_text(top)} on the {top.machine}).")
+    spread = study.waiting_spread()
+    if spread is not None:
+        points, e = spread
+        if points < SAME_WAITING:
+            lines[-1] += (" A configuration waits the same share of its time on every machine "
+                          f"(within {points:.2f} percentage points of the {study.reference}'s), "
+                          "whatever the network: the waiting is on the other nodes' computing "
+                          "(the busiest visibility processor, the other radiosity processors), "
+                          "not on messages.")
+        else:
+            lines[-1] += (" The waiting share of one configuration differs by up to "
+                          f"{points:.0f} percentage points between machines ({e.scene} "
+                          f"{config_text(e)} on the {e.machine} against the "
+                          f"{study.reference}): there the network shows.")
+    return lines + [""]
 
 
 def bottleneck_section(study):
@@ -415,6 +462,7 @@ def figure(study, folder):
             ax.set_xscale("log", base=2)
             ax.set_yscale("log")
             ax.xaxis.set_minor_locator(NullLocator())
+            ax.set_xlim(min(study.rows(scene))[0] / 1.2, max(study.rows(scene))[0] * 1.2)
             ax.set_xticks([r for r, _ in study.rows(scene)])
             ax.set_xticklabels([str(r) for r, _ in study.rows(scene)])
             ax.set_title(f"{scene}, {method}", fontsize=10)
@@ -450,9 +498,9 @@ def porting_section(study):
     """Plain sentences, each from the figures above."""
     lines = ["## 7. What porting would have meant", ""]
     ref = study.reference
+    lines += summary_sentences(study)
     for machine in study.machines[1:]:
-        factors = [1 / study.normalised(e) for e in study.found
-                   if e.machine == machine and study.normalised(e) is not None]
+        factors = study.factors(machine)
         if not factors:
             lines += [f"* **{machine}**: no configuration finished on both it and the {ref}.", ""]
             continue
@@ -472,11 +520,11 @@ def porting_section(study):
             if best is None or ref_best is None:
                 continue
             same = best.row == ref_best.row and best.method == ref_best.method
-            text += (f" Its best for {scene} is {config_text(best)} ({seconds(best.value)} s, "
-                     f"{percent(best.communication_share)} of node time in communication), "
+            text += (f" Its best for {scene} is {config_text(best)} ({seconds(best.value)} s; "
+                     f"{time_split(best)}), "
                      + ("the same as on the " + ref if same else
                         f"where the {ref} is best with {config_text(ref_best)} "
-                        f"({percent(ref_best.communication_share)} in communication)") + ".")
+                        f"({time_split(ref_best)})") + ".")
         stops, starts = [], []
         for scene in study.scenes:
             for method in study.methods:
@@ -503,6 +551,45 @@ def porting_section(study):
                      "runs.")
         lines += [text, ""]
     return lines
+
+
+def summary_sentences(study):
+    """The study in a few sentences: one factor or not, where V > 0 pays."""
+    ref, others = study.reference, study.machines[1:]
+    ported = [m for m in others if study.factors(m)]
+    uniform = [m for m in ported if max(study.factors(m)) / min(study.factors(m)) < UNIFORM]
+    varying = [m for m in ported if m not in uniform]
+    text = []
+    if uniform:
+        text.append(f"On {join(uniform)} every configuration changes by one factor against the "
+                    f"{ref} (within {100 * (UNIFORM - 1):.0f} %): in this model porting the "
+                    "program there changes its speed, not the balance between its computing "
+                    "and its communication.")
+    if varying:
+        text.append(f"On {join(varying)} the factor differs between configurations: there the "
+                    "balance between computing and communication is not the " + ref + "'s.")
+    combos = [(m, sc, me) for m in study.machines for sc in study.scenes for me in study.methods]
+    paying = [(m, sc, me) for m, sc, me in combos if study.pays(m, me, sc)]
+    if not paying:
+        text.append("Visibility processors (V > 0) beat R=64 V=0 on no machine, for no scene "
+                    "and method.")
+    else:
+        text.append("Visibility processors (V > 0) beat R=64 V=0 on "
+                    + "; ".join(f"the {m} for {sc} with {me}" for m, sc, me in paying) + ".")
+    ratios = [(abs(study.v_ratio(m, me, sc) / study.v_ratio(ref, me, sc) - 1), m, sc, me)
+              for m, sc, me in combos if m != ref and study.v_ratio(m, me, sc)
+              and study.v_ratio(ref, me, sc)]
+    if ratios:
+        worst = max(ratios)
+        text.append(f"The gain or loss of V > 0 (section 4's ratio) differs from the {ref}'s "
+                    f"by at most {100 * worst[0]:.1f} % (the {worst[1]}, {worst[2]} with "
+                    f"{worst[3]}).")
+    return [" ".join(text), ""] if text else []
+
+
+def time_split(entry):
+    return (f"its nodes wait {percent(entry.share('waiting'))} of their time, "
+            f"{percent(entry.share('overhead'))} in message overhead")
 
 
 def describe_cells(found):
