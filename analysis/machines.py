@@ -365,8 +365,9 @@ def bottleneck_section(study):
     lines = ["## 4. Where visibility processors stop paying", "",
              "Whether the best configuration with visibility processors (V > 0) beats R=64 V=0 "
              "on the same machine: the ratio is the V = 0 time over the best V > 0 time "
-             "(above 1: V > 0 pays; below 1: the visibility processors cost more in "
-             "communication than they save in computing).", "",
+             "(above 1: V > 0 pays; below 1: R=64 V=0 is faster, the radiosity processors "
+             "waiting on their visibility processors longer than those save them; section 3 "
+             "says how much of that waiting the network explains).", "",
              "| machine | " + " | ".join(f"{s} {m}" for s in study.scenes
                                          for m in study.methods) + " |",
              "|---|" + "---|" * (len(study.scenes) * len(study.methods))]
