@@ -27,7 +27,8 @@ SWEEP_KEYS = {
     "description": "free text",
     "measure": "seconds_per_iteration or total_seconds",
     "options": "cell keys applied to every cell (a cell's own keys win)",
-    "grid": "cell keys with lists of values: every combination is a cell",
+    "grid": "cell keys with lists of values: every combination is a cell; any other name "
+            "is a group of keys that vary together, a list of mappings (e.g. {R: 4, V: 15})",
     "cells": "a list of cells",
     "paper_table": "the paper table the sweep reproduces (for analysis/report.py)",
 }
@@ -292,9 +293,16 @@ def _expand(document, where):
         for key, values in grid.items():
             if not isinstance(values, list) or not values:
                 raise SweepError(f"{where}: grid: key {key!r}: expected a non-empty list")
+        for key, values in grid.items():
+            if key not in CELL_KEYS and not all(isinstance(v, dict) and v for v in values):
+                raise SweepError(f"{where}: grid: key {key!r}: not a cell key (known: "
+                                 + ", ".join(sorted(CELL_KEYS)) + "), nor a group of keys "
+                                 "that vary together (a list of mappings, e.g. {R: 4, V: 15})")
         keys = list(grid)
         for combination in itertools.product(*(grid[k] for k in keys)):
-            point = dict(zip(keys, combination))
+            point = {}
+            for key, value in zip(keys, combination):   # a group's entry adds its keys
+                point.update(value if key not in CELL_KEYS else {key: value})
             label = "grid cell " + " ".join(f"{k}={v}" for k, v in point.items())
             specs.append((label, dict(shared, **point)))
     cells = document.get("cells")
