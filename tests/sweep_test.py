@@ -60,6 +60,13 @@ def test_validation(work):
                                     "'hemicube_resolution'"),
         "hemicube option without hemicube": ({"hemicube_placement": "elements"},
                                              "'hemicube_placement'"),
+        "shooters with V > 0": ({"parallelisation": "shooters"}, "'V'"),
+        "shooters with subdivision": ({"parallelisation": "shooters", "V": 0, "subdivide": True},
+                                      "'subdivide'"),
+        "more shooters than nodes": ({"parallelisation": "shooters", "V": 0,
+                                      "shooters_per_iteration": 3}, "'shooters_per_iteration'"),
+        "shooters option without shooters": ({"shooters_per_iteration": 1},
+                                             "'shooters_per_iteration'"),
         # SimGrid settings are asked of ./simulate --check-settings before anything runs.
         "unknown SimGrid setting": ({"cfg": {"bogus/name": "1"}}, "Bad config key: bogus/name"),
         "unknown SimGrid value": ({"cfg": {"network/model": "bogus"}}, "network/model must be one of LV08"),

@@ -392,6 +392,21 @@ def _cell(spec, label, sweep_name, base, where):
             if options[name] != opts.OPTIONS[name].default:
                 fail(name, f"{options[name]!r}: form_factors hemicube traces no rays; leave "
                      f"{name} at {opts.OPTIONS[name].default!r}")
+    # The shooter-centred scheme's rules, as its registration has them
+    # (src/simulation/parallelisations.cpp, check_shooters).
+    if options["parallelisation"] == "shooters":
+        if V > 0:
+            fail("V" if "V" in spec else "parallelisation",
+                 f"V={V}: parallelisation shooters runs on R nodes with V = 0 (every node holds "
+                 f"the whole scene and traces its own rays; docs/model.md, 'The shooter-centred scheme')")
+        for name in ("subdivide", "balance"):
+            if options[name]:
+                fail(name, f"{options[name]!r}: parallelisation shooters does not run it")
+        if options["render_parallel"] != opts.OPTIONS["render_parallel"].default:
+            fail("render_parallel", f"{options['render_parallel']!r}: parallelisation shooters does not run it")
+        if options["shooters_per_iteration"] > R:
+            fail("shooters_per_iteration", f"{options['shooters_per_iteration']}: at most one shooter per "
+                 f"node, and R={R}")
     return Cell(sweep=sweep_name, label=label, scene=scene_name, scene_file=str(files["scene"]),
                 scene_sha256=file_sha256(files["scene"]), platform_file=str(files["platform"]),
                 platform_sha256=file_sha256(files["platform"]),
