@@ -88,7 +88,7 @@ def figures_of(result, cell, beyond_memory=False, link_bandwidth=2.2e6):
             "nodes": o["R"] * (o["V"] + 1), "status": result["status"],
             "beyond_memory": beyond_memory, "converged": result["converged"],
             "iterations": iterations, "shots": shots, "elements": result["scene"]["elements"],
-            "patches": result["scene"]["patches"],
+            "patches": result["scene"]["patches"], "samples": o["samples"],
             "simulated_seconds": result["simulated_seconds"],
             "bytes_per_iteration": sent / iterations if iterations else 0.0,
             "bytes_per_shot": sent / shots if shots else 0.0,
@@ -174,9 +174,10 @@ def measure(results_root, jobs=2, sweep_file=SWEEP):
                            and r["V"] == 0), mine[0][0])
             _, anchor_mesh = run_cell(anchor, folder, mesh=True)
             converged_error = element_error(anchor_mesh, reference, reference_path)
-            levels[scene] = (ERROR_FACTOR * converged_error, converged_error)
+            levels[scene] = (ERROR_FACTOR * converged_error, converged_error, anchor.R, anchor.V)
             for cell, row in mine:
-                if row["status"] == "ok" and row["converged"] and shown_row(row, rows):
+                if row["status"] == "ok" and row["converged"] and row["nodes"] in NODE_COUNTS \
+                        and shown_row(row, rows):
                     jobs_.append((row, pool.submit(time_to_error, cell, row["iterations"],
                                                    levels[scene][0], folder, reference,
                                                    reference_path)))
@@ -257,7 +258,11 @@ def plot(rows, scenes, path):
                              layout="constrained")
     for ax, scene in zip(axes[0], scenes):
         base = baseline(rows, scene)
-        for (name, points), style in zip(lines_of(rows, scene).items(), ("o-", "s--", "^-")):
+        # Fixed colours and markers per line (the V = 0 line hollow and larger, as the best
+        # R x (V + 1) line lies on it wherever V = 0 is best).
+        for (name, points), (style, colour, size) in zip(
+                lines_of(rows, scene).items(),
+                (("o-", "tab:blue", 9), ("s--", "tab:orange", 5), ("^-", "tab:green", 6))):
             ok = sorted(((n, r) for n, r in points.items() if r["status"] == "ok"),
                         key=lambda p: p[0])
             if name.startswith("receivers, best") and all(r["V"] == 0 for _, r in ok):
@@ -266,7 +271,8 @@ def plot(rows, scenes, path):
                 continue
             xs = [n for n, _ in ok]
             ys = [base["simulated_seconds"] / r["simulated_seconds"] for _, r in ok]
-            line, = ax.plot(xs, ys, style, label=name)
+            ax.plot(xs, ys, style, color=colour, markersize=size, label=name,
+                    markerfacecolor="none" if size == 9 else colour)
             hollow = [(x, y) for (n, r), x, y in zip(ok, xs, ys) if r["beyond_memory"]]
             if hollow:
                 ax.plot(*zip(*hollow), "x", color="black", markersize=9)
@@ -353,6 +359,17 @@ def verdict(rows):
                     "convergence), each node a whole shot an iteration whatever R"
                     if faster else ""))
     big = sorted({r["scene"] for r in rows if r["scene"] not in ERROR_SCENES})
+    per_shot_ratios = [pick(rows, scene, "shooters", n)["simulated_seconds"]
+                       / pick(rows, scene, "receivers", n)["simulated_seconds"]
+                       for scene in big for n in NODE_COUNTS
+                       if pick(rows, scene, "shooters", n) and pick(rows, scene, "receivers", n)
+                       and pick(rows, scene, "shooters", n)["status"] == "ok"
+                       and pick(rows, scene, "receivers", n)["status"] == "ok"]
+    if per_shot_ratios:
+        parts.append(f". A shot costs the shooters no more: for the first 64 shots of "
+                     f"{' and '.join(big)} they take {min(per_shot_ratios):.2f}x to "
+                     f"{max(per_shot_ratios):.2f}x the paper's time at V = 0 (with "
+                     "--unlimited-memory)")
     never = [s for s in big if smallest_fitting_R(rows, s, "shooters") is None
              and any(r["scene"] == s and r["scheme"] == "shooters" for r in rows)]
     if never:
@@ -371,7 +388,9 @@ def markdown(rows, levels, host=None):
            "(docs/model.md, \"The shooter-centred scheme\"). `receivers`: the paper's program; "
            "`shooters`: the shooter-centred scheme of section 2.2's earlier work, one shooter "
            "per node and iteration, the radiosity increments summed over all nodes by recursive "
-           "doubling. Ray-traced form factors, M = 64; nCube2 nodes of 4 MB. R is at most the "
+           "doubling. Ray-traced form factors (M = 64 on the scenes with a reference; scene2 and "
+           "scene3 at M = 16 for host time: less computing a shot, so the exchange's share "
+           "there is larger than at M = 64); nCube2 nodes of 4 MB. R is at most the "
            "scene's patches (the Cornell box 17, scene0 52), so the shooters reach 16 and 32 "
            "nodes there and the paper's program 64 only with V > 0. Times are simulated "
            "seconds; † marks a run with `--unlimited-memory` (its node could not hold it). "
@@ -390,10 +409,10 @@ def markdown(rows, levels, host=None):
     for scene in ERROR_SCENES:
         if scene not in levels:
             continue
-        level, converged = levels[scene]
+        level, converged, anchor_R, anchor_V = levels[scene]
         out += [f"### {scene}: to convergence and to a fixed error", "",
                 f"Fixed error: element RMS at most {level:.4f} ({ERROR_FACTOR} x the paper's "
-                f"converged {converged:.4f} at R = 4, V = 0, against "
+                f"converged {converged:.4f} at R = {anchor_R}, V = {anchor_V}, against "
                 f"`analysis/reference/{scene}.json`); the time is that of the first "
                 "`--iterations` checkpoint that reaches it (an iteration is a shot for the "
                 "paper's program, R shots for the shooters).", "",
@@ -420,7 +439,9 @@ def markdown(rows, levels, host=None):
                            f"{memory_cell(row, cap)} |")
         out.append("")
     for scene in sorted({r["scene"] for r in rows} - set(ERROR_SCENES)):
-        out += [f"### {scene}: memory and the first 64 shots", "",
+        samples = sorted({r["samples"] for r in rows if r["scene"] == scene})
+        out += [f"### {scene}: memory and the first 64 shots (M = "
+                f"{', '.join(map(str, samples))})", "",
                 "| nodes | scheme | R | fits 4 MB | memory / node | s for 64 shots | "
                 "bytes / iteration | bytes / shot | wire share |",
                 "|---:|---|---:|---|---:|---:|---:|---:|---:|"]
