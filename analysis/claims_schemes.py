@@ -40,7 +40,8 @@ FIGURE = ROOT / "analysis" / "figures" / "claims_schemes_speedup.png"
 ERROR_SCENES = ("cornell-box", "scene0")
 ERROR_FACTOR = 1.1          # the fixed error: 1.1 x the paper's converged element RMS at R = 4
 NODE_COUNTS = (4, 8, 16, 32, 64)
-INCREMENT_BYTES, HEADER_BYTES = 12, 8   # platforms/cost_model.json: radiosity_increment_bytes, message header
+# platforms/cost_model.json's radiosity_increment_bytes and the message header.
+INCREMENT_BYTES, HEADER_BYTES = 12, 8
 EXIT_OUT_OF_MEMORY = 3
 TIE = 0.01                  # a time ratio within 1 % of 1 counts as level
 
@@ -399,7 +400,8 @@ def markdown(rows, levels, host=None):
     if host is not None:
         runs, summed, wall = host
         out += [f"Host time: {runs} runs of ./simulate in the results folder's claims/schemes/ "
-                f"(cells, twins, checkpoints), {summed:.0f} s summed over their result files' host_seconds"
+                f"(cells, twins, checkpoints), {summed:.0f} s summed over their result files' "
+                "host_seconds"
                 + (f"; {wall:.0f} s wall from an empty results folder, two runs at once"
                    if wall is not None else "") + ".", ""]
     out += ["![speedup](figures/claims_schemes_speedup.png)", "",
