@@ -585,7 +585,7 @@ def v0_sentences(study, others):
         if base and base.status == "ok":
             ratios.append(base.value / e.value)
     if ratios:
-        text.append(f"The hemicube (N = {hemi[0].cell.options.get('hemicube_resolution')}) takes "
+        text.append(f"The hemicube (N = {hemi[0].cell.options.get('hemicube_resolution')}) is "
                     f"{factors_range(ratios)} as the paper's ray-traced form factors ({paper}) "
                     f"a shot at R={hemi[0].cell.R} V={hemi[0].cell.V}, over every machine and "
                     "scene that ran both.")
