@@ -86,6 +86,7 @@ class Entry:
     overhead: float = 0.0
     waiting: float = 0.0
     bytes_sent: float = 0.0   # over all nodes and iterations
+    least_node_share: float = None   # the smallest (overhead + waiting) share of one node
     iterations: int = None
 
     @property
@@ -160,6 +161,10 @@ def entries(sweep, results_dir):
                 entry.overhead += node["overhead_seconds"]
                 entry.waiting += node["waiting_seconds"]
                 entry.bytes_sent += node.get("bytes_sent", 0)
+                total = node["compute_seconds"] + node["overhead_seconds"] + node["waiting_seconds"]
+                if total:
+                    mine = (node["overhead_seconds"] + node["waiting_seconds"]) / total
+                    entry.least_node_share = min(mine, entry.least_node_share or mine)
         found.append(entry)
     return found
 
@@ -508,7 +513,7 @@ def v0_section(study, others):
              "the two are compared **per shot: seconds per shot = seconds per iteration / "
              "shooters per iteration** (1 for the paper's program and the hemicube, R for the "
              "scheme). Communication: overhead + waiting as a share of node time (in parentheses "
-             "the overhead alone), as in section 3; exchanged: the bytes all nodes send an "
+             "the overhead alone, then the share of the node that waited least), as in section 3; waiting includes waiting on the other nodes' work, which in the scheme is the slowest shot of the iteration; exchanged: the bytes all nodes send an "
              "iteration (`nodes[].bytes_sent`), which for the scheme is its increment exchange.",
              ""]
     for scene in ordered(e.scene for e in others):
@@ -526,7 +531,8 @@ def v0_section(study, others):
                               and e.scene == scene and e.row == row), None) for m in methods]
                 shots = [seconds(e.per_shot) if e and e.status == "ok"
                          else (cell_text(e) if e else "") for e in got]
-                comm = [f"{percent(e.communication_share)} ({percent(e.share('overhead'))}), "
+                comm = [f"{percent(e.communication_share)} ({percent(e.share('overhead'))}; "
+                        f"least node {percent(e.least_node_share)}), "
                         f"{megabytes(e.bytes_per_iteration)}" if e and e.status == "ok"
                         else (cell_text(e) if e else "") for e in got[len(paper):]]
                 lines.append(f"| {machine} | " + " | ".join(shots + comm) + " |")
@@ -545,8 +551,9 @@ def v0_sentences(study, others):
         low = min(shooters, key=lambda e: e.communication_share)
         large = [e for e in shooters if e.communication_share >= LARGE_SHARE]
         text.append(
-            f"The shooter-centred scheme's exchange weighs most on the {top.machine} with "
-            f"{top.scene}: {percent(top.communication_share)} of node time in communication "
+            f"The shooter-centred scheme's share of node time in communication (overhead + "
+            f"waiting) is largest on the {top.machine} with {top.scene}: "
+            f"{percent(top.communication_share)} "
             f"({percent(top.share('overhead'))} overhead) for "
             f"{megabytes(top.bytes_per_iteration)} exchanged an iteration"
             + (f", and least on the {low.machine} with {low.scene}: "
@@ -564,6 +571,30 @@ def v0_sentences(study, others):
         else:
             text.append(f"It stays below a quarter of node time on every machine and scene "
                         "that ran: the scheme, like the paper's program, is compute-bound.")
+        spreads = []
+        for scene in ordered(e.scene for e in shooters):
+            shares = [e for e in shooters if e.scene == scene]
+            hi = max(shares, key=lambda e: e.communication_share)
+            lo = min(shares, key=lambda e: e.communication_share)
+            if hi is not lo:
+                spreads.append((100 * (hi.communication_share - lo.communication_share), hi, lo))
+        if spreads and max(p[0] for p in spreads) < SAME_WAITING:
+            text.append(
+                "The share is the same on every machine for each scene, within "
+                f"{max(p[0] for p in spreads):.2g} percentage points ("
+                + ", ".join(f"{hi.scene} {100 * lo.communication_share:.2f} % to "
+                            f"{100 * hi.communication_share:.2f} %" for _, hi, lo in spreads)
+                + ", the overhead at most "
+                f"{percent(max(e.share('overhead') for e in shooters))}): the nodes wait on the "
+                "iteration's slowest shot (each shoots another patch), not on the exchange, which "
+                "does not show on any machine, even at "
+                f"{megabytes(max(e.bytes_per_iteration for e in shooters))} an iteration.")
+        elif spreads:
+            d, hi, lo = max(spreads, key=lambda p: p[0])
+            text.append(f"The share differs between machines by up to {d:.0f} percentage "
+                        f"points ({hi.scene}: {percent(hi.communication_share)} on the "
+                        f"{hi.machine} against {percent(lo.communication_share)} on the "
+                        f"{lo.machine}): there the network shows.")
         pairs = []
         for e in shooters:
             base = study.get(e.machine, paper, e.scene, e.row)
