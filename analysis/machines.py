@@ -576,7 +576,7 @@ def v0_sentences(study, others):
             shares = [e for e in shooters if e.scene == scene]
             hi = max(shares, key=lambda e: e.communication_share)
             lo = min(shares, key=lambda e: e.communication_share)
-            if hi is not lo:
+            if len(shares) > 1:
                 spreads.append((100 * (hi.communication_share - lo.communication_share), hi, lo))
         if spreads and max(p[0] for p in spreads) < SAME_WAITING:
             text.append(
