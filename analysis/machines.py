@@ -547,30 +547,6 @@ def v0_sentences(study, others):
     shooters = [e for e in others if e.status == "ok"
                 and e.cell.options.get("parallelisation") == "shooters"]
     if shooters:
-        top = max(shooters, key=lambda e: e.communication_share)
-        low = min(shooters, key=lambda e: e.communication_share)
-        large = [e for e in shooters if e.communication_share >= LARGE_SHARE]
-        text.append(
-            f"The shooter-centred scheme's share of node time in communication (overhead + "
-            f"waiting) is largest on the {top.machine} with {top.scene}: "
-            f"{percent(top.communication_share)} "
-            f"({percent(top.share('overhead'))} overhead) for "
-            f"{megabytes(top.bytes_per_iteration)} exchanged an iteration"
-            + (f", and least on the {low.machine} with {low.scene}: "
-               f"{percent(low.communication_share)} for {megabytes(low.bytes_per_iteration)}."
-               if low is not top else "."))
-        if large:
-            text.append(
-                f"It is a large share (a quarter of node time or more) on "
-                + "; ".join(f"the {e.machine} with {e.scene} ({percent(e.communication_share)})"
-                            for e in large)
-                + (f", and below a quarter in the other {len(shooters) - len(large)} of the "
-                   f"{len(shooters)} cells that ran, where the scheme, like the paper's program, "
-                   "is compute-bound." if len(large) < len(shooters) else
-                   ": every cell of it that ran."))
-        else:
-            text.append(f"It stays below a quarter of node time on every machine and scene "
-                        "that ran: the scheme, like the paper's program, is compute-bound.")
         spreads = []
         for scene in ordered(e.scene for e in shooters):
             shares = [e for e in shooters if e.scene == scene]
@@ -578,9 +554,36 @@ def v0_sentences(study, others):
             lo = min(shares, key=lambda e: e.communication_share)
             if len(shares) > 1:
                 spreads.append((100 * (hi.communication_share - lo.communication_share), hi, lo))
-        if spreads and max(p[0] for p in spreads) < SAME_WAITING:
+        same = bool(spreads) and max(p[0] for p in spreads) < SAME_WAITING
+        if not same:
+            top = max(shooters, key=lambda e: e.communication_share)
+            low = min(shooters, key=lambda e: e.communication_share)
+            large = [e for e in shooters if e.communication_share >= LARGE_SHARE]
             text.append(
-                "The share is the same on every machine for each scene, within "
+                f"The shooter-centred scheme's share of node time in communication (overhead + "
+                f"waiting) is largest on the {top.machine} with {top.scene}: "
+                f"{percent(top.communication_share)} "
+                f"({percent(top.share('overhead'))} overhead) for "
+                f"{megabytes(top.bytes_per_iteration)} exchanged an iteration"
+                + (f", and least on the {low.machine} with {low.scene}: "
+                   f"{percent(low.communication_share)} for {megabytes(low.bytes_per_iteration)}."
+                   if low is not top else "."))
+            if large:
+                text.append(
+                    f"It is a large share (a quarter of node time or more) on "
+                    + "; ".join(f"the {e.machine} with {e.scene} ({percent(e.communication_share)})"
+                                for e in large)
+                    + (f", and below a quarter in the other {len(shooters) - len(large)} of the "
+                       f"{len(shooters)} cells that ran, where the scheme, like the paper's program, "
+                       "is compute-bound." if len(large) < len(shooters) else
+                       ": every cell of it that ran."))
+            else:
+                text.append(f"It stays below a quarter of node time on every machine and scene "
+                            "that ran: the scheme, like the paper's program, is compute-bound.")
+        if same:
+            text.append(
+                "The shooter-centred scheme's share of node time in communication (overhead + "
+                "waiting) is the same on every machine for each scene, within "
                 f"{max(p[0] for p in spreads):.2g} percentage points ("
                 + ", ".join(f"{hi.scene} {100 * lo.communication_share:.2f} % to "
                             f"{100 * hi.communication_share:.2f} %" for _, hi, lo in spreads)
