@@ -512,7 +512,9 @@ def v0_section(study, others):
              "shoots R (one a node) and then sums every element's increment over the nodes, so "
              "the two are compared **per shot: seconds per shot = seconds per iteration / "
              "shooters per iteration** (1 for the paper's program and the hemicube, R for the "
-             "scheme). Communication: overhead + waiting as a share of node time (in parentheses "
+             "scheme: the figure of an iteration where every node shoots; the first iteration "
+             "shoots only the patches with light to shoot, the lights, fewer than R, in about "
+             "the same time, so the result's own shots are fewer than iterations x R). Communication: overhead + waiting as a share of node time (in parentheses "
              "the overhead alone, then the share of the node that waited least), as in section 3; waiting includes waiting on the other nodes' work, which in the scheme is the slowest shot of the iteration; exchanged: the bytes all nodes send an "
              "iteration (`nodes[].bytes_sent`), which for the scheme is its increment exchange.",
              ""]
