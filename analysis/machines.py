@@ -7,10 +7,12 @@ usage: /usr/bin/python3 analysis/machines.py [--run] [--results DIR] [--sweep FI
 
 The sweep file (default experiments/machines/table4.yaml) is the one list of the study: its
 grid's `platform` entries are the machines (the first is the reference every figure is
-normalised to), every other option that varies between its cells makes a method (today the
-visibility: brute force, the octree; a later form factor or parallelisation is one more grid
-line and appears here as one more method without a change to this script), and R, V and the
-scene are Table 4's rows. With --run the cells without a finished result in DIR (default
+normalised to), every other option that varies between its cells (but the iterations) makes a
+method (the visibility: brute force, the octree; the hemicube; the shooter-centred scheme), and
+R, V and the scene are Table 4's rows. A method whose cells all have V = 0 (the hemicube, the
+shooter-centred scheme) is shown beside Table 4's V = 0 row in a section of its own, per shot
+(seconds per iteration / shooters per iteration), with its communication share and the bytes
+its nodes send an iteration; Table 4's tables, sentences and figure keep the other methods. With --run the cells without a finished result in DIR (default
 results/machines/) run first through experiments/sweep; without it, what is in DIR is read
 and a cell without a result is shown as not run.
 
@@ -54,6 +56,11 @@ SAME_WAITING = 1.0
 # The options a cell's method is made of even when they do not vary (so a study of one method
 # still names it); any other option that varies between the cells joins them.
 METHOD_OPTIONS = ("visibility",)
+# Options that may differ between cells without making a method: fewer iterations for a costly
+# cell change how many iterations are averaged, not the program.
+NOT_METHOD = ("iterations",)
+# A share of node time in communication from which the page calls it a large share.
+LARGE_SHARE = 0.25
 
 
 def rel(path):
@@ -78,6 +85,25 @@ class Entry:
     compute: float = 0.0   # node-seconds, summed over the nodes
     overhead: float = 0.0
     waiting: float = 0.0
+    bytes_sent: float = 0.0   # over all nodes and iterations
+    least_node_share: float = None   # the smallest (overhead + waiting) share of one node
+    iterations: int = None
+
+    @property
+    def shots_per_iteration(self):
+        """Patches shot an iteration: one in the paper's program, R (or
+        --shooters-per-iteration) in the shooter-centred scheme."""
+        if self.cell.options.get("parallelisation") != "shooters":
+            return 1
+        return self.cell.options.get("shooters_per_iteration") or self.cell.R
+
+    @property
+    def per_shot(self):
+        return self.value / self.shots_per_iteration if self.status == "ok" else None
+
+    @property
+    def bytes_per_iteration(self):
+        return self.bytes_sent / self.iterations if self.status == "ok" and self.iterations else None
 
     @property
     def scene(self):
@@ -103,9 +129,18 @@ def machine_name(platform_file):
 
 
 def method_keys(cells):
-    varying = {name for name in cells[0].options if name not in ("R", "V")
+    varying = {name for name in cells[0].options if name not in ("R", "V") + NOT_METHOD
                and len({repr(c.options[name]) for c in cells}) > 1}
     return [name for name in cells[0].options if name in varying or name in METHOD_OPTIONS]
+
+
+def method_of(cell, keys):
+    """The cell's method: its METHOD_OPTIONS' values, then the other varying options' values
+    where they differ from ./simulate's default ("brute-force hemicube", "octree shooters")."""
+    from ncube import options as opts
+    keys = [k for k in METHOD_OPTIONS if k in keys] + [k for k in keys if k not in METHOD_OPTIONS]
+    return " ".join(str(cell.options[k]) for k in keys
+                    if k in METHOD_OPTIONS or cell.options[k] != opts.OPTIONS[k].default)
 
 
 def entries(sweep, results_dir):
@@ -115,15 +150,21 @@ def entries(sweep, results_dir):
         result = results.read(Path(results_dir) / cell.file)
         finished = result is not None and results.mismatch(result, cell) is None
         entry = Entry(cell=cell, machine=machine_name(cell.platform_file),
-                      method=" ".join(str(cell.options[k]) for k in keys),
+                      method=method_of(cell, keys),
                       status=result["status"] if finished else "missing")
         if finished:
             entry.value = results.measure(result, sweep.measure)
             entry.oom = result.get("out_of_memory")
+            entry.iterations = result.get("iterations")
             for node in result.get("nodes", []) if entry.status == "ok" else []:
                 entry.compute += node["compute_seconds"]
                 entry.overhead += node["overhead_seconds"]
                 entry.waiting += node["waiting_seconds"]
+                entry.bytes_sent += node.get("bytes_sent", 0)
+                total = node["compute_seconds"] + node["overhead_seconds"] + node["waiting_seconds"]
+                if total:
+                    mine = (node["overhead_seconds"] + node["waiting_seconds"]) / total
+                    entry.least_node_share = min(mine, entry.least_node_share or mine)
         found.append(entry)
     return found
 
@@ -243,13 +284,16 @@ class Study:
         return without.status == "out_of_memory" or with_v.value < without.value
 
 
-def header(study, args, missing):
+def header(study, args, missing, others=()):
     sweep_file = shown(study.sweep.file)
     lines = ["# What porting would have meant: the paper's Table 4 on other machines", "",
              f"Generated by `/usr/bin/python3 analysis/machines.py` from the sweep "
              f"`{sweep_file}` (issue 32): Table 4's configurations (R x (V + 1) = 64 nodes, "
              f"64 samples, the mean of the first 20 iterations) of "
-             + ", ".join(study.scenes) + " with " + " and ".join(study.methods) + " on "
+             + ", ".join(study.scenes) + " with " + " and ".join(study.methods)
+             + (" (and at V = 0 only, with their own iterations: "
+                + " and ".join(ordered(e.method for e in others)) + ", section 6)" if others else "")
+             + " on "
              + ", ".join(study.machines) + " (their platform files and the start of their "
              "SHA-256: " + ", ".join(f"`{shown(f)}` {h.removeprefix('sha256:')[:12]}"
                                      for f, h in ordered((c.platform_file, c.platform_sha256)
@@ -263,7 +307,7 @@ def header(study, args, missing):
              f"One cell by hand, e.g. the last: `{simulate_command(study.sweep.cells[-1])}`.",
              ""]
     if missing:
-        lines += [f"**{missing} of {len(study.found)} cells have no finished result in "
+        lines += [f"**{missing} of {len(study.found) + len(others)} cells have no finished result in "
                   f"`{shown(args.results)}`** (shown as \"not run\"): run with `--run`.", ""]
     return lines
 
@@ -442,6 +486,153 @@ def memory_section(study):
     return lines + ([""] if any_oom or others else ["", "Nothing runs out of memory.", ""])
 
 
+def v0_methods(found):
+    """The methods that run at V = 0 only (the hemicube, the shooter-centred scheme): they are
+    shown beside Table 4's V = 0 row, not as Table 4's methods."""
+    return [m for m in ordered(e.method for e in found)
+            if all(e.cell.V == 0 for e in found if e.method == m)]
+
+
+def megabytes(n):
+    """Bytes as kB or MB, three significant digits."""
+    return f"{number(n / 1e3)} kB" if n < 1e6 else f"{number(n / 1e6)} MB"
+
+
+def v0_section(study, others):
+    """The V = 0 methods beside the paper's program at the same R (Table 4's V = 0 row)."""
+    if not others:
+        return []
+    methods = ordered(e.method for e in others)
+    lines = ["## 6. At V = 0: the hemicube and the shooter-centred scheme", "",
+             "Beside Table 4's V = 0 row, the methods that run with V = 0 only "
+             "(`docs/model.md`, \"The hemicube\" and \"The shooter-centred scheme\"), each "
+             "with the iterations its line of the sweep gives (fewer than Table 4's 20 where a "
+             "cell is costly on the host; the sweep file says why the mean does not change). "
+             "The paper's program shoots one patch an iteration; the shooter-centred scheme "
+             "shoots R (one a node) and then sums every element's increment over the nodes, so "
+             "the two are compared **per shot: seconds per shot = seconds per iteration / "
+             "shooters per iteration** (1 for the paper's program and the hemicube, R for the "
+             "scheme: the figure of an iteration where every node shoots; the first iteration "
+             "shoots only the patches with light to shoot, the lights, fewer than R, in about "
+             "the same time, so the result's own shots are fewer than iterations x R). Communication: overhead + waiting as a share of node time (in parentheses "
+             "the overhead alone, then the share of the node that waited least), as in section 3; waiting includes waiting on the other nodes' work, which in the scheme is the slowest shot of the iteration; exchanged: the bytes all nodes send an "
+             "iteration (`nodes[].bytes_sent`), which for the scheme is its increment exchange.",
+             ""]
+    for scene in ordered(e.scene for e in others):
+        rows = ordered(e.row for e in others if e.scene == scene)
+        for row in rows:
+            paper = [m for m in study.methods if study.get(study.reference, m, scene, row)]
+            lines += [f"**{scene} R={row[0]} V={row[1]}**", "",
+                      "| machine | " + " | ".join(f"{m}: s a shot" for m in paper + methods)
+                      + " | " + " | ".join(f"{m}: communication, exchanged an iteration"
+                                           for m in methods) + " |",
+                      "|---|" + "---:|" * (len(paper) + 2 * len(methods))]
+            for machine in study.machines:
+                got = [study.get(machine, m, scene, row) for m in paper]
+                got += [next((e for e in others if e.machine == machine and e.method == m
+                              and e.scene == scene and e.row == row), None) for m in methods]
+                shots = [seconds(e.per_shot) if e and e.status == "ok"
+                         else (cell_text(e) if e else "") for e in got]
+                comm = [f"{percent(e.communication_share)} ({percent(e.share('overhead'))}; "
+                        f"least node {percent(e.least_node_share)}), "
+                        f"{megabytes(e.bytes_per_iteration)}" if e and e.status == "ok"
+                        else (cell_text(e) if e else "") for e in got[len(paper):]]
+                lines.append(f"| {machine} | " + " | ".join(shots + comm) + " |")
+            lines.append("")
+    lines += v0_sentences(study, others)
+    return lines
+
+
+def v0_sentences(study, others):
+    text = []
+    paper = study.methods[0]
+    shooters = [e for e in others if e.status == "ok"
+                and e.cell.options.get("parallelisation") == "shooters"]
+    if shooters:
+        spreads = []
+        for scene in ordered(e.scene for e in shooters):
+            shares = [e for e in shooters if e.scene == scene]
+            hi = max(shares, key=lambda e: e.communication_share)
+            lo = min(shares, key=lambda e: e.communication_share)
+            if len(shares) > 1:
+                spreads.append((100 * (hi.communication_share - lo.communication_share), hi, lo))
+        same = bool(spreads) and max(p[0] for p in spreads) < SAME_WAITING
+        if not same:
+            top = max(shooters, key=lambda e: e.communication_share)
+            low = min(shooters, key=lambda e: e.communication_share)
+            large = [e for e in shooters if e.communication_share >= LARGE_SHARE]
+            text.append(
+                f"The shooter-centred scheme's share of node time in communication (overhead + "
+                f"waiting) is largest on the {top.machine} with {top.scene}: "
+                f"{percent(top.communication_share)} "
+                f"({percent(top.share('overhead'))} overhead) for "
+                f"{megabytes(top.bytes_per_iteration)} exchanged an iteration"
+                + (f", and least on the {low.machine} with {low.scene}: "
+                   f"{percent(low.communication_share)} for {megabytes(low.bytes_per_iteration)}."
+                   if low is not top else "."))
+            if large:
+                text.append(
+                    f"It is a large share (a quarter of node time or more) on "
+                    + "; ".join(f"the {e.machine} with {e.scene} ({percent(e.communication_share)})"
+                                for e in large)
+                    + (f", and below a quarter in the other {len(shooters) - len(large)} of the "
+                       f"{len(shooters)} cells that ran, where the scheme, like the paper's program, "
+                       "is compute-bound." if len(large) < len(shooters) else
+                       ": every cell of it that ran."))
+            else:
+                text.append(f"It stays below a quarter of node time on every machine and scene "
+                            "that ran: the scheme, like the paper's program, is compute-bound.")
+        if same:
+            text.append(
+                "The shooter-centred scheme's share of node time in communication (overhead + "
+                "waiting) is the same on every machine for each scene, within "
+                f"{max(p[0] for p in spreads):.2g} percentage points ("
+                + ", ".join(f"{hi.scene} {100 * lo.communication_share:.2f} % to "
+                            f"{100 * hi.communication_share:.2f} %" for _, hi, lo in spreads)
+                + ", the overhead at most "
+                f"{percent(max(e.share('overhead') for e in shooters))}): the nodes wait on the "
+                "iteration's slowest shot (each shoots another patch), not on the exchange, which "
+                "does not show on any machine, even at "
+                f"{megabytes(max(e.bytes_per_iteration for e in shooters))} an iteration.")
+        elif spreads:
+            d, hi, lo = max(spreads, key=lambda p: p[0])
+            text.append(f"The share differs between machines by up to {d:.0f} percentage "
+                        f"points ({hi.scene}: {percent(hi.communication_share)} on the "
+                        f"{hi.machine} against {percent(lo.communication_share)} on the "
+                        f"{lo.machine}): there the network shows.")
+        pairs = []
+        for e in shooters:
+            base = study.get(e.machine, paper, e.scene, e.row)
+            if base and base.status == "ok":
+                pairs.append((base.per_shot / e.per_shot, e))
+        if pairs:
+            best, worst = max(pairs, key=lambda p: p[0]), min(pairs, key=lambda p: p[0])
+            text.append(
+                f"Per shot, against the paper's program ({paper}) at the same R and V, the "
+                f"scheme is {factor_text(best[0])} on the {best[1].machine} with "
+                f"{best[1].scene} and {factor_text(worst[0])} on the {worst[1].machine} with "
+                f"{worst[1].scene}.")
+    oom = [e for e in others if e.status == "out_of_memory"]
+    if oom:
+        text.append("Out of memory (exit 3, a finding): " + "; ".join(
+            f"{e.method} {e.scene} on the {e.machine}"
+            + (f" (node {e.oom['node']} needs {e.oom['needed_bytes']:,.0f} of "
+               f"{e.oom['available_bytes']:,.0f} bytes)" if e.oom else "")
+            for e in oom) + ".")
+    hemi = [e for e in others if e.status == "ok" and e.cell.options.get("form_factors") == "hemicube"]
+    ratios = []
+    for e in hemi:
+        base = study.get(e.machine, paper, e.scene, e.row)
+        if base and base.status == "ok":
+            ratios.append(base.value / e.value)
+    if ratios:
+        text.append(f"The hemicube (N = {hemi[0].cell.options.get('hemicube_resolution')}) is "
+                    f"{factors_range(ratios)} as the paper's ray-traced form factors ({paper}) "
+                    f"a shot at R={hemi[0].cell.R} V={hemi[0].cell.V}, over every machine and "
+                    "scene that ran both.")
+    return [" ".join(text), ""] if text else []
+
+
 def figure(study, folder):
     from matplotlib.ticker import NullLocator
     from ncube import plotting
@@ -487,7 +678,7 @@ def figure(study, folder):
 
 
 def figure_section(study, path, output):
-    return ["## 6. Seconds per iteration against R, normalised to the " + study.reference, "",
+    return ["## 7. Seconds per iteration against R, normalised to the " + study.reference, "",
             f"Each machine's seconds per iteration over the {study.reference}'s for the same "
             "scene, configuration and method (the " + study.reference + " is the flat line "
             "at 1; lower is faster; a missing point did not fit in memory on one of the two).",
@@ -497,7 +688,7 @@ def figure_section(study, path, output):
 
 def porting_section(study):
     """Plain sentences, each from the figures above."""
-    lines = ["## 7. What porting would have meant", ""]
+    lines = ["## 8. What porting would have meant", ""]
     ref = study.reference
     lines += summary_sentences(study)
     for machine in study.machines[1:]:
@@ -655,12 +846,15 @@ def main():
     if args.run:
         run_sweep(args.sweep, results_dir)
     found = entries(sweep, results_dir)
-    study = Study(sweep, found)
+    v0_only = v0_methods(found)
+    study = Study(sweep, [e for e in found if e.method not in v0_only])
+    others = [e for e in found if e.method in v0_only]
     missing = sum(e.status == "missing" for e in found)
     path = figure(study, args.figures)
-    lines = (header(study, args, missing) + tables_section(study) + best_section(study)
+    lines = (header(study, args, missing, others) + tables_section(study) + best_section(study)
              + communication_section(study) + bottleneck_section(study)
-             + memory_section(study) + figure_section(study, path, args.output)
+             + memory_section(study) + v0_section(study, others)
+             + figure_section(study, path, args.output)
              + porting_section(study))
     args.output.write_text("\n".join(lines).rstrip() + "\n")
     print(f"wrote {args.output}, {path}" + (f"; {missing} cells not run" if missing else ""))

@@ -26,14 +26,27 @@ sweep = load(path)
 rows = {("scene1", 64 // k, k - 1) for k in (16, 8, 4, 2, 1)}
 rows = rows | {("scene2", R, V) for _, R, V in rows} | {("scene3", R, V) for _, R, V in rows}
 rows.add(("scene3", 5, 11))
-got = {}
+got, v0_only = {}, {}
 for cell in sweep.cells:
-    got.setdefault((cell.scene, cell.R, cell.V), set()).add(
-        (cell.platform_file, cell.options["visibility"]))
+    o = cell.options
+    if o["form_factors"] == "hemicube" or o["parallelisation"] == "shooters":
+        # the V = 0 methods: every machine, each scene at R=64 V=0, fewer iterations
+        assert (cell.R, cell.V) == (64, 0), cell
+        method = (o["form_factors"], o["parallelisation"], o["iterations"], o["visibility"])
+        assert method in {("hemicube", "receivers", 5, "brute-force"),
+                          ("ray-traced", "shooters", 3, "brute-force")}, method
+        assert o["hemicube_resolution"] == 100 and o["hemicube_placement"] == "centre"
+        v0_only.setdefault(method, set()).add((cell.scene, cell.platform_file))
+        continue
+    assert o["iterations"] == 20, cell
+    got.setdefault((cell.scene, cell.R, cell.V), set()).add((cell.platform_file, o["visibility"]))
 assert set(got) == rows, sorted(set(got) ^ rows)
 for key, runs in got.items():
     assert len(runs) == 2 * len(machines), (key, len(runs))
-assert len(sweep.cells) == 16 * 2 * len(machines)
+assert len(v0_only) == 2, v0_only
+for method, runs in v0_only.items():
+    assert len(runs) == 3 * len(machines), (method, len(runs))
+assert len(sweep.cells) == 16 * 2 * len(machines) + 2 * 3 * len(machines)
 PY
 
 # 2. Groups of keys in a grid.
@@ -75,11 +88,19 @@ name: canned
 options: {samples: 64, iterations: 20}
 grid:
   platform: [ncube2.json, ./fat.xml, ./bigmem.xml, ./slow.xml]
-  method: [{visibility: brute-force}, {visibility: octree}]
-  row: [{scene: scene1, R: 4, V: 15}, {scene: scene1, R: 16, V: 3}, {scene: scene1, R: 64, V: 0}]
+  configuration:
+    - {visibility: brute-force, scene: scene1, R: 4, V: 15}
+    - {visibility: brute-force, scene: scene1, R: 16, V: 3}
+    - {visibility: brute-force, scene: scene1, R: 64, V: 0}
+    - {visibility: octree, scene: scene1, R: 4, V: 15}
+    - {visibility: octree, scene: scene1, R: 16, V: 3}
+    - {visibility: octree, scene: scene1, R: 64, V: 0}
+    - {form_factors: hemicube, scene: scene1, R: 64, V: 0, iterations: 5}
+    - {parallelisation: shooters, scene: scene1, R: 64, V: 0, iterations: 3}
 EOF
-write_results() {  # $1: fat's brute-force R=64 V=0 seconds
-/usr/bin/python3 - "$root" "$work" "$1" <<'PY'
+write_results() {  # $1: fat's brute-force R=64 V=0 seconds; $2: "same": every machine's
+                  # shooter-centred cell has bigmem's node split
+/usr/bin/python3 - "$root" "$work" "$1" "${2:-}" <<'PY'
 import json, os, sys
 sys.path.insert(0, sys.argv[1] + "/analysis")
 from ncube.sweep import load
@@ -89,17 +110,30 @@ times = {("ncube2", "brute-force"): [40, 30, 50], ("ncube2", "octree"): [OOM, 10
          ("fat", "brute-force"): [10, 6, float(sys.argv[3])], ("fat", "octree"): [4, 2.5, 2],
          ("bigmem", "brute-force"): [8, 5, 10], ("bigmem", "octree"): [1, 2, 4],
          ("slow", "brute-force"): [80, 60, 100], ("slow", "octree"): [OOM, 20, 24]}
+# The V = 0 methods (R=64 V=0), seconds per iteration and node split (compute, overhead, waiting):
+hemicube = {"ncube2": 25, "fat": 1, "bigmem": 5, "slow": 50}
+shooters = {"ncube2": (640, (90, 5, 5)), "fat": (128, (20, 10, 70)), "bigmem": (320, (60, 2, 38)),
+            "slow": (OOM, None)}
+if sys.argv[4] == "same":
+    shooters = {m: (v, split and (60, 2, 38)) for m, (v, split) in shooters.items()}
 for cell in load(work + "/study.yaml").cells:
     machine = os.path.basename(cell.platform_file).split(".")[0]
-    value = times[(machine, cell.options["visibility"])][[4, 16, 64].index(cell.R)]
-    split = (30, 10, 60) if (machine, cell.R, cell.options["visibility"]) == ("fat", 64, "octree") \
-        else (90, 5, 5)
+    o, sent = cell.options, 0
+    if o["form_factors"] == "hemicube":
+        value, split, sent = hemicube[machine], (90, 5, 5), 6000
+    elif o["parallelisation"] == "shooters":
+        (value, split), sent = shooters[machine], 1500000
+    else:
+        value = times[(machine, cell.options["visibility"])][[4, 16, 64].index(cell.R)]
+        split = (30, 10, 60) if (machine, cell.R, cell.options["visibility"]) == ("fat", 64, "octree") \
+            else (90, 5, 5)
     result = {"schema_version": 2, "status": "ok" if value else "out_of_memory",
-              "config": cell.config_fields(), "iterations": 20 if value else 0,
+              "config": cell.config_fields(), "iterations": o["iterations"] if value else 0,
               "converged": False, "host_seconds": 0.0, "counts": {},
               "simulated_seconds": 20 * value if value else 0.0, "seconds_per_iteration": value,
               "nodes": [{"node": n, "compute_seconds": split[0] / 2, "overhead_seconds": split[1] / 2,
-                         "waiting_seconds": split[2] / 2} for n in range(2)] if value else [],
+                         "waiting_seconds": split[2] / 2, "bytes_sent": sent}
+                        for n in range(2)] if value else [],
               "provenance": {"scene": {"sha256": cell.scene_sha256},
                              "platform": {"sha256": cell.platform_sha256, "simgrid_config": {}},
                              "cost_model": {"sha256": cell.cost_model_sha256},
@@ -150,6 +184,24 @@ has "**slow**: the same program runs Table 4's configurations 2 times as slow as
 has "| slow | R=16 V=3 octree: 20 s (2 times as slow) |"
 has "Whether visibility processors pay is the same as on the nCube2 for every scene and method."
 has "![seconds per iteration against R, normalised](figures/machines_time_vs_R.png)"
+# The V = 0 methods, per shot (the scheme: seconds an iteration / 64 shots): nCube2 640/64 = 10,
+# fat 128/64 = 2, bigmem 320/64 = 5; against brute force at R=64 V=0 (50, 5, 10): 5, 2.5 and 2
+# times as fast. Exchanged: 2 nodes x 1.5 MB over 3 iterations = 1 MB an iteration (the
+# hemicube's 2 x 6,000 bytes over 5: 2.4 kB). Communication: fat (20, 10, 70) 80 % (10 %),
+# bigmem (60, 2, 38) 40 % (2.0 %): a quarter or more; nCube2 10 %. Hemicube against brute
+# force: 50/25, 5/1, 10/5, 100/50 = 2 to 5 times as fast.
+has "| machine | brute-force: s a shot | octree: s a shot | brute-force hemicube: s a shot | brute-force shooters: s a shot | brute-force hemicube: communication, exchanged an iteration | brute-force shooters: communication, exchanged an iteration |"
+has "| nCube2 | 50 | 12 | 25 | 10 | 10 % (5.0 %; least node 10 %), 2.4 kB | 10 % (5.0 %; least node 10 %), 1 MB |"
+has "| fat | 5 | 2 | 1 | 2 | 10 % (5.0 %; least node 10 %), 2.4 kB | 80 % (10 %; least node 80 %), 1 MB |"
+has "| slow | 100 | 24 | 50 | out of memory | 10 % (5.0 %; least node 10 %), 2.4 kB | out of memory |"
+has "The share differs between machines by up to 70 percentage points (scene1: 80 % on the fat against 10 % on the nCube2): there the network shows."
+has "seconds per shot = seconds per iteration / shooters per iteration"
+has "The shooter-centred scheme's share of node time in communication (overhead + waiting) is largest on the fat with scene1: 80 % (10 % overhead) for 1 MB exchanged an iteration, and least on the nCube2 with scene1: 10 % for 1 MB."
+has "It is a large share (a quarter of node time or more) on the fat with scene1 (80 %); the bigmem with scene1 (40 %), and below a quarter in the other 1 of the 3 cells that ran"
+has "the scheme is 5 times as fast on the nCube2 with scene1 and 2 times as fast on the bigmem with scene1."
+has "Out of memory (exit 3, a finding): brute-force shooters scene1 on the slow (node 0 needs 4,317,648 of 4,194,304 bytes)."
+has "The hemicube (N = 100) is 2 to 5 times as fast as the paper's ray-traced form factors (brute-force) a shot at R=64 V=0"
+lacks "| nCube2 | brute-force hemicube |"   # the V = 0 methods stay out of Table 4's tables
 cp "$work/machines.md" "$work/first.md"
 analyse
 cmp -s "$work/machines.md" "$work/first.md" || fail "the same results gave another page"
@@ -163,6 +215,13 @@ has "* scene1, brute-force: on the nCube2 V > 0 pays; the same on every other ma
 has "Visibility processors stop paying for scene1 with octree."
 has "4 to 7.14 times as fast as on the nCube2:"
 lacks "scene1 with brute-force, scene1 with octree"
+
+# The same share of the scheme on every machine: waiting on the slowest shot, not the network.
+write_results 7 same
+analyse
+has "The shooter-centred scheme's share of node time in communication (overhead + waiting) is the same on every machine for each scene, within 0 percentage points (scene1 40.00 % to 40.00 %, the overhead at most 2.0 %): the nodes wait on the iteration's slowest shot (each shoots another patch), not on the exchange, which does not show on any machine, even at 1 MB an iteration."
+lacks "The share differs between machines"
+lacks "is largest on"
 
 # A cell without a result is "not run", not out of memory.
 rm "$work"/results/cells/scene1-R16-V3-*.json
