@@ -344,7 +344,7 @@ def markdown(rows, references, sweep_files, picture_labels=(), schemes=None):
     out += ["## The second claim: receivers against shooters", ""]
     out += [schemes.rstrip(), ""] if schemes else [
         "2. *No need to distribute radiosity values after the form factors* (section 6): "
-        "not measured here (`analysis/claims_schemes.py` is not there).", ""]
+        "not measured here (`analysis/claims_schemes.py` not there, or `--no-schemes`).", ""]
     return "\n".join(out)
 
 
@@ -359,6 +359,8 @@ def main():
                         help="sweep files of the cells to picture side by side (none: no pictures)")
     parser.add_argument("--pictures-figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_pictures.png")
+    parser.add_argument("--no-schemes", action="store_true",
+                        help="leave out the second claim's section (analysis/claims_schemes.py)")
     parser.add_argument("--out", type=Path, default=ROOT / "analysis" / "claims.md")
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
@@ -383,10 +385,11 @@ def main():
         print(f"claims: {e}", file=sys.stderr)
         return 4
     plot(rows, args.figure)
-    schemes = schemes_section(args.results.resolve())
+    schemes = None if args.no_schemes else schemes_section(args.results.resolve())
     output_file.write(args.out, markdown(rows, references, [s.file for s in sweeps], labels,
                                          schemes) + "\n")
-    print(f"claims: {len(rows)} cells; written: {args.out}, {args.figure}")
+    written = [args.out, args.figure] + ([args.pictures_figure] if labels else [])
+    print(f"claims: {len(rows)} cells; written: " + ", ".join(str(p) for p in written))
     return 0
 
 
