@@ -75,7 +75,8 @@ std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const Cos
   const double bytes = costs.node_reserve_bytes + 2.0 * costs.shooter_record_bytes +
                        patches * (costs.patch_geometry_bytes + costs.patch_radiosity_bytes) +
                        structure + elements * costs.element_bytes +
-                       2.0 * elements * costs.radiosity_increment_bytes;
+                       2.0 * elements * costs.radiosity_increment_bytes +
+                       form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs);
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < setup.placement.radiosity_processors; ++rank)
     nodes.push_back({setup.placement.radiosity_node(rank), NodeRole::kRadiosity, rank, bytes});

@@ -2,7 +2,7 @@
 
 #include <xbt/log.h>
 
-#include "radiosity/form_factor.h"
+#include "radiosity/form_factor_methods.h"
 
 // --log=ncube_shooters.thresh:verbose shows every iteration's shooters.
 XBT_LOG_NEW_DEFAULT_CATEGORY(ncube_shooters, "the shooter-centred scheme's nodes");
@@ -26,6 +26,9 @@ int ShooterProcessor::shooters_per_iteration(const ProgramSetup& setup) {
 void ShooterProcessor::run() {
   runtime_.start();
   runtime_.charge(occluders_.build_work());  // section 6: an octree over the scene, if any
+  // The form-factor method's setup once (the hemicube's delta form factor table; none for rays).
+  const WorkCounts setup = form_factor_methods().at(setup_.options.form_factors).setup_work(setup_.options);
+  if (!(setup == WorkCounts{})) runtime_.charge(setup);
   const ProgressiveOptions& o = setup_.options;
   const std::size_t elements = std::size_t(setup_.scene.element_total());
   for (int iteration = 0;; ++iteration) {
@@ -75,9 +78,11 @@ void ShooterProcessor::shoot(const ShooterChoice& choice, std::vector<Rgb>& incr
   WorkCounts work;
   const std::vector<ElementRef> receivers =
       engine_.receivers(shooter, setup_.options.skip_facing_away, work);
-  // The form-factor step: the shooter's form factor to every receiving element.
-  const std::vector<double> form_factors =
-      ray_traced_form_factors(engine_, occluders_, receivers, shooter, work);
+  // The form-factor step: the shooter's form factor to every receiving element, by the
+  // run's method over the whole scene (every node holds it; the hemicube draws every other
+  // patch's elements as occluders, as the paper's program at R = 1 does).
+  const std::vector<double> form_factors = form_factor_methods().at(setup_.options.form_factors)
+      .form_factors(engine_, occluders_, shooter, receivers, setup_.options, work);
   const std::vector<StoredPatch>& patches = engine_.store().patches();
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     const Patch& patch = setup_.scene.patches[std::size_t(patches[std::size_t(receivers[k].slot)].patch)];

@@ -1,5 +1,6 @@
 #include "radiosity/form_factor_methods.h"
 
+#include "radiosity/form_factor.h"
 #include "radiosity/hemicube.h"
 
 namespace ncube {
@@ -20,9 +21,10 @@ void shoot_ray_traced(RadiosityEngine& engine, const OccluderSet& occluders, con
 // occluders; the shooter's own patch lies in the eye's plane and is left out. Without
 // subdivision every processor draws the same polygons (each patch's elements), so the
 // answers do not depend on R.
-void shoot_hemicube(RadiosityEngine& engine, const OccluderSet& occluders, const Shooter& shooter,
-                    const std::vector<ElementRef>& receivers, const ProgressiveOptions& options,
-                    WorkCounts& counts) {
+std::vector<double> hemicube_shot_form_factors(RadiosityEngine& engine, const OccluderSet& occluders,
+                                               const Shooter& shooter,
+                                               const std::vector<ElementRef>& receivers,
+                                               const ProgressiveOptions& options, WorkCounts& counts) {
   const Scene& scene = engine.scene();
   const ElementStore& store = engine.store();
   std::vector<HemicubePolygon> items;
@@ -58,9 +60,22 @@ void shoot_hemicube(RadiosityEngine& engine, const OccluderSet& occluders, const
         blockers.push_back(hemicube_polygon(scene, patch, scene.elements[std::size_t(e)].polygon,
                                             scene.elements[std::size_t(e)].area));
     }
+  return hemicube_form_factors(scene, shooter.patch, items, blockers, options.hemicube, counts);
+}
+
+void shoot_hemicube(RadiosityEngine& engine, const OccluderSet& occluders, const Shooter& shooter,
+                    const std::vector<ElementRef>& receivers, const ProgressiveOptions& options,
+                    WorkCounts& counts) {
   const std::vector<double> form_factors =
-      hemicube_form_factors(scene, shooter.patch, items, blockers, options.hemicube, counts);
+      hemicube_shot_form_factors(engine, occluders, shooter, receivers, options, counts);
   engine.gather_form_factors(shooter, receivers, form_factors, counts);
+}
+
+std::vector<double> ray_traced_shot_form_factors(RadiosityEngine& engine, const OccluderSet& occluders,
+                                                 const Shooter& shooter,
+                                                 const std::vector<ElementRef>& receivers,
+                                                 const ProgressiveOptions&, WorkCounts& counts) {
+  return ray_traced_form_factors(engine, occluders, receivers, shooter, counts);
 }
 
 }  // namespace
@@ -72,12 +87,12 @@ const MethodRegistry<FormFactorMethod>& form_factor_methods() {
           {"ray-traced",
            "section 2.2: rays from each element to the shooter's M parts, the visible parts' "
            "point-to-polygon form factors; the calibrated setup",
-           shoot_ray_traced, [](const ProgressiveOptions&) { return WorkCounts{}; },
+           shoot_ray_traced, ray_traced_shot_form_factors, [](const ProgressiveOptions&) { return WorkCounts{}; },
            [](const ProgressiveOptions&, const CostModel&) { return 0.0; }, true, "", ""},
           {"hemicube",
            "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
            "--hemicube-placement); V = 0 only",
-           shoot_hemicube,
+           shoot_hemicube, hemicube_shot_form_factors,
            [](const ProgressiveOptions& options) { return hemicube_setup_work(options.hemicube); },
            [](const ProgressiveOptions& options, const CostModel& costs) {
              return hemicube_table_entries(options.hemicube) * costs.delta_form_factor_bytes +

@@ -29,6 +29,12 @@ struct FormFactorMethod {
                      const std::vector<ElementRef>& receivers, const ProgressiveOptions& options,
                      WorkCounts& counts)>
       shoot;
+  // The same shot's form factors only, receivers[k]'s at k, with the work counted but no
+  // light added: for a node program that adds the light itself (nodes/shooter_processor.cpp).
+  std::function<std::vector<double>(RadiosityEngine& engine, const OccluderSet& occluders,
+                                    const Shooter& shooter, const std::vector<ElementRef>& receivers,
+                                    const ProgressiveOptions& options, WorkCounts& counts)>
+      form_factors;
   // The work of a node that computes form factors, once when it starts (none: all zero).
   std::function<WorkCounts(const ProgressiveOptions& options)> setup_work;
   // Modeled bytes of such a node beyond its patches and elements.
