@@ -341,8 +341,9 @@ def markdown(rows, references, sweep_files, picture_labels=(), schemes=None):
             f"judged on the configurations both methods run (V = 0; `much': the hemicube's "
             f"error at least {MUCH:g} times the paper's method's at its largest M):", ""]
     out += claim_one_table(rows) + ["", "1. " + claim_one_sentence(rows), ""]
-    out += ["## The second claim: receivers against shooters", ""]
+    # The second claim's section brings its own heading (analysis/claims_schemes.py).
     out += [schemes.rstrip(), ""] if schemes else [
+        "## The second claim: receivers against shooters", "",
         "2. *No need to distribute radiosity values after the form factors* (section 6): "
         "not measured here (`analysis/claims_schemes.py` not there, or `--no-schemes`).", ""]
     return "\n".join(out)
