@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "hand_counted_scene.h"
+#include "simulate_arguments.h"
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "nodes/memory_plan.h"
@@ -32,19 +33,6 @@ TEST(FormFactorMethods, ThePapersRaysAreTheDefault) {
   EXPECT_EQ(form_factor_methods().paper_default().name, "ray-traced");
   EXPECT_EQ(ProgressiveOptions{}.form_factors, "ray-traced");
   EXPECT_TRUE(form_factor_methods().contains("hemicube"));
-}
-
-int parse(std::vector<std::string> args, SimulateOptions& options, std::string* out = nullptr) {
-  args.insert(args.begin(), {"simulate", "scene0.json"});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const int status = parse_simulate_options(int(argv.size()), argv.data(), options);
-  const std::string printed = testing::internal::GetCapturedStdout();
-  testing::internal::GetCapturedStderr();
-  if (out) *out = printed;
-  return status;
 }
 
 TEST(FormFactorMethods, EveryMethodIsAValueOfTheOptionWithItsDoc) {

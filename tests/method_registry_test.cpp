@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "hand_counted_scene.h"
+#include "simulate_arguments.h"
 #include "machine/cost_model.h"
 #include "nodes/memory_plan.h"
 #include "nodes/placement.h"
@@ -52,20 +53,6 @@ TEST(VisibilityMethods, ThePapersLoopIsTheDefault) {
   EXPECT_EQ(visibility_methods().paper_default().name, "brute-force");
   EXPECT_EQ(ProgressiveOptions{}.visibility, "brute-force");
   EXPECT_TRUE(visibility_methods().contains("octree"));
-}
-
-// simulate's options for `args` (after a scene name), and its exit status.
-int parse(std::vector<std::string> args, SimulateOptions& options, std::string* out = nullptr) {
-  args.insert(args.begin(), {"simulate", "scene0.json"});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const int status = parse_simulate_options(int(argv.size()), argv.data(), options);
-  const std::string printed = testing::internal::GetCapturedStdout();
-  testing::internal::GetCapturedStderr();
-  if (out) *out = printed;
-  return status;
 }
 
 TEST(VisibilityMethods, EveryMethodIsAValueOfTheOptionWithItsDoc) {

@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "hand_counted_scene.h"
+#include "simulate_arguments.h"
 #include "machine/cost_model.h"
 #include "simulation/memory_check.h"
 #include "simulation/parallelisations.h"
@@ -21,19 +22,6 @@ namespace ncube {
 namespace {
 
 std::string repo(const std::string& path) { return std::string(NCUBE_SOURCE_DIR) + "/" + path; }
-
-int parse(std::vector<std::string> args, SimulateOptions& options, std::string* out = nullptr) {
-  args.insert(args.begin(), {"simulate", "scene0.json"});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const int status = parse_simulate_options(int(argv.size()), argv.data(), options);
-  const std::string printed = testing::internal::GetCapturedStdout();
-  testing::internal::GetCapturedStderr();
-  if (out) *out = printed;
-  return status;
-}
 
 TEST(Parallelisations, ThePapersReceiversAreTheDefault) {
   EXPECT_EQ(parallelisations().paper_default().name, "receivers");
