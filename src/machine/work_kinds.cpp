@@ -68,6 +68,15 @@ std::string work_rate_of(const std::string& cost_parameter) {
   return "";
 }
 
+double kind_flops(const CostModel& costs, const WorkCounts& c, const std::string& rate) {
+  double flops = 0.0;
+#define NCUBE_KIND_FLOPS(member, cost, doc) \
+  if (entry_of(#cost).rate == rate) flops += costs.cost * double(c.member);
+  NCUBE_WORK_COUNTERS(NCUBE_KIND_FLOPS)
+#undef NCUBE_KIND_FLOPS
+  return flops;
+}
+
 bool gives_work_rates(const PlatformConfig& platform) {
   for (const KindEntry& e : kind_entries())
     if (platform.*e.field > 0) return true;

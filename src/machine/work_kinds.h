@@ -62,6 +62,10 @@ std::string work_rate_of(const std::string& cost_parameter);
 // that its simulated seconds stay the same to the last bit.
 bool gives_work_rates(const PlatformConfig& platform);
 
+// The flops of `counts` whose kind runs at `rate` (a name of work_rate_names()): what a
+// probe of the rate divides by the seconds it measured (build/machine_probe).
+double kind_flops(const CostModel& costs, const WorkCounts& counts, const std::string& rate);
+
 // Simulated CPU seconds of counted work on one node of `platform`: the flops of each kind at
 // that kind's rate (node_speed for a kind the platform does not give).
 double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
