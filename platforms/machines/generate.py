@@ -10,8 +10,9 @@ every figure of the 64-node file and only the network scaled (as platforms/ncube
 d13 are for the nCube2). tests/machines_platforms_test.sh checks that the committed files are
 exactly what this script writes, so a figure is changed here and nowhere else.
 
-Conventions (docs/platforms.md): node k is the host node-k; node speed, node_memory,
-send_overhead and receive_overhead are the same on every node; SimGrid's own cluster
+Conventions (docs/platforms.md): node k is the host node-k; node speed, the rates per kind of
+work a machine gives ("rates", src/machine/work_kinds.h), node_memory, send_overhead and
+receive_overhead are the same on every node; SimGrid's own cluster
 topologies are used where the machine's network is one of them (TORUS, FAT_TREE); the
 Paragon's mesh, which has no wrap-around links, is a Dijkstra zone of one router per node.
 """
@@ -98,9 +99,14 @@ MACHINES = [
     {
         "name": "cluster-2024",
         "page": "docs/machines/cluster-2024.md",
-        "title": "A 64-node cluster of today (one process a node on an AMD EPYC 7763 server, "
+        "title": "A 64-node cluster of today (one process a node on one core of the AMD EPYC "
+                 "host this project is built on, its rates measured by build/machine_probe; "
                  "InfiniBand HDR 200 Gb/s fat tree)",
-        "speed": 2.5e9,
+        # Measured on this project's build host ("AMD EPYC", 2.6 GHz, 1 MB L2 a core) by
+        # build/machine_probe --repeats 15 on 2026-11-27 (median of 15, spread 2.5 %), rounded
+        # to 3 digits; docs/machines/probe.md. node speed is the test rate.
+        "speed": 4.27e9,
+        "rates": {"test_speed": 4.27e9, "arithmetic_speed": 9.46e9},
         "memory": 256 * 1024 ** 3,
         "bandwidth": 25e9,
         "latency": 0.1e-6,
@@ -132,7 +138,12 @@ def header(machine, nodes, network_doc):
 
 def properties(machine, indent):
     pad = " " * indent
-    return ("%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
+    rates = "".join("%s<prop id=\"%s\" value=\"%s\"/>\n" % (pad, name, number(value))
+                    for name, value in machine.get("rates", {}).items())
+    if rates:
+        rates = ("%s<!-- Rates per kind of work (flop/s, src/machine/work_kinds.h); node speed is\n"
+                 "%s     the test rate. -->\n" % (pad, pad)) + rates
+    return rates + ("%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
             "%s     message on each side (seconds), as in docs/platforms.md. -->\n"
             "%s<prop id=\"node_memory\" value=\"%d\"/>\n"
             "%s<prop id=\"send_overhead\" value=\"%s\"/>\n"

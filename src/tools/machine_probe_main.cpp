@@ -157,6 +157,19 @@ std::string cpu_model() {
 std::string probed_platform(const std::string& network_file, const std::string& network,
                             const std::vector<Measurement>& measured, const std::string& about) {
   std::string text = network;
+  // Rates the network file gives already (platforms/machines/cluster-2024.xml does), with
+  // their comment, make way for the measured ones.
+  const auto erase_line_with = [&text](const std::string& what, const std::string& until) {
+    const std::size_t at = text.find(what);
+    if (at == std::string::npos) return false;
+    const std::size_t begin = text.rfind('\n', at) + 1, end = text.find(until, at);
+    text.erase(begin, text.find('\n', end) + 1 - begin);
+    return true;
+  };
+  erase_line_with("<!-- Rates per kind of work", "-->");
+  for (const std::string& rate : ncube::work_rate_names())
+    while (erase_line_with("<prop id=\"" + rate + "\"", "/>")) {
+    }
   const double node_speed = measured[0].value();
   std::size_t changed = 0;
   for (std::size_t at = text.find(" speed=\""); at != std::string::npos;
@@ -232,10 +245,13 @@ int machine_probe(int argc, char** argv) {
     receivers.push_back(engine.receivers(s, false, ignored));
   }
 
-  Measurement tests{"test_speed", "the brute-force visibility loop (visible_parts over "
-                                  "BruteForceOccluders) for 4 shooters of 64 parts"};
-  Measurement arithmetic{"arithmetic_speed", "the engine's gather (point-to-part form factors, "
-                                             "radiosity updates) for the same shots, 32 times"};
+  Measurement tests, arithmetic;
+  tests.rate = "test_speed";
+  tests.kernel = "the brute-force visibility loop (visible_parts over BruteForceOccluders) for 4 "
+                 "shooters of 64 parts";
+  arithmetic.rate = "arithmetic_speed";
+  arithmetic.kernel = "the engine's gather (point-to-part form factors, radiosity updates) for "
+                      "the same shots, 32 times";
   std::vector<std::vector<ncube::PartMask>> masks(shooters.size());
   for (int r = 0; r < repeats + 1; ++r) {  // the first repeat warms the caches, not counted
     ncube::WorkCounts counts;
