@@ -63,7 +63,7 @@ def measure(platform, repeats):
             tests = k2["ray_patch_tests"] - k1["ray_patch_tests"]
             rays = k2["rays"] - k1["rays"]
             crossings = k2["plane_crossings"] - k1["plane_crossings"]
-            rows.append({"scene": scene, "n": n, "simulated": s2 - s1, "host": c2 - c1,
+            rows.append({"scene": scene, "n": n, "simulated": s2 - s1, "host": c2 - c1, "tests": tests,
                          "startup": c1 - s1, "tests_per_ray": tests / rays if rays else 0,
                          "crossing_share": crossings / tests if tests else 0})
     return rows
@@ -84,13 +84,16 @@ def table(rows, platform, heading):
                                                                       round(TOLERANCE * 100)),
              "",
              "| scene | iterations timed | ray-patch tests a ray | tests that cross the plane | "
-             "simulated s | host CPU s | prediction | within %d %% |" % round(TOLERANCE * 100),
-             "|---|--:|--:|--:|--:|--:|--:|:-:|"]
+             "simulated s | host CPU s | prediction | within %d %% | host − simulated a test |"
+             % round(TOLERANCE * 100),
+             "|---|--:|--:|--:|--:|--:|--:|:-:|--:|"]
     for r in rows:
         error = r["simulated"] / r["host"] - 1
-        lines.append("| %s | %d to %d | %.0f | %.0f %% | %.4g | %.4g | %+.1f %% | %s |" % (
-            r["scene"], r["n"] + 1, 2 * r["n"], r["tests_per_ray"], 100 * r["crossing_share"],
-            r["simulated"], r["host"], 100 * error, "yes" if abs(error) <= TOLERANCE else "**no**"))
+        timed = ("%d" % (r["n"] + 1) if r["n"] == 1 else "%d to %d" % (r["n"] + 1, 2 * r["n"]))
+        lines.append("| %s | %s | %.0f | %.0f %% | %.4g | %.4g | %+.1f %% | %s | %+.2f ns |" % (
+            r["scene"], timed, r["tests_per_ray"], 100 * r["crossing_share"],
+            r["simulated"], r["host"], 100 * error, "yes" if abs(error) <= TOLERANCE else "**no**",
+            1e9 * (r["host"] - r["simulated"]) / r["tests"] if r["tests"] else 0.0))
     return lines
 
 
@@ -108,8 +111,10 @@ def main():
         rows = measure(platform, args.repeats)
         with open("/proc/cpuinfo", encoding="utf-8") as f:
             cpu = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
-        heading = ("Measured on %s by `/usr/bin/python3 docs/machines/prediction_table.py`%s."
-                   % (cpu, "" if not args.platform else
+        load = os.getloadavg()[0]
+        heading = ("Measured on %s (load average %.1f on %d cores at the end) by "
+                   "`/usr/bin/python3 docs/machines/prediction_table.py`%s."
+                   % (cpu, load, os.cpu_count(), "" if not args.platform else
                       " --platform " + os.path.relpath(args.platform, ROOT)))
         lines = table(rows, platform, heading)
     text = "\n".join(lines) + "\n"
