@@ -46,7 +46,8 @@ RESULTS = "results/machines"
 
 # How a machine's platform file is named in the text; any other file by its name.
 DISPLAY = {"ncube2": "nCube2", "transputer-t800": "T800 network", "ipsc860": "iPSC/860",
-           "paragon": "Paragon", "cm5": "CM-5", "cluster-2024": "cluster of 2024"}
+           "paragon": "Paragon", "paragon-sunmos": "Paragon under SUNMOS", "cm5": "CM-5",
+           "cluster-2024": "cluster of 2024"}
 # Factors of speed against the reference that differ by less than this ratio across a machine's
 # configurations count as one factor (a port that only changes the node speed).
 UNIFORM = 1.05
