@@ -89,6 +89,7 @@ class Entry:
     bytes_sent: float = 0.0   # over all nodes and iterations
     least_node_share: float = None   # the smallest (overhead + waiting) share of one node
     iterations: int = None
+    rates: tuple = ()   # the rates per kind of work the platform gives (provenance), by name
 
     @property
     def shots_per_iteration(self):
@@ -157,6 +158,9 @@ def entries(sweep, results_dir):
             entry.value = results.measure(result, sweep.measure)
             entry.oom = result.get("out_of_memory")
             entry.iterations = result.get("iterations")
+            values = result.get("provenance", {}).get("platform", {}).get("values", {})
+            entry.rates = tuple(sorted(k for k in values if k.endswith("_speed")
+                                       and k != "node_speed"))
             for node in result.get("nodes", []) if entry.status == "ok" else []:
                 entry.compute += node["compute_seconds"]
                 entry.overhead += node["overhead_seconds"]
@@ -758,6 +762,23 @@ def summary_sentences(study):
                     f"{ref} (within {100 * (UNIFORM - 1):.0f} %): in this model porting the "
                     "program there changes its speed, not the balance between its computing "
                     "and its communication.")
+        one_rate = [m for m in uniform if not any(e.rates for e in study.found if e.machine == m)]
+        if one_rate:
+            text.append(f"For {join(one_rate)} that is built into the model rather than found by "
+                        "it: their platform files give one rate for every kind of counted work "
+                        "(docs/machines/README.md, \"Rates per kind of work\"), so a faster node "
+                        "shortens every configuration's computing alike, and at these blocks "
+                        "the messages are too small a share to move the balance; what the "
+                        "simulation measures here is the share of communication, the best "
+                        "configuration and what fits in memory (sections 3 to 5), and with "
+                        "smaller blocks the balance does move (docs/machines/README.md, "
+                        "\"Fine-grained messages\").")
+    rated = [m for m in ported if any(e.rates for e in study.found if e.machine == m)]
+    for m in rated:
+        names = ordered(r for e in study.found if e.machine == m for r in e.rates)
+        text.append(f"The {m} gives rates per kind of work ({', '.join(names)}): its factors "
+                    "come from how its counted work divides between the kinds, not from one "
+                    "speed ratio.")
     if varying:
         text.append(f"On {join(varying)} the factor differs between configurations: there the "
                     "balance between computing and communication is not the " + ref + "'s.")
