@@ -141,7 +141,9 @@ def method_of(cell, keys):
     where they differ from ./simulate's default ("brute-force hemicube", "octree shooters")."""
     from ncube import options as opts
     keys = [k for k in METHOD_OPTIONS if k in keys] + [k for k in keys if k not in METHOD_OPTIONS]
-    return " ".join(str(cell.options[k]) for k in keys
+    return " ".join(str(cell.options[k]) if isinstance(cell.options[k], str)
+                    else f"{k.replace('_', ' ')} {cell.options[k]}"   # "block size 1"
+                    for k in keys
                     if k in METHOD_OPTIONS or cell.options[k] != opts.OPTIONS[k].default)
 
 
