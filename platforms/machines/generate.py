@@ -166,20 +166,40 @@ def header(machine, nodes, network_doc):
                                               ", ".join(machine["assumed"]), machine["page"]))
 
 
+# The machine parameters a SimGrid file gives as <prop>s, read from the one list
+# (src/machine/machine_parameters.h, through docs/platform_tables.py): a parameter added there
+# is written here without naming it. A machine's table below names each by the parameter's
+# name, but node_memory, which it calls "memory"; the optional ones (rates per kind of work)
+# are in its "rates" when it gives them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "docs"))
+import platform_tables  # noqa: E402
+
+PROPERTIES = [p for p in platform_tables.machine_parameters() if p["xml"] == "kProperty"]
+TABLE_KEY = {"node_memory": "memory"}
+
+
 def properties(machine, indent):
     pad = " " * indent
-    rates = "".join("%s<prop id=\"%s\" value=\"%s\"/>\n" % (pad, name, number(value))
-                    for name, value in machine.get("rates", {}).items())
+    lines = ["%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
+             "%s     message on each side (seconds), as in docs/platforms.md. -->\n" % (pad, pad)]
+    rates = []
+    for p in PROPERTIES:
+        if p["optional"]:
+            if p["name"] in machine.get("rates", {}):
+                rates.append("%s<prop id=\"%s\" value=\"%s\"/>\n"
+                             % (pad, p["name"], number(machine["rates"][p["name"]])))
+            continue
+        key = TABLE_KEY.get(p["name"], p["name"])
+        if key not in machine:
+            raise SystemExit("generate.py: %s gives no %s (%r)" % (machine["name"], p["name"], key))
+        lines.append("%s<prop id=\"%s\" value=\"%s\"/>\n" % (pad, p["name"], number(machine[key])))
+    unknown = set(machine.get("rates", {})) - {p["name"] for p in PROPERTIES if p["optional"]}
+    if unknown:
+        raise SystemExit("generate.py: %s: no such rate %s" % (machine["name"], sorted(unknown)))
     if rates:
-        rates = ("%s<!-- Rates per kind of work (flop/s, src/machine/work_kinds.h); node speed is\n"
-                 "%s     the test rate. -->\n" % (pad, pad)) + rates
-    return rates + ("%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
-            "%s     message on each side (seconds), as in docs/platforms.md. -->\n"
-            "%s<prop id=\"node_memory\" value=\"%d\"/>\n"
-            "%s<prop id=\"send_overhead\" value=\"%s\"/>\n"
-            "%s<prop id=\"receive_overhead\" value=\"%s\"/>\n"
-            % (pad, pad, pad, machine["memory"], pad, number(machine["send_overhead"]), pad,
-               number(machine["receive_overhead"])))
+        rates.insert(0, "%s<!-- Rates per kind of work (flop/s, src/machine/work_kinds.h); node "
+                        "speed is\n%s     the test rate. -->\n" % (pad, pad))
+    return "".join(rates + lines)
 
 
 def link_attributes(machine):
