@@ -18,6 +18,7 @@ simulated node does. The table is written between <!-- prediction-table:begin --
 import argparse
 import json
 import os
+import re
 import resource
 import subprocess
 import sys
@@ -71,7 +72,6 @@ def measure(platform, repeats):
 
 def rates(platform):
     """The platform's rates as its <prop>s give them (for the table's heading)."""
-    import re
     with open(platform, encoding="utf-8") as f:
         text = f.read()
     found = dict(re.findall(r'<prop id="(\w+_speed)" value="([^"]+)"', text))
