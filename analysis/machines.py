@@ -231,6 +231,15 @@ class Study:
         self.scenes = ordered(e.scene for e in found)
         self.by = {(e.machine, e.method, e.scene, e.row): e for e in found}
 
+    def has(self, scene, method):
+        """Whether the sweep has cells of `method` for `scene` (the fine-grained variant runs
+        scene1 only)."""
+        return any(e.scene == scene and e.method == method for e in self.found)
+
+    def combinations(self):
+        """(scene, method) pairs with cells, scene by scene."""
+        return [(s, m) for s in self.scenes for m in self.methods if self.has(s, m)]
+
     def rows(self, scene):
         return ordered(e.row for e in self.found if e.scene == scene)
 
@@ -331,16 +340,15 @@ def tables_section(study):
                          "`experiments/table4.json`); both run on every machine."
                          for scene, row, paper in stand_ins)
     lines.append("")
-    for scene in study.scenes:
-        for method in study.methods:
-            lines += [f"**{scene}, {method}**", "",
-                      "| R | V | " + " | ".join(study.machines) + " |",
-                      "|---:|---:|" + "---:|" * len(study.machines)]
-            for row in study.rows(scene):
-                cells = [study.get(m, method, scene, row) for m in study.machines]
-                lines.append(f"| {row[0]} | {row[1]} | "
-                             + " | ".join(cell_text(e) if e else "" for e in cells) + " |")
-            lines.append("")
+    for scene, method in study.combinations():
+        lines += [f"**{scene}, {method}**", "",
+                  "| R | V | " + " | ".join(study.machines) + " |",
+                  "|---:|---:|" + "---:|" * len(study.machines)]
+        for row in study.rows(scene):
+            cells = [study.get(m, method, scene, row) for m in study.machines]
+            lines.append(f"| {row[0]} | {row[1]} | "
+                         + " | ".join(cell_text(e) if e else "" for e in cells) + " |")
+        lines.append("")
     return lines
 
 
@@ -380,7 +388,7 @@ def communication_section(study):
                   "| machine | method | " + " | ".join(f"R={r} V={v}" for r, v in rows) + " |",
                   "|---|---|" + "---:|" * len(rows)]
         for machine in study.machines:
-            for method in study.methods:
+            for method in [m for m in study.methods if study.has(scene, m)]:
                 cells = []
                 for row in rows:
                     e = study.get(machine, method, scene, row)
@@ -419,22 +427,20 @@ def bottleneck_section(study):
              "(above 1: V > 0 pays; below 1: R=64 V=0 is faster, the radiosity processors "
              "waiting on their visibility processors longer than those save them; section 3 "
              "says how much of that waiting the network explains).", "",
-             "| machine | " + " | ".join(f"{s} {m}" for s in study.scenes
-                                         for m in study.methods) + " |",
-             "|---|" + "---|" * (len(study.scenes) * len(study.methods))]
+             "| machine | " + " | ".join(f"{s} {m}" for s, m in study.combinations()) + " |",
+             "|---|" + "---|" * len(study.combinations())]
     for machine in study.machines:
         cells = []
-        for scene in study.scenes:
-            for method in study.methods:
-                with_v, without = study.v_pays(machine, method, scene)
-                if with_v is None or without is None or without.status not in ("ok", "out_of_memory"):
-                    cells.append("")
-                elif without.status == "out_of_memory":
-                    cells.append(f"V = 0 does not fit; best {config_text(with_v, False)}")
-                else:
-                    ratio = without.value / with_v.value
-                    cells.append(f"{ratio:.2f} ({'pays' if ratio > 1 else 'does not pay'}; "
-                                 f"best {config_text(with_v, False)})")
+        for scene, method in study.combinations():
+            with_v, without = study.v_pays(machine, method, scene)
+            if with_v is None or without is None or without.status not in ("ok", "out_of_memory"):
+                cells.append("")
+            elif without.status == "out_of_memory":
+                cells.append(f"V = 0 does not fit; best {config_text(with_v, False)}")
+            else:
+                ratio = without.value / with_v.value
+                cells.append(f"{ratio:.2f} ({'pays' if ratio > 1 else 'does not pay'}; "
+                             f"best {config_text(with_v, False)})")
         lines.append(f"| {machine} | " + " | ".join(cells) + " |")
     lines += ["", "**Where it changes** (against the " + study.reference + "):", ""]
     changes = []
