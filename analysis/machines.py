@@ -46,7 +46,8 @@ RESULTS = "results/machines"
 
 # How a machine's platform file is named in the text; any other file by its name.
 DISPLAY = {"ncube2": "nCube2", "transputer-t800": "T800 network", "ipsc860": "iPSC/860",
-           "paragon": "Paragon", "cm5": "CM-5", "cluster-2024": "cluster of 2024"}
+           "paragon": "Paragon", "paragon-sunmos": "Paragon under SUNMOS", "cm5": "CM-5",
+           "cluster-2024": "cluster of 2024"}
 # Factors of speed against the reference that differ by less than this ratio across a machine's
 # configurations count as one factor (a port that only changes the node speed).
 UNIFORM = 1.05
@@ -88,6 +89,7 @@ class Entry:
     bytes_sent: float = 0.0   # over all nodes and iterations
     least_node_share: float = None   # the smallest (overhead + waiting) share of one node
     iterations: int = None
+    rates: tuple = ()   # the rates per kind of work the platform gives (provenance), by name
 
     @property
     def shots_per_iteration(self):
@@ -139,7 +141,9 @@ def method_of(cell, keys):
     where they differ from ./simulate's default ("brute-force hemicube", "octree shooters")."""
     from ncube import options as opts
     keys = [k for k in METHOD_OPTIONS if k in keys] + [k for k in keys if k not in METHOD_OPTIONS]
-    return " ".join(str(cell.options[k]) for k in keys
+    return " ".join(str(cell.options[k]) if isinstance(cell.options[k], str)
+                    else f"{k.replace('_', ' ')} {cell.options[k]}"   # "block size 1"
+                    for k in keys
                     if k in METHOD_OPTIONS or cell.options[k] != opts.OPTIONS[k].default)
 
 
@@ -156,6 +160,9 @@ def entries(sweep, results_dir):
             entry.value = results.measure(result, sweep.measure)
             entry.oom = result.get("out_of_memory")
             entry.iterations = result.get("iterations")
+            values = result.get("provenance", {}).get("platform", {}).get("values", {})
+            entry.rates = tuple(sorted(k for k in values if k.endswith("_speed")
+                                       and k != "node_speed"))
             for node in result.get("nodes", []) if entry.status == "ok" else []:
                 entry.compute += node["compute_seconds"]
                 entry.overhead += node["overhead_seconds"]
@@ -223,6 +230,15 @@ class Study:
         self.methods = ordered(e.method for e in found)
         self.scenes = ordered(e.scene for e in found)
         self.by = {(e.machine, e.method, e.scene, e.row): e for e in found}
+
+    def has(self, scene, method):
+        """Whether the sweep has cells of `method` for `scene` (the fine-grained variant runs
+        scene1 only)."""
+        return any(e.scene == scene and e.method == method for e in self.found)
+
+    def combinations(self):
+        """(scene, method) pairs with cells, scene by scene."""
+        return [(s, m) for s in self.scenes for m in self.methods if self.has(s, m)]
 
     def rows(self, scene):
         return ordered(e.row for e in self.found if e.scene == scene)
@@ -324,16 +340,15 @@ def tables_section(study):
                          "`experiments/table4.json`); both run on every machine."
                          for scene, row, paper in stand_ins)
     lines.append("")
-    for scene in study.scenes:
-        for method in study.methods:
-            lines += [f"**{scene}, {method}**", "",
-                      "| R | V | " + " | ".join(study.machines) + " |",
-                      "|---:|---:|" + "---:|" * len(study.machines)]
-            for row in study.rows(scene):
-                cells = [study.get(m, method, scene, row) for m in study.machines]
-                lines.append(f"| {row[0]} | {row[1]} | "
-                             + " | ".join(cell_text(e) if e else "" for e in cells) + " |")
-            lines.append("")
+    for scene, method in study.combinations():
+        lines += [f"**{scene}, {method}**", "",
+                  "| R | V | " + " | ".join(study.machines) + " |",
+                  "|---:|---:|" + "---:|" * len(study.machines)]
+        for row in study.rows(scene):
+            cells = [study.get(m, method, scene, row) for m in study.machines]
+            lines.append(f"| {row[0]} | {row[1]} | "
+                         + " | ".join(cell_text(e) if e else "" for e in cells) + " |")
+        lines.append("")
     return lines
 
 
@@ -373,7 +388,7 @@ def communication_section(study):
                   "| machine | method | " + " | ".join(f"R={r} V={v}" for r, v in rows) + " |",
                   "|---|---|" + "---:|" * len(rows)]
         for machine in study.machines:
-            for method in study.methods:
+            for method in [m for m in study.methods if study.has(scene, m)]:
                 cells = []
                 for row in rows:
                     e = study.get(machine, method, scene, row)
@@ -412,22 +427,20 @@ def bottleneck_section(study):
              "(above 1: V > 0 pays; below 1: R=64 V=0 is faster, the radiosity processors "
              "waiting on their visibility processors longer than those save them; section 3 "
              "says how much of that waiting the network explains).", "",
-             "| machine | " + " | ".join(f"{s} {m}" for s in study.scenes
-                                         for m in study.methods) + " |",
-             "|---|" + "---|" * (len(study.scenes) * len(study.methods))]
+             "| machine | " + " | ".join(f"{s} {m}" for s, m in study.combinations()) + " |",
+             "|---|" + "---|" * len(study.combinations())]
     for machine in study.machines:
         cells = []
-        for scene in study.scenes:
-            for method in study.methods:
-                with_v, without = study.v_pays(machine, method, scene)
-                if with_v is None or without is None or without.status not in ("ok", "out_of_memory"):
-                    cells.append("")
-                elif without.status == "out_of_memory":
-                    cells.append(f"V = 0 does not fit; best {config_text(with_v, False)}")
-                else:
-                    ratio = without.value / with_v.value
-                    cells.append(f"{ratio:.2f} ({'pays' if ratio > 1 else 'does not pay'}; "
-                                 f"best {config_text(with_v, False)})")
+        for scene, method in study.combinations():
+            with_v, without = study.v_pays(machine, method, scene)
+            if with_v is None or without is None or without.status not in ("ok", "out_of_memory"):
+                cells.append("")
+            elif without.status == "out_of_memory":
+                cells.append(f"V = 0 does not fit; best {config_text(with_v, False)}")
+            else:
+                ratio = without.value / with_v.value
+                cells.append(f"{ratio:.2f} ({'pays' if ratio > 1 else 'does not pay'}; "
+                             f"best {config_text(with_v, False)})")
         lines.append(f"| {machine} | " + " | ".join(cells) + " |")
     lines += ["", "**Where it changes** (against the " + study.reference + "):", ""]
     changes = []
@@ -757,6 +770,23 @@ def summary_sentences(study):
                     f"{ref} (within {100 * (UNIFORM - 1):.0f} %): in this model porting the "
                     "program there changes its speed, not the balance between its computing "
                     "and its communication.")
+        one_rate = [m for m in uniform if not any(e.rates for e in study.found if e.machine == m)]
+        if one_rate:
+            text.append(f"For {join(one_rate)} that is built into the model rather than found by "
+                        "it: their platform files give one rate for every kind of counted work "
+                        "(docs/machines/README.md, \"Rates per kind of work\"), so a faster node "
+                        "shortens every configuration's computing alike, and at these blocks "
+                        "the messages are too small a share to move the balance; what the "
+                        "simulation measures here is the share of communication, the best "
+                        "configuration and what fits in memory (sections 3 to 5), and with "
+                        "smaller blocks the balance does move (docs/machines/README.md, "
+                        "\"Fine-grained messages\").")
+    rated = [m for m in ported if any(e.rates for e in study.found if e.machine == m)]
+    for m in rated:
+        names = ordered(r for e in study.found if e.machine == m for r in e.rates)
+        text.append(f"The {m} gives rates per kind of work ({', '.join(names)}): its factors "
+                    "come from how its counted work divides between the kinds, not from one "
+                    "speed ratio.")
     if varying:
         text.append(f"On {join(varying)} the factor differs between configurations: there the "
                     "balance between computing and communication is not the " + ref + "'s.")

@@ -87,7 +87,7 @@ def _number(literal):
 
 
 def machine_parameters(root=ROOT):
-    """[{name, type, unit, low, high, whole, xml, doc, low_text, high_text}] in the list's
+    """[{name, type, unit, low, high, whole, xml, optional, doc, low_text, high_text}] in the list's
     order, read from src/machine/machine_parameters.h under `root`."""
     body = _macro_body((Path(root) / LIST).read_text(encoding="utf-8"), "NCUBE_MACHINE_PARAMETERS")
     entries = _entries(body)
@@ -96,15 +96,17 @@ def machine_parameters(root=ROOT):
                       % (LIST, len(entries), body.count("X(")))
     parameters = []
     for args in entries:
-        if len(args) != 8:
-            raise Problem("%s: an entry of NCUBE_MACHINE_PARAMETERS has %d fields, not 8: %s"
+        if len(args) != 9:
+            raise Problem("%s: an entry of NCUBE_MACHINE_PARAMETERS has %d fields, not 9: %s"
                           % (LIST, len(args), args[:1]))
-        name, ctype, unit, low, high, whole, xml, doc = args
-        if xml not in XML_FORMS or whole not in ("true", "false"):
-            raise Problem("%s: %s: unknown XML form %r or whole %r" % (LIST, name, xml, whole))
+        name, ctype, unit, low, high, whole, xml, optional, doc = args
+        if xml not in XML_FORMS or whole not in ("true", "false") or optional not in ("true", "false"):
+            raise Problem("%s: %s: unknown XML form %r, whole %r or optional %r"
+                          % (LIST, name, xml, whole, optional))
         parameters.append({"name": name, "type": ctype, "unit": unit, "low": _number(low),
                            "high": _number(high), "whole": whole == "true", "xml": xml,
-                           "doc": doc, "low_text": low, "high_text": high})
+                           "optional": optional == "true", "doc": doc, "low_text": low,
+                           "high_text": high})
     return parameters
 
 
@@ -149,6 +151,11 @@ def machine_table(parameters, ncube2):
     rows = ["| parameter | unit | nCube2 | accepted | what it is | source of the nCube2 value |",
             "|---|---|--:|---|---|---|"]
     for p in parameters:
+        if p["name"] not in ncube2 and p["optional"]:
+            rows.append("| `%s` | %s | — | %s | %s | not given: the nCube2's one rate, "
+                        "`node_speed`, runs this kind of work |" % (
+                            p["name"], unit_of(p), accepted(p), cell(p["doc"])))
+            continue
         if p["name"] not in ncube2:
             raise Problem("%s has no parameter %s" % (NCUBE2, p["name"]))
         given = ncube2[p["name"]]
@@ -172,7 +179,7 @@ def forms_table(parameters):
             "|---|---|---|---|---|"]
     for p in parameters:
         rows.append("| `%s` | %s | %s | `\"%s\": {\"value\": …}` | %s |" % (
-            p["name"], unit_of(p), accepted(p), p["name"],
+            p["name"], unit_of(p), accepted(p) + (", optional" if p["optional"] else ""), p["name"],
             XML_FORMS[p["xml"]].replace("NAME", p["name"])))
     return rows
 
@@ -182,8 +189,10 @@ def values_table(parameters):
             "| `nodes` | — | yes | yes | the machine's nodes: 2^dimension, or the XML file's hosts "
             "node-0 … node-(n−1) |"]
     for p in parameters:
-        rows.append("| `%s` | %s | yes | %s | %s |" % (
-            p["name"], unit_of(p), "no" if p["xml"] == "kInterconnect" else "yes", cell(p["doc"])))
+        rows.append("| `%s` | %s | %s | %s | %s |" % (
+            p["name"], unit_of(p), "when given" if p["optional"] else "yes",
+            "no" if p["xml"] == "kInterconnect" else ("when given" if p["optional"] else "yes"),
+            cell(p["doc"])))
     return rows
 
 

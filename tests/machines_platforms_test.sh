@@ -75,6 +75,9 @@ read_back = {"nodes": values["nodes"] if not family else 64, "node_speed": value
              "node_memory": values["node_memory"], "send_overhead": values["send_overhead"],
              "receive_overhead": values["receive_overhead"], "link_bandwidth": xml["bandwidth"],
              "hop_latency": xml["latency"]}
+for rate in ("test_speed", "arithmetic_speed", "memory_speed"):  # given by a machine that has them
+    if rate in values:
+        read_back[rate] = values[rate]
 for name, value in read_back.items():
     if name not in stated:
         failures.append("%s states no `%s`" % (os.path.relpath(page_path, root), name))

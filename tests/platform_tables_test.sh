@@ -44,7 +44,7 @@ grep -q "EDITED memory of one node" "$tmp/r/docs/model.md" ||
 # 2. A new parameter (one entry in the list, and its nCube2 value): every table gains its row.
 copy
 sed -i 's/"CPU time the receiving node spends per message when its program takes it")/&                \\\
-  X(dummy_knob, double, "s", 0, 2, false, kProperty, "DUMMY knob of the test")/' "$list"
+  X(dummy_knob, double, "s", 0, 2, false, kProperty, false, "DUMMY knob of the test")/' "$list"
 grep -q "X(dummy_knob" "$list" || fail "the test's new parameter did not apply"
 "$python" - "$tmp/r/platforms/ncube2.json" <<'PY'
 import json, sys
@@ -66,7 +66,7 @@ grep -q '| `dummy_knob` | s | yes | yes | DUMMY knob of the test |' "$tmp/r/docs
 # 3. A machine file without the new parameter's value: the script names it (exit 2).
 copy
 sed -i 's/"CPU time the receiving node spends per message when its program takes it")/&                \\\
-  X(dummy_knob, double, "s", 0, 2, false, kProperty, "DUMMY knob of the test")/' "$list"
+  X(dummy_knob, double, "s", 0, 2, false, kProperty, false, "DUMMY knob of the test")/' "$list"
 status=0
 "$python" "$tmp/r/docs/platform_tables.py" --check 2>"$tmp/err" || status=$?
 [[ $status == 2 ]] && grep -q "has no parameter dummy_knob" "$tmp/err" ||

@@ -7,6 +7,9 @@
 The table sits between <!-- machine-table:begin --> and <!-- machine-table:end -->; every figure
 in it is read from the SimGrid XML (a cluster's attributes and <prop>s, or a zone's hosts, links
 and <prop>s), so it cannot drift from the files (tests/machines_platforms_test.sh runs --check).
+A figure the file's header lists as assumed (no readable source) is marked "(assumed)"; the
+send and receive overheads are marked once, after the receive overhead, since they are split
+from one total.
 """
 
 import argparse
@@ -89,12 +92,25 @@ def describe(path):
                                                                       z.get("routing"))
         speed = quantity(hosts[0].get("speed"))
         bw, lat = quantity(links[0].get("bandwidth")), quantity(links[0].get("latency"))
+    assumed = re.search(r"Assumed \(no readable source\): ([\w, ]+);", text)
     return {
+        "assumed": set(assumed.group(1).split(", ")) if assumed else NCUBE2_ASSUMED,
+        "rates": {k: float(v) for k, v in props.items() if k.endswith("_speed")},
         "file": os.path.relpath(path, ROOT), "page": page(path, text), "topology": topology,
         "nodes": nodes, "speed": speed, "memory": float(props["node_memory"]), "bandwidth": bw,
         "latency": lat, "send": float(props["send_overhead"]),
         "receive": float(props["receive_overhead"]), "family": family(path),
     }
+
+
+# platforms/ncube2.xml keeps its bytes (hashed into every result file), so its marks are here:
+# the figures docs/ncube2-sources.md gives from memory or as the calibrated assumption.
+NCUBE2_ASSUMED = {"hop_latency", "send_overhead", "receive_overhead"}
+
+
+def marked(text, name, d):
+    """A figure as the table shows it, marked when no readable source gives it."""
+    return text + " (assumed)" if name in d["assumed"] else text
 
 
 def si(value, unit):
@@ -112,6 +128,14 @@ def microseconds(value):
     return "%.3g µs" % (value * 1e6)
 
 
+def speed_cell(d):
+    """The node speed, and the rates per kind of work where the machine gives them."""
+    text = marked(si(d["speed"], "flop/s"), "node_speed", d)
+    rates = ", ".join("%s %s" % (name.replace("_speed", ""), si(value, "flop/s"))
+                      for name, value in d["rates"].items())
+    return text + (" (%s)" % rates if rates else "")
+
+
 def table():
     rows = ["| machine | platform file | topology | nodes | larger family (nodes) | node speed | "
             "memory a node | link bandwidth (each way) | latency a hop | send / receive overhead |",
@@ -121,9 +145,10 @@ def table():
         name = os.path.basename(path)[:-4]
         rows.append("| [%s](%s) | `%s` | %s | %d | %s | %s | %s | %s | %s | %s / %s |" % (
             name, d["page"], d["file"], d["topology"], d["nodes"], d["family"],
-            si(d["speed"], "flop/s"), mebibytes(d["memory"]),
-            si(d["bandwidth"], "B/s"), microseconds(d["latency"]), microseconds(d["send"]),
-            microseconds(d["receive"])))
+            speed_cell(d), marked(mebibytes(d["memory"]), "node_memory", d),
+            marked(si(d["bandwidth"], "B/s"), "link_bandwidth", d),
+            marked(microseconds(d["latency"]), "hop_latency", d), microseconds(d["send"]),
+            marked(microseconds(d["receive"]), "receive_overhead", d)))
     return "\n".join(rows) + "\n"
 
 

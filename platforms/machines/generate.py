@@ -10,8 +10,9 @@ every figure of the 64-node file and only the network scaled (as platforms/ncube
 d13 are for the nCube2). tests/machines_platforms_test.sh checks that the committed files are
 exactly what this script writes, so a figure is changed here and nowhere else.
 
-Conventions (docs/platforms.md): node k is the host node-k; node speed, node_memory,
-send_overhead and receive_overhead are the same on every node; SimGrid's own cluster
+Conventions (docs/platforms.md): node k is the host node-k; node speed, the rates per kind of
+work a machine gives ("rates", src/machine/work_kinds.h), node_memory, send_overhead and
+receive_overhead are the same on every node; SimGrid's own cluster
 topologies are used where the machine's network is one of them (TORUS, FAT_TREE); the
 Paragon's mesh, which has no wrap-around links, is a Dijkstra zone of one router per node.
 """
@@ -45,6 +46,8 @@ MACHINES = [
         "receive_overhead": 10e-6,
         "network": ("torus", (8, 8)),
         "network_doc": "a 2-D torus of 8 x 8: each node's four links go to its four neighbours",
+        # Figures no readable source gives (docs/machines/<page>.md says why each is chosen).
+        "assumed": ["link_bandwidth", "hop_latency", "send_overhead", "receive_overhead"],
         "family": [(128, (16, 8)), (256, (16, 16)), (512, (32, 16)), (1024, (32, 32))],
     },
     {
@@ -53,19 +56,41 @@ MACHINES = [
         "title": "Intel iPSC/860 (40 MHz i860 XR nodes, Direct-Connect hypercube)",
         "speed": 8e6,
         "memory": 8 * 1024 * 1024,
-        "bandwidth": 2.8e6,
+        "bandwidth": 2.5e6,
         "latency": 1e-6,
         "send_overhead": 33e-6,
         "receive_overhead": 33e-6,
         "network": ("torus", (2,) * 6),
         "network_doc": "a 6-dimensional binary hypercube routed dimension by dimension "
                        "(e-cube), written as a TORUS of extent 2 in 6 dimensions",
+        "assumed": ["node_speed", "hop_latency", "send_overhead", "receive_overhead"],
         "family": [(128, (2,) * 7)],
     },
     {
         "name": "paragon",
         "page": "docs/machines/paragon.md",
-        "title": "Intel Paragon XP/S (50 MHz i860 XP nodes, 2-D mesh of routing chips)",
+        "title": "Intel Paragon XP/S under OSF/1 AD and NX (50 MHz i860 XP nodes, 2-D mesh of "
+                 "routing chips)",
+        "speed": 10e6,
+        # 16 MB less OSF/1 AD's 8 MB, plus back the 768 KB reserve every machine is charged
+        # (node_reserve_bytes): the program has the 8 MB OSF/1 leaves it.
+        "memory": 16 * 1024 * 1024 - 8 * 1024 * 1024 + 768 * 1024,
+        "bandwidth": 32.5e6,
+        "latency": 0.04e-6,
+        "send_overhead": 50e-6,
+        "receive_overhead": 50e-6,
+        "network": ("mesh", (8, 8)),
+        "network_doc": "a 2-D mesh of 8 x 8 routing chips without wrap-around links, one node "
+                       "on each; shortest paths (Dijkstra)",
+        "assumed": ["node_speed", "hop_latency"],
+        "family": [(128, (16, 8)), (256, (16, 16)), (512, (16, 32)), (1024, (16, 64))],
+    },
+    {
+        # The variant: the same machine under SUNMOS (docs/machines/paragon-sunmos.md).
+        "name": "paragon-sunmos",
+        "page": "docs/machines/paragon-sunmos.md",
+        "title": "Intel Paragon XP/S under SUNMOS (50 MHz i860 XP nodes, 2-D mesh of routing "
+                 "chips)",
         "speed": 10e6,
         "memory": 16 * 1024 * 1024,
         "bandwidth": 175e6,
@@ -75,22 +100,26 @@ MACHINES = [
         "network": ("mesh", (8, 8)),
         "network_doc": "a 2-D mesh of 8 x 8 routing chips without wrap-around links, one node "
                        "on each; shortest paths (Dijkstra)",
-        "family": [(128, (16, 8)), (256, (16, 16)), (512, (16, 32)), (1024, (16, 64))],
+        "assumed": ["node_speed", "hop_latency"],
+        "family": [],
     },
     {
         "name": "cm5",
         "page": "docs/machines/cm5.md",
-        "title": "Thinking Machines CM-5 (32 MHz SPARC nodes without vector units, fat-tree data network)",
+        "title": "Thinking Machines CM-5 (32 MHz SPARC nodes, their vector units unused by "
+                 "compiled scalar C; CMMD on the fat-tree data network)",
         "speed": 5e6,
         "memory": 32 * 1024 * 1024,
-        "bandwidth": 10e6,
+        "bandwidth": 8.06e6,
         "latency": 1e-6,
         "send_overhead": 42.6e-6,
         "receive_overhead": 42.6e-6,
         "network": ("fat_tree", ((4, 4, 4), (2, 2, 2))),
-        "network_doc": "a 4-ary fat tree of 3 levels: 2 up-links a node and a switch, so "
-                       "20 MB/s a node into its group of 4, 10 MB/s into its group of 16 and "
-                       "5 MB/s beyond",
+        "network_doc": "a 4-ary fat tree of 3 levels: 2 up-links a node and a switch, each "
+                       "at CMMD's 8.06 MB/s (the wire's 10 MB/s less CMMD's copy), so twice "
+                       "that a node into its group of 4, once into its group of 16 and half "
+                       "beyond",
+        "assumed": ["node_memory", "hop_latency"],
         "family": [(128, ((4, 4, 4, 2), (2, 2, 2, 4))), (256, ((4, 4, 4, 4), (2, 2, 2, 4))),
                    (512, ((4, 4, 4, 4, 2), (2, 2, 2, 4, 4))),
                    (1024, ((4, 4, 4, 4, 4), (2, 2, 2, 4, 4)))],
@@ -98,9 +127,14 @@ MACHINES = [
     {
         "name": "cluster-2024",
         "page": "docs/machines/cluster-2024.md",
-        "title": "A 64-node cluster of today (one process a node on an AMD EPYC 7763 server, "
+        "title": "A 64-node cluster of today (one process a node on one core of the AMD EPYC "
+                 "host this project is built on, its rates measured by build/machine_probe; "
                  "InfiniBand HDR 200 Gb/s fat tree)",
-        "speed": 2.5e9,
+        # Measured on this project's build host ("AMD EPYC", 2.6 GHz, 1 MB L2 a core) by
+        # build/machine_probe --repeats 15 on 2026-11-27 (median of 15, spread 2.5 %), rounded
+        # to 3 digits; docs/machines/probe.md. node speed is the test rate.
+        "speed": 4.27e9,
+        "rates": {"test_speed": 4.27e9, "arithmetic_speed": 9.46e9},
         "memory": 256 * 1024 ** 3,
         "bandwidth": 25e9,
         "latency": 0.1e-6,
@@ -109,6 +143,7 @@ MACHINES = [
         "network": ("fat_tree", ((16, 4), (1, 4), (1, 4))),
         "network_doc": "a non-blocking two-level fat tree: 4 leaf switches of 16 nodes, 4 "
                        "spine switches, 4 links from each leaf to each spine",
+        "assumed": ["node_memory", "hop_latency"],
         "family": [],
     },
 ]
@@ -124,21 +159,47 @@ def header(machine, nodes, network_doc):
             "<!DOCTYPE platform SYSTEM \"https://simgrid.org/simgrid.dtd\">\n"
             "<!-- %s: %d nodes.\n"
             "     Network: %s.\n"
+            "     Assumed (no readable source): %s; every other figure is sourced.\n"
             "     Written by platforms/machines/generate.py (do not edit by hand); every figure,\n"
             "     its source, its confidence and what is assumed: %s. -->\n"
             "<platform version=\"4.1\">\n" % (machine["title"], nodes, network_doc,
-                                              machine["page"]))
+                                              ", ".join(machine["assumed"]), machine["page"]))
+
+
+# The machine parameters a SimGrid file gives as <prop>s, read from the one list
+# (src/machine/machine_parameters.h, through docs/platform_tables.py): a parameter added there
+# is written here without naming it. A machine's table below names each by the parameter's
+# name, but node_memory, which it calls "memory"; the optional ones (rates per kind of work)
+# are in its "rates" when it gives them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "docs"))
+import platform_tables  # noqa: E402
+
+PROPERTIES = [p for p in platform_tables.machine_parameters() if p["xml"] == "kProperty"]
+TABLE_KEY = {"node_memory": "memory"}
 
 
 def properties(machine, indent):
     pad = " " * indent
-    return ("%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
-            "%s     message on each side (seconds), as in docs/platforms.md. -->\n"
-            "%s<prop id=\"node_memory\" value=\"%d\"/>\n"
-            "%s<prop id=\"send_overhead\" value=\"%s\"/>\n"
-            "%s<prop id=\"receive_overhead\" value=\"%s\"/>\n"
-            % (pad, pad, pad, machine["memory"], pad, number(machine["send_overhead"]), pad,
-               number(machine["receive_overhead"])))
+    lines = ["%s<!-- What SimGrid has no notion of: the node's memory (bytes) and the CPU time per\n"
+             "%s     message on each side (seconds), as in docs/platforms.md. -->\n" % (pad, pad)]
+    rates = []
+    for p in PROPERTIES:
+        if p["optional"]:
+            if p["name"] in machine.get("rates", {}):
+                rates.append("%s<prop id=\"%s\" value=\"%s\"/>\n"
+                             % (pad, p["name"], number(machine["rates"][p["name"]])))
+            continue
+        key = TABLE_KEY.get(p["name"], p["name"])
+        if key not in machine:
+            raise SystemExit("generate.py: %s gives no %s (%r)" % (machine["name"], p["name"], key))
+        lines.append("%s<prop id=\"%s\" value=\"%s\"/>\n" % (pad, p["name"], number(machine[key])))
+    unknown = set(machine.get("rates", {})) - {p["name"] for p in PROPERTIES if p["optional"]}
+    if unknown:
+        raise SystemExit("generate.py: %s: no such rate %s" % (machine["name"], sorted(unknown)))
+    if rates:
+        rates.insert(0, "%s<!-- Rates per kind of work (flop/s, src/machine/work_kinds.h); node "
+                        "speed is\n%s     the test rate. -->\n" % (pad, pad))
+    return "".join(rates + lines)
 
 
 def link_attributes(machine):
@@ -233,8 +294,8 @@ def network_doc(machine, nodes, network):
         doc = ("a 2-D mesh of %d x %d routing chips without wrap-around links, one node on each; "
                "shortest paths (Dijkstra)" % shape)
     else:
-        doc = ("a 4-ary fat tree of %d levels (down %s, up %s): 20 MB/s a node into its group of "
-               "4, 10 MB/s into its group of 16 and 5 MB/s beyond"
+        doc = ("a 4-ary fat tree of %d levels (down %s, up %s): twice the link a node into its "
+               "group of 4, once into its group of 16 and half beyond"
                % (len(shape[0]), ",".join(map(str, shape[0])), ",".join(map(str, shape[1]))))
     return doc + "; every other figure is that of %s.xml" % machine["name"]
 

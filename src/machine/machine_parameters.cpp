@@ -8,8 +8,8 @@ namespace ncube {
 
 const std::vector<MachineParameter>& machine_parameters() {
   static const std::vector<MachineParameter> parameters = {
-#define NCUBE_MACHINE_PARAMETER(name, type, unit, low, high, whole, xml, doc)                    \
-  {#name, unit, low, high, whole, XmlForm::xml, doc, std::is_integral_v<type>,                 \
+#define NCUBE_MACHINE_PARAMETER(name, type, unit, low, high, whole, xml, optional, doc)          \
+  {#name, unit, low, high, whole, XmlForm::xml, optional, doc, std::is_integral_v<type>,       \
    [](const PlatformConfig& p) { return double(p.name); },                                     \
    [](PlatformConfig& p, double value) { p.name = static_cast<type>(value); }},
       NCUBE_MACHINE_PARAMETERS(NCUBE_MACHINE_PARAMETER)
@@ -19,7 +19,8 @@ const std::vector<MachineParameter>& machine_parameters() {
 }
 
 ParameterSpec parameter_spec(const MachineParameter& parameter) {
-  return {parameter.name, parameter.low, parameter.whole, parameter.high, parameter.unit};
+  return {parameter.name, parameter.low, parameter.whole, parameter.high, parameter.unit,
+          parameter.optional};
 }
 
 bool carried_by(const MachineParameter& parameter, const std::string& format) {

@@ -24,30 +24,46 @@ enum class XmlForm {
   kProperty,      // a <prop> of every node host, or of the host's zone (a <cluster>'s <prop>)
 };
 
-// X(name, C++ type, unit, smallest, largest, whole number, XmlForm, what it is)
+// X(name, C++ type, unit, smallest, largest, whole number, XmlForm, optional, what it is)
 // One entry a line group, in the order the result file's values were first written. The
 // ranges are sanity bounds far around the nCube2's values (a choice: beyond them a value is a
 // typo, and simulated times could leave the range SimGrid computes in). A platform file's
-// "unit", when it gives one, must be the unit here. docs/platform_tables.py parses these
-// entries: keep each field a plain literal.
-#define NCUBE_MACHINE_PARAMETERS(X)                                                            \
-  X(dimension, int, "", 0, 13, true, kInterconnect,                                            \
-    "hypercube dimension: the machine has 2^dimension nodes, node k's bit i is its "           \
-    "coordinate in dimension i (the simulator builds the hypercube with e-cube routing)")      \
-  X(node_speed, double, "flop/s", 1e3, 1e15, false, kHostSpeed,                                \
-    "floating-point speed of one node, the rate at which counted work (cost_model.json) is "   \
-    "executed; every node has the same")                                                       \
-  X(node_memory, double, "byte", 1, 0x1p50, true, kProperty,                                   \
-    "memory of one node; the node programs account their modeled bytes against it")           \
-  X(link_bandwidth, double, "byte/s", 1e3, 1e15, false, kInterconnect,                         \
-    "bandwidth of one hypercube link in each direction (links are full duplex)")               \
-  X(hop_latency, double, "s", 0, 1, false, kInterconnect,                                      \
-    "latency per hop of a route: a message alone over h hops takes h x hop_latency + "         \
-    "bytes / link_bandwidth")                                                                  \
-  X(send_overhead, double, "s", 0, 1, false, kProperty,                                        \
-    "CPU time the sending node spends per message before it leaves")                           \
-  X(receive_overhead, double, "s", 0, 1, false, kProperty,                                     \
-    "CPU time the receiving node spends per message when its program takes it")
+// "unit", when it gives one, must be the unit here. An optional parameter (the rates per kind
+// of work) may be left out of a platform file: it is then 0 in PlatformConfig, the kind of
+// work runs at node_speed, and the result file's provenance does not list it (so a machine
+// that gives only node_speed has the results, and the result files, it had before the rates
+// existed). docs/platform_tables.py parses these entries: keep each field a plain literal.
+#define NCUBE_MACHINE_PARAMETERS(X)                                                             \
+  X(dimension, int, "", 0, 13, true, kInterconnect, false,                                      \
+    "hypercube dimension: the machine has 2^dimension nodes, node k's bit i is its "            \
+    "coordinate in dimension i (the simulator builds the hypercube with e-cube routing)")       \
+  X(node_speed, double, "flop/s", 1e3, 1e15, false, kHostSpeed, false,                          \
+    "floating-point speed of one node, the rate at which counted work (cost_model.json) is "    \
+    "executed; every node has the same")                                                        \
+  X(node_memory, double, "byte", 1, 0x1p50, true, kProperty, false,                             \
+    "memory of one node; the node programs account their modeled bytes against it")             \
+  X(link_bandwidth, double, "byte/s", 1e3, 1e15, false, kInterconnect, false,                   \
+    "bandwidth of one hypercube link in each direction (links are full duplex)")                \
+  X(hop_latency, double, "s", 0, 1, false, kInterconnect, false,                                \
+    "latency per hop of a route: a message alone over h hops takes h x hop_latency + "          \
+    "bytes / link_bandwidth")                                                                   \
+  X(send_overhead, double, "s", 0, 1, false, kProperty, false,                                  \
+    "CPU time the sending node spends per message before it leaves")                            \
+  X(receive_overhead, double, "s", 0, 1, false, kProperty, false,                               \
+    "CPU time the receiving node spends per message when its program takes it")                 \
+  X(test_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                            \
+    "speed of one node on floating-point tests: the compare-and-branch loops of the visibility " \
+    "search (rays, ray-patch tests and their plane crossings, octree slab tests, the shooter "  \
+    "search, hemicube clip and depth tests, the renderer's sample tests), flops of "            \
+    "cost_model.json per second; left out: node_speed")                                         \
+  X(arithmetic_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                      \
+    "speed of one node on straight-line floating-point arithmetic: form factors (arctangents, " \
+    "square roots, divisions), radiosity updates, subdivision, hemicube transforms and "        \
+    "projections, the renderer's vertices, triangles and pixels; left out: node_speed")         \
+  X(memory_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                          \
+    "speed of one node on work that moves or accumulates data with one operation an item: "     \
+    "radiosity increments combined and applied, hemicube cells read out, histogram buckets "    \
+    "added; left out: node_speed")
 
 // The network model a JSON platform file gets when it has no "simgrid_config" (the nCube2's,
 // docs/model.md): X(SimGrid setting, value, why). Defaults that --cfg overrides. The one
@@ -55,12 +71,12 @@ enum class XmlForm {
 // because their bytes (hashed into every result file) are kept, and
 // tests/machine_parameters_test.cpp holds them to this list.
 #define NCUBE_NETWORK_MODEL(X)                                                                 \
-  X("network/model", "CM02",                                                                   \
-    "no latency or bandwidth correction factors (SimGrid's default LV08 multiplies latency "   \
-    "by 13)")                                                                                  \
-  X("network/crosstraffic", "0",                                                               \
-    "no reverse acknowledgement flow beside each message")                                     \
-  X("network/solver", "fairbottleneck",                                                        \
+  X("network/model", "CM02",                                                                    \
+    "no latency or bandwidth correction factors (SimGrid's default LV08 multiplies latency "    \
+    "by 13)")                                                                                   \
+  X("network/crosstraffic", "0",                                                                \
+    "no reverse acknowledgement flow beside each message")                                      \
+  X("network/solver", "fairbottleneck",                                                         \
     "a link is shared equally between the messages crossing it")
 
 struct MachineParameter {
@@ -69,6 +85,7 @@ struct MachineParameter {
   double low, high;  // inclusive
   bool whole;        // must be a whole number
   XmlForm xml;
+  bool optional;     // may be left out of a platform file (then 0: the kind runs at node_speed)
   const char* doc;
   bool integral;     // held as an int (the result file writes it without a fraction)
   double (*get)(const PlatformConfig&);

@@ -41,7 +41,10 @@ std::map<std::string, double> read_parameter_file(const std::string& path, const
   std::map<std::string, double> values;
   for (const ParameterSpec& spec : specs) {
     const std::string where = path + ": parameter \"" + spec.name + "\"";
-    if (!parameters.contains(spec.name)) throw InputError(where + ": missing");
+    if (!parameters.contains(spec.name)) {
+      if (spec.optional) continue;
+      throw InputError(where + ": missing");
+    }
     const nlohmann::json& entry = parameters[spec.name];
     if (!entry.is_object() || !entry.contains("value") || !entry["value"].is_number())
       throw InputError(where + ": expected {\"value\": <number>, ...}");

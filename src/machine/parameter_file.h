@@ -19,6 +19,7 @@ struct ParameterSpec {
   bool integer;       // must be a whole number
   double max_value = 1e300;  // inclusive upper bound
   const char* unit = nullptr;  // the "unit" a file may give (any when nullptr)
+  bool optional = false;       // may be left out (then absent from the values read)
 };
 
 // "" when `value` (as the file wrote it: `written`) is within the spec, else why not:
@@ -31,7 +32,7 @@ constexpr std::size_t kMaxParameterFileBytes = kPlatformFile.max_bytes;
 static_assert(kCostModelFile.max_bytes == kMaxParameterFileBytes);
 
 // Reads `path` as `kind` (kPlatformFile or kCostModelFile: util/input_file.h) and returns
-// the value of every parameter in `specs`. Throws InputError naming the file and the
+// the value of every parameter in `specs` (an optional one only when the file gives it). Throws InputError naming the file and the
 // parameter when one is missing, unknown, not a finite number, out of range, (for
 // integers) fractional, or given in another unit than the spec's.
 // `sections` names further top-level keys the file may have (read by the caller).

@@ -40,7 +40,8 @@ PlatformConfig load_platform_config(const std::string& path,
   for (const MachineParameter& p : machine_parameters()) specs.push_back(parameter_spec(p));
   const auto values = read_parameter_file(path, kPlatformFile, specs, {"simgrid_config"});
   PlatformConfig c;
-  for (const MachineParameter& p : machine_parameters()) p.set(c, values.at(p.name));
+  for (const MachineParameter& p : machine_parameters())
+    if (values.count(p.name)) p.set(c, values.at(p.name));  // an optional one left out: 0
   c.simgrid_config = read_simgrid_config(path);
   return c;
 }

@@ -14,7 +14,7 @@ namespace ncube {
 
 struct PlatformConfig {
   // One field per machine parameter (src/machine/machine_parameters.h: unit, range, meaning).
-#define NCUBE_PLATFORM_FIELD(name, type, unit, low, high, whole, xml, doc) type name = 0;
+#define NCUBE_PLATFORM_FIELD(name, type, unit, low, high, whole, xml, optional, doc) type name = 0;
   NCUBE_MACHINE_PARAMETERS(NCUBE_PLATFORM_FIELD)
 #undef NCUBE_PLATFORM_FIELD
 

@@ -41,6 +41,7 @@ double node_value(const std::string& path, simgrid::s4u::Host* host, const Machi
   const char* text = host->get_property(p.name);
   if (!text) text = host->get_englobing_zone()->get_property(p.name);
   const std::string where = host_name + xml_name(p);
+  if (!text && p.optional) return 0;  // left out: the kind of work runs at node_speed
   if (!text) throw InputError(where + ": missing");
   char* end = nullptr;
   const double value = std::strtod(text, &end);

@@ -1,5 +1,7 @@
 #include "nodes/node_runtime.h"
 
+#include "machine/work_kinds.h"
+
 #include <algorithm>
 
 #include <simgrid/s4u/Actor.hpp>
@@ -77,12 +79,12 @@ void NodeRuntime::run_charged() {
 
 void NodeRuntime::charge(const WorkCounts& counts) {
   stats_.counts += counts;
-  busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
+  busy(compute_seconds(costs_, platform_, counts), "compute", stats_.compute_seconds);
 }
 
 void NodeRuntime::charge(const RenderCounts& counts) {
   render_counts_ += counts;
-  busy(costs_.flops(counts) / platform_.node_speed, "compute", stats_.compute_seconds);
+  busy(compute_seconds(costs_, platform_, counts), "compute", stats_.compute_seconds);
 }
 
 void NodeRuntime::send(int to, std::unique_ptr<Message> message) {

@@ -12,8 +12,10 @@ nlohmann::json platform_values(const PlatformConfig& p) {
   // A SimGrid XML file's interconnect is the file's (its hash names it): only the values it
   // gives are written (src/machine/machine_parameters.h, carried_by).
   nlohmann::json values = {{"nodes", p.node_count()}};
+  // An optional parameter the file left out (0) is not listed: a machine that gives only
+  // node_speed keeps the values it had before the rates per kind of work existed.
   for (const MachineParameter& m : machine_parameters())
-    if (carried_by(m, p.format))
+    if (carried_by(m, p.format) && !(m.optional && m.get(p) == 0))
       values[m.name] = m.integral ? nlohmann::json(static_cast<long long>(m.get(p)))
                                   : nlohmann::json(m.get(p));
   return values;

@@ -323,7 +323,7 @@ def machine_cases(root, work):
 
     def platform_with(name, value, expect="error"):
         p = copy.deepcopy(ncube2)
-        p["parameters"][name]["value"] = value
+        p["parameters"].setdefault(name, {})["value"] = value  # an optional one added
         path = work / f"platform-{len(cases)}.json"
         path.write_text(json.dumps(p))
         cases.append({"group": "machine", "name": f"platform {name} {value}", "expect": expect,
@@ -332,18 +332,24 @@ def machine_cases(root, work):
 
     xml = (root / "platforms" / "ncube2.xml").read_text()
 
-    def xml_with(name, form, value):
+    def xml_with(name, form, value, optional=False):
         """platforms/ncube2.xml with the parameter's speed or <prop> given `value` (None: the
         <prop> left out)."""
         if form == "kHostSpeed":
             pattern, text = r'(<cluster [^>]*?\bspeed=")[^"]*(")', f"{value}f"
         else:
             pattern, text = r'(<prop id="%s" value=")[^"]*("/>)' % re.escape(name), str(value)
-        if not re.search(pattern, xml):
+        if not re.search(pattern, xml) and optional and value is not None:
+            # An optional <prop> ncube2.xml leaves out: added beside node_memory.
+            base = xml.replace('<prop id="node_memory"', '<prop id="%s" value="%s"/>\n    '
+                               '<prop id="node_memory"' % (name, value), 1)
+        else:
+            base = xml
+        if not re.search(pattern, base):
             raise ValueError(f"platforms/ncube2.xml does not give {name} "
                              f"(src/machine/machine_parameters.h: {form})")
-        changed = (re.sub(pattern, lambda m: m.group(1) + text + m.group(2), xml, count=1)
-                   if value is not None else re.sub(r'\s*' + pattern, "", xml, count=1))
+        changed = (re.sub(pattern, lambda m: m.group(1) + text + m.group(2), base, count=1)
+                   if value is not None else re.sub(r'\s*' + pattern, "", base, count=1))
         path = work / f"platform-{len(cases)}.xml"
         path.write_text(changed)
         what = "left out" if value is None else value
@@ -376,9 +382,9 @@ def machine_cases(root, work):
         for value in values:
             platform_with(p["name"], int(value) if value == int(value) and abs(value) < 2 ** 53 else value)
         if p["xml"] != "kInterconnect":
-            xml_with(p["name"], p["xml"], repr(above))
-            xml_with(p["name"], p["xml"], repr(below))
-        if p["xml"] == "kProperty":
+            xml_with(p["name"], p["xml"], repr(above), p["optional"])
+            xml_with(p["name"], p["xml"], repr(below), p["optional"])
+        if p["xml"] == "kProperty" and not p["optional"]:  # an optional one may be left out
             xml_with(p["name"], p["xml"], None)
     platform_with("node_speed", 0)
     costs_with("flops_per_ray", 1e300)

@@ -1,0 +1,76 @@
+// Which kind of work each counted operation is, and so which of a machine's rates runs it
+// (src/machine/machine_parameters.h: test_speed, arithmetic_speed, memory_speed). A machine is
+// a cost per kind of work: the cost model (platforms/cost_model.json) says how many flops an
+// operation is, the machine how fast it runs flops of each kind. Why these kinds and why each
+// counter is where it is: docs/machines/README.md, "Rates per kind of work".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "machine/cost_model.h"
+#include "machine/platform_config.h"
+
+namespace ncube {
+
+// X(cost-model parameter, the machine parameter that is its rate). Every parameter of
+// NCUBE_WORK_COUNTERS and NCUBE_RENDER_COUNTERS once (tests/cost_model_test.cpp).
+#define NCUBE_WORK_KINDS(X)                                                                     \
+  X(flops_per_shooter_candidate, test_speed)                                                    \
+  X(flops_per_receiver, test_speed)                                                             \
+  X(flops_per_ray, test_speed)                                                                  \
+  X(flops_per_ray_patch_test, test_speed)                                                       \
+  X(flops_per_plane_crossing, test_speed)                                                       \
+  X(flops_per_form_factor, arithmetic_speed)                                                    \
+  X(flops_per_element_update, arithmetic_speed)                                                 \
+  X(flops_per_subdivision_test, arithmetic_speed)                                               \
+  X(flops_per_element_created, arithmetic_speed)                                                \
+  X(flops_per_octree_cell_visited, test_speed)                                                  \
+  X(flops_per_octree_overlap_test, test_speed)                                                  \
+  X(flops_per_octree_cell_built, arithmetic_speed)                                              \
+  X(flops_per_increment_combined, memory_speed)                                                 \
+  X(flops_per_increment_applied, memory_speed)                                                  \
+  X(flops_per_hemicube_delta_form_factor, arithmetic_speed)                                     \
+  X(flops_per_hemicube_vertex_transformed, arithmetic_speed)                                    \
+  X(flops_per_hemicube_polygon_set_up, arithmetic_speed)                                        \
+  X(flops_per_hemicube_clip_test, test_speed)                                                   \
+  X(flops_per_hemicube_clip_cut, arithmetic_speed)                                              \
+  X(flops_per_hemicube_vertex_projected, arithmetic_speed)                                      \
+  X(flops_per_hemicube_polygon_scanned, arithmetic_speed)                                       \
+  X(flops_per_hemicube_row_scanned, arithmetic_speed)                                           \
+  X(flops_per_hemicube_depth_test, test_speed)                                                  \
+  X(flops_per_hemicube_cell_read, memory_speed)                                                 \
+  X(flops_per_render_vertex, arithmetic_speed)                                                  \
+  X(flops_per_clip_vertex, arithmetic_speed)                                                    \
+  X(flops_per_projected_vertex, arithmetic_speed)                                               \
+  X(flops_per_triangle, arithmetic_speed)                                                       \
+  X(flops_per_sample_tested, test_speed)                                                        \
+  X(flops_per_sample_inside, test_speed)                                                        \
+  X(flops_per_sample_written, arithmetic_speed)                                                 \
+  X(flops_per_exposure_sample, test_speed)                                                      \
+  X(flops_per_histogram_bucket, memory_speed)                                                   \
+  X(flops_per_pixel_resolved, arithmetic_speed)
+
+// The rates' names (machine parameters), in the order they first appear above.
+const std::vector<std::string>& work_rate_names();
+
+// The rate that runs a cost-model parameter's flops ("" for one the list lacks).
+std::string work_rate_of(const std::string& cost_parameter);
+
+// Whether the platform gives any rate per kind of work. A platform that gives none runs all
+// counted work at node_speed, with the very expression it had before the rates existed, so
+// that its simulated seconds stay the same to the last bit.
+bool gives_work_rates(const PlatformConfig& platform);
+
+// The flops of `counts` whose kind runs at `rate` (a name of work_rate_names()): what a
+// probe of the rate divides by the seconds it measured (build/machine_probe).
+double kind_flops(const CostModel& costs, const WorkCounts& counts, const std::string& rate);
+
+// Simulated CPU seconds of counted work on one node of `platform`: the flops of each kind at
+// that kind's rate (node_speed for a kind the platform does not give).
+double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
+                       const WorkCounts& counts);
+double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
+                       const RenderCounts& counts);
+
+}  // namespace ncube

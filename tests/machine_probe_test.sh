@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# build/machine_probe (src/tools/machine_probe_main.cpp, docs/machines/probe.md):
+#  - its errors: no --out (exit 2), --out a folder (exit 5), a --network that is not a platform
+#    of platforms/machines/ (exit 2, no file left);
+#  - the file it writes loads and runs, with the two measured rates read back into the result's
+#    provenance and each rate's measurement (median of the repeats, spread) in the file;
+#  - the prediction on a small case: scene1, one node, iteration 2 alone (the difference of a
+#    1- and a 2-iteration run), simulated seconds on the probed platform against the host's CPU
+#    seconds of the same iteration with the readable definitions on one thread. The tolerance,
+#    stated before measuring, is 25 %: the issue's 10 % is held on four scenes by
+#    docs/machines/prediction_table.py; here, on a shared 2-core host during a test suite, the
+#    least of 2 CPU times still moves by more (cache sharing), and the case is short.
+# Usage: bash tests/machine_probe_test.sh <path-to-simulate-binary> <repo-root>
+set -euo pipefail
+
+simulate="$(realpath "${1:?usage: machine_probe_test.sh <simulate> <repo-root>}")"
+root="${2:-$(cd "$(dirname "$0")/.." && pwd)}"
+probe="$(dirname "$simulate")/machine_probe"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+tolerance=0.25
+
+# 1. Errors.
+set +e
+"$probe" >/dev/null 2>"$tmp/err"; [[ $? == 2 ]] || fail "no --out: not exit 2"
+grep -q -- "--out" "$tmp/err" || fail "no --out: the message does not name --out"
+"$probe" --out "$tmp" --repeats 3 >/dev/null 2>"$tmp/err"; [[ $? == 5 ]] || fail "--out a folder: not exit 5"
+"$probe" --out "$tmp/x.xml" --repeats 3 --network "$root/scenes/scene0.json" >/dev/null 2>"$tmp/err"
+[[ $? == 2 ]] || fail "--network a scene: not exit 2"
+grep -q "scene0.json" "$tmp/err" || fail "--network a scene: the message does not name the file"
+[[ ! -e "$tmp/x.xml" ]] || fail "--network a scene: a file was left"
+set -e
+
+# 2. The file.
+"$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said"
+for rate in test_speed arithmetic_speed; do
+  grep -q "<prop id=\"$rate\" value=\"" "$tmp/probed.xml" || fail "no $rate <prop>"
+  grep -q "$rate = .* flop/s: " "$tmp/probed.xml" || fail "no measurement of $rate in the file"
+done
+grep -q "median of 3 repeats" "$tmp/probed.xml" || fail "the file does not give the repeats"
+grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
+grep -q 'topo_parameters="2;16,4;1,4;1,4"' "$tmp/probed.xml" || fail "not the 2024 cluster's network"
+
+# 3. The prediction: least of 2 CPU times for 1 and for 2 iterations.
+/usr/bin/python3 - "$simulate" "$root" "$tmp" "$tolerance" <<'PY'
+import json, resource, subprocess, sys
+simulate, root, tmp, tolerance = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+def run(iterations):
+    least = None
+    for _ in range(2):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        subprocess.run([simulate, f"{root}/scenes/scene1.json", "--R", "1", "--V", "0",
+                        "--iterations", str(iterations), "--reference-visibility", "--threads", "1",
+                        "--platform", f"{tmp}/probed.xml", "--json", f"{tmp}/r.json", "--quiet"],
+                       check=True)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+        least = cpu if least is None else min(least, cpu)
+    result = json.load(open(f"{tmp}/r.json"))
+    values = result["provenance"]["platform"]["values"]
+    assert "test_speed" in values and "arithmetic_speed" in values, values
+    return result["simulated_seconds"], least
+s1, c1 = run(1)
+s2, c2 = run(2)
+error = (s2 - s1) / (c2 - c1) - 1
+print(f"scene1, iteration 2: simulated {s2 - s1:.4f} s, host CPU {c2 - c1:.4f} s, {100 * error:+.1f} %")
+if abs(error) > tolerance:
+    sys.exit(f"FAIL: the prediction misses by {100 * error:+.1f} %, beyond {100 * tolerance:.0f} %")
+PY
+echo "machine_probe_test: ok"

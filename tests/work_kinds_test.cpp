@@ -1,0 +1,107 @@
+// Rates per kind of work (src/machine/work_kinds.h): every counted operation has a kind whose
+// rate is an optional machine parameter; a machine that gives no rate is charged exactly as
+// with one flop rate; one that gives them is charged each kind at its rate (worked by hand).
+#include "machine/work_kinds.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "machine/machine_parameters.h"
+
+namespace ncube {
+namespace {
+
+const MachineParameter* parameter_named(const std::string& name) {
+  for (const MachineParameter& p : machine_parameters())
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
+TEST(WorkKinds, EveryCounterHasAKindWhoseRateIsAnOptionalMachineParameter) {
+  std::set<std::string> listed;
+#define NCUBE_CHECK_KIND(member, cost, doc)                                          \
+  EXPECT_NE(work_rate_of(#cost), "") << #cost << " has no kind (work_kinds.h)";      \
+  listed.insert(#cost);
+  NCUBE_WORK_COUNTERS(NCUBE_CHECK_KIND)
+  NCUBE_RENDER_COUNTERS(NCUBE_CHECK_KIND)
+#undef NCUBE_CHECK_KIND
+  std::set<std::string> kinds;
+#define NCUBE_KIND_LISTED(cost, rate)                                                 \
+  EXPECT_TRUE(listed.count(#cost)) << #cost << ": no such counter's parameter";       \
+  EXPECT_TRUE(kinds.insert(#cost).second) << #cost << " listed twice";
+  NCUBE_WORK_KINDS(NCUBE_KIND_LISTED)
+#undef NCUBE_KIND_LISTED
+  EXPECT_EQ(kinds, listed);
+  ASSERT_EQ(work_rate_names(),
+            (std::vector<std::string>{"test_speed", "arithmetic_speed", "memory_speed"}));
+  for (const std::string& rate : work_rate_names()) {
+    const MachineParameter* p = parameter_named(rate);
+    ASSERT_NE(p, nullptr) << rate;
+    EXPECT_TRUE(p->optional) << rate;
+    EXPECT_EQ(std::string(p->unit), "flop/s") << rate;
+  }
+}
+
+CostModel hand_costs() {
+  CostModel c;
+  c.flops_per_ray = 9;
+  c.flops_per_ray_patch_test = 17.3547;
+  c.flops_per_plane_crossing = 27.2143;
+  c.flops_per_form_factor = 180;
+  c.flops_per_element_update = 15;
+  c.flops_per_increment_combined = 3;
+  c.flops_per_sample_tested = 26;
+  c.flops_per_pixel_resolved = 180;
+  c.flops_per_histogram_bucket = 1;
+  return c;
+}
+
+WorkCounts hand_counts() {
+  WorkCounts w;
+  w.rays = 7;
+  w.ray_patch_tests = 1000;
+  w.plane_crossings = 130;
+  w.form_factors = 5;
+  w.element_updates = 4;
+  w.increments_combined = 11;
+  return w;
+}
+
+TEST(WorkKinds, AMachineWithoutRatesIsChargedAsWithOneFlopRateToTheLastBit) {
+  PlatformConfig p;
+  p.node_speed = 2.5e6;
+  const CostModel c = hand_costs();
+  EXPECT_FALSE(gives_work_rates(p));
+  EXPECT_EQ(compute_seconds(c, p, hand_counts()), c.flops(hand_counts()) / 2.5e6);
+  RenderCounts r;
+  r.samples_tested = 100;
+  r.pixels_resolved = 3;
+  EXPECT_EQ(compute_seconds(c, p, r), c.flops(r) / 2.5e6);
+}
+
+TEST(WorkKinds, EachKindRunsAtItsOwnRate) {
+  PlatformConfig p;
+  p.node_speed = 1e6;
+  p.test_speed = 4e8;
+  p.arithmetic_speed = 2e8;
+  p.memory_speed = 1e9;
+  EXPECT_TRUE(gives_work_rates(p));
+  // By hand: tests (7 x 9 + 1000 x 17.3547 + 130 x 27.2143) / 4e8, arithmetic
+  // (5 x 180 + 4 x 15) / 2e8, memory 11 x 3 / 1e9.
+  const double expected = (63 + 17354.7 + 3537.859) / 4e8 + 960 / 2e8 + 33 / 1e9;
+  EXPECT_NEAR(compute_seconds(hand_costs(), p, hand_counts()), expected, expected * 1e-12);
+  // A kind the machine leaves out runs at node_speed.
+  p.memory_speed = 0;
+  EXPECT_NEAR(compute_seconds(hand_costs(), p, hand_counts()),
+              (63 + 17354.7 + 3537.859) / 4e8 + 960 / 2e8 + 33 / 1e6, expected * 1e-12);
+  RenderCounts r;
+  r.samples_tested = 100;
+  r.pixels_resolved = 3;
+  r.histogram_buckets = 512;
+  EXPECT_NEAR(compute_seconds(hand_costs(), p, r), 2600 / 4e8 + 540 / 2e8 + 512 / 1e6, 1e-15);
+}
+
+}  // namespace
+}  // namespace ncube
