@@ -372,7 +372,7 @@ def main():
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
     args = parser.parse_args()
     page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
-                  f"without a result in {page.shown(args.results)}/claims/ itself")
+                  f"without a result in {page.shown(args.results)}/claims/ itself", announce=False)
     try:
         sweeps = sweep.load_all(args.sweeps)
         picture_cells = [c for s in sweep.load_all(args.pictures) for c in s.cells] if args.pictures else []
@@ -385,6 +385,12 @@ def main():
             if cell.id not in seen:
                 seen.add(cell.id)
                 cells.append(cell)
+    for scene in sorted({c.scene for c in cells}):   # before any run: one line, nothing run
+        if not (ROOT / "analysis" / "reference" / f"{scene}.json").exists():
+            raise SystemExit(f"claims: no reference for {scene}: run "
+                             f"experiments/claims/references {scene}")
+    page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
+                  f"without a result in {page.shown(args.results)}/claims/ itself")
     try:
         rows, references = measure(cells, args.results.resolve(), args.jobs)
         labels = (pictures(picture_cells, args.results.resolve(), args.jobs, args.pictures_figure)

@@ -56,12 +56,13 @@ def simulator(binary=None):
     return binary or os.environ.get("NCUBE_SIMULATE") or str(paths.ROOT / "build" / "simulate")
 
 
-def will_run(script, what, binary=None):
-    """A script that runs its own cells says so before it starts; without a simulator built,
-    it refuses."""
+def will_run(script, what, binary=None, announce=True):
+    """A script that runs its own cells says so before it starts (unless not `announce`: a
+    check before its other checks); without a simulator built, it refuses."""
     binary = simulator(binary)
     if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
         refuse(script, f"it runs {what} with {shown(binary)}, which is not built (cmake -S . "
                        f"-B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2)")
-    print(f"{script}: runs {what} (a cell with a finished result is not run again)",
-          file=sys.stderr, flush=True)
+    if announce:
+        print(f"{script}: runs {what} (a cell with a finished result is not run again)",
+              file=sys.stderr, flush=True)
