@@ -16,14 +16,6 @@ file's `counts`) is read from the X-macro lists of the simulator (NCUBE_WORK_COU
 NCUBE_RENDER_COUNTERS), wherever under src/ they live. Python 3 standard library only.
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import json
 import re

@@ -11,14 +11,6 @@ marker comments `<!-- options:all begin -->` and `<!-- options:all end -->`; the
 docs/cli.md is left as it is. Python 3 standard library only.
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import json
 import sys
 from pathlib import Path

@@ -17,14 +17,6 @@ docs/result-format.md); the rest of each document is left as it is. tests/robust
 reads the list through `machine_parameters()` too. Python 3 standard library only.
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import json
 import re

@@ -11,14 +11,6 @@ the committed files are exactly what it writes). The nCube2 was built with up to
 each node has 13 hypercube channels (TOP500 1994 report; docs/ncube2-sources.md).
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import json
 import os

@@ -21,14 +21,6 @@ This file is the entry point only; the generator is the package scenes/generator
 per concern (its __init__.py lists them).
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import os
 import sys
 

@@ -1,7 +1,9 @@
 """The one rule for which Python runs the project's scripts (README.md, "Use"): Debian's
 /usr/bin/python3, which has numpy, matplotlib and yaml (.ci/install-deps).
 
-Every script calls use_project_python() before anything else it imports. Started by another
+Every script that uses those packages calls use_project_python() before anything else it
+imports (the scripts of the standard library alone, docs/*_table*.py and the generators, need
+no rule: any python3 runs them, and tests copy them alone). Started by another
 python3 that lacks those packages (a pyenv shim or a virtual environment first on PATH,
 python3 -S), the script restarts itself under /usr/bin/python3 with the same arguments, so
 `python3 SCRIPT`, `/usr/bin/python3 SCRIPT` and `SCRIPT` do the same thing. When

@@ -9,14 +9,6 @@ in it is read from the SimGrid XML (a cluster's attributes and <prop>s, or a zon
 and <prop>s), so it cannot drift from the files (tests/machines_platforms_test.sh runs --check).
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import glob
 import os

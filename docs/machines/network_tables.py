@@ -21,14 +21,6 @@ docs/ncube2-sources.md to the benchmark (the comparison below it is then not che
 docs/network-benchmark.md describes the benchmark. Python 3 standard library only.
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import json
 import math

@@ -16,14 +16,6 @@ topologies are used where the machine's network is one of them (TORUS, FAT_TREE)
 Paragon's mesh, which has no wrap-around links, is a Dijkstra zone of one router per node.
 """
 
-import sys  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
-from ncube.interpreter import use_project_python  # noqa: E402
-
-use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
-
 import argparse
 import os
 import sys
