@@ -12,6 +12,11 @@ and without balancing, and how close balancing gets to an even share.
 The table's runs have --unlimited-memory (scene2 with subdivision outgrows 4 MB per node
 without balancing, which the memory-pressure runs show separately, with the 4 MB cap).
 """
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import concurrent.futures
 import json
@@ -19,6 +24,8 @@ import os
 import subprocess
 import sys
 import tempfile
+
+from ncube import page  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CONFIGS = [(4, 0), (8, 0), (16, 0), (64, 0), (8, 7)]
@@ -102,6 +109,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="simulations run at once")
     ap.add_argument("--output", default=os.path.join(ROOT, "analysis", "adaptive.md"))
     args = ap.parse_args()
+    page.will_run("adaptive.py", "its 22 runs (the Cornell box and scene2, with and without "
+                  "--balance) itself", args.simulate)
     jobs = []
     for scene in SCENES:
         with open(os.path.join(ROOT, "scenes", scene)) as f:

@@ -11,6 +11,11 @@ runs with the paper; the report lists both).
 
 usage: analysis/calibrate.py [--dry-run] [--set OPTION=VALUE ...]
 """
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
 import sys
@@ -19,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ncube import page  # noqa: E402
 from ncube import simulate as simulator
 from ncube import sweep as sweeps
 from ncube.paths import ANALYSIS, EXPERIMENTS, PLATFORMS
@@ -69,6 +75,8 @@ def main():
                         help="a simulate option for the calibration runs (a what-if), as in a "
                              "sweep file: skip_facing_away=true, ray_test=first-blocker")
     args = parser.parse_args()
+    page.will_run("calibrate.py", "the calibration cells of analysis/calibration.json itself "
+                  "(a few runs per Newton step)")
     import yaml
     changes = {k: yaml.safe_load(v) for k, _, v in (item.partition("=") for item in args.set)}
     calibration = json.loads((ANALYSIS / "calibration.json").read_text())

@@ -15,6 +15,11 @@ analysis/figures/claims_accuracy.png.
 A series is a cell's every option but its accuracy knob (samples for ray-traced form factors,
 hemicube_resolution for the hemicube), so that the hemicube's and the shooters' cells, added
 as further sweep files, become further lines of the same plots and rows of the same tables."""
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import concurrent.futures
 import json
@@ -24,7 +29,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ncube import accuracy, output_file, paths, plotting, sweep  # noqa: E402
+from ncube import accuracy, output_file, page, paths, plotting, sweep  # noqa: E402
 
 ROOT = paths.ROOT
 KNOBS = ("samples", "hemicube_resolution")   # the accuracy knob of each form-factor method
@@ -366,6 +371,8 @@ def main():
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
     args = parser.parse_args()
+    page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
+                  f"without a result in {page.shown(args.results)}/claims/ itself", announce=False)
     try:
         sweeps = sweep.load_all(args.sweeps)
         picture_cells = [c for s in sweep.load_all(args.pictures) for c in s.cells] if args.pictures else []
@@ -378,6 +385,12 @@ def main():
             if cell.id not in seen:
                 seen.add(cell.id)
                 cells.append(cell)
+    for scene in sorted({c.scene for c in cells}):   # before any run: one line, nothing run
+        if not (ROOT / "analysis" / "reference" / f"{scene}.json").exists():
+            raise SystemExit(f"claims: no reference for {scene}: run "
+                             f"experiments/claims/references {scene}")
+    page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
+                  f"without a result in {page.shown(args.results)}/claims/ itself")
     try:
         rows, references = measure(cells, args.results.resolve(), args.jobs)
         labels = (pictures(picture_cells, args.results.resolve(), args.jobs, args.pictures_figure)

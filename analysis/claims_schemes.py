@@ -20,6 +20,11 @@ analysis/claims.md; run alone it prints it:
   /usr/bin/python3 analysis/claims_schemes.py [--results results] [--jobs 2]
 
 Writes analysis/figures/claims_schemes_speedup.png (the speedup curves)."""
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import concurrent.futures
 import dataclasses
@@ -32,7 +37,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ncube import accuracy, paths, plotting, sweep  # noqa: E402
+from ncube import accuracy, page, paths, plotting, sweep  # noqa: E402
 
 ROOT = paths.ROOT
 SWEEP = ROOT / "experiments" / "claims" / "schemes.yaml"
@@ -503,6 +508,8 @@ def main():
     parser.add_argument("--sweep", type=Path, default=SWEEP)
     parser.add_argument("--figure", type=Path, default=FIGURE)
     args = parser.parse_args()
+    page.will_run("claims_schemes.py", f"the cells of {page.shown(args.sweep)} without a result "
+                  f"in {page.shown(args.results)}/claims/schemes/ itself")
     try:
         print(section(args.results, args.jobs, args.sweep, args.figure))
     except sweep.SweepError as e:

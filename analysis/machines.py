@@ -2,8 +2,8 @@
 """What porting the program would have meant: the paper's Table 4 on each machine; writes
 analysis/machines.md and analysis/figures/machines_time_vs_R.png.
 
-usage: /usr/bin/python3 analysis/machines.py [--run] [--results DIR] [--sweep FILE]
-                                              [--output FILE] [--figures DIR]
+usage: python3 analysis/machines.py [--run] [--results DIR] [--sweep FILE] [--partial]
+                                     [--output FILE] [--figures DIR]
 
 The sweep file (default experiments/machines/table4.yaml) is the one list of the study: its
 grid's `platform` entries are the machines (the first is the reference every figure is
@@ -13,8 +13,9 @@ R, V and the scene are Table 4's rows. A method whose cells all have V = 0 (the 
 shooter-centred scheme) is shown beside Table 4's V = 0 row in a section of its own, per shot
 (seconds per iteration / shooters per iteration), with its communication share and the bytes
 its nodes send an iteration; Table 4's tables, sentences and figure keep the other methods. With --run the cells without a finished result in DIR (default
-results/machines/) run first through experiments/sweep; without it, what is in DIR is read
-and a cell without a result is shown as not run.
+results/machines/) run first through experiments/sweep; without it, what is in DIR is read.
+A cell still without a result makes it refuse in one line, writing nothing (ncube.page);
+with --partial the page is written and such a cell is shown as not run.
 
 A cell out of simulated memory (./simulate exit 3, status "out_of_memory") is a finding, not a
 failure: it is shown as such, with the node that did not fit. The share of time in
@@ -24,6 +25,11 @@ messages in flight and on the other nodes' work) and compute, in node-seconds.
 
 Every number and sentence of the output is computed from the result files (sorted, no dates,
 no host times), so the same results give the same page, and other results other sentences."""
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import os
 import subprocess
@@ -31,10 +37,8 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)  # Debian's, with matplotlib
 
-from ncube import results  # noqa: E402
+from ncube import page, results  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
 from ncube.sweep import SweepError, load  # noqa: E402
 
@@ -846,8 +850,9 @@ def simulate_command(cell):
 def run_sweep(sweep_file, results_dir):
     missing = [c for c in load(sweep_file).cells
                if results.mismatch(results.read(results_dir / c.file), c) is not None]
-    print(f"machines: {len(missing)} cells to run", file=sys.stderr)
     if missing:
+        page.will_run("machines.py", f"the {len(missing)} cells of {page.shown(sweep_file)} "
+                      f"without a result in {page.shown(results_dir)}/ through experiments/sweep")
         code = subprocess.run([sys.executable, str(ROOT / "experiments" / "sweep"),
                                str(sweep_file), "--results", str(results_dir)]).returncode
         if code != 0:
@@ -866,6 +871,8 @@ def main():
                         help=f"the page to write (default: {rel(OUTPUT)})")
     parser.add_argument("--figures", type=Path, default=FIGURES,
                         help=f"the folder of its figure (default: {rel(FIGURES)}/)")
+    parser.add_argument("--partial", action="store_true",
+                        help="write the page even when cells have no result (shown as not run)")
     args = parser.parse_args()
     results_dir = args.results.resolve()
     try:
@@ -876,6 +883,10 @@ def main():
     if args.run:
         run_sweep(args.sweep, results_dir)
     found = entries(sweep, results_dir)
+    if not args.partial:
+        page.require_results("machines.py", [e.cell.file for e in found if e.status == "missing"],
+                             len(found), results_dir,
+                             "add --run to run them (experiments/sweep) first")
     v0_only = v0_methods(found)
     study = Study(sweep, [e for e in found if e.method not in v0_only])
     others = [e for e in found if e.method in v0_only]

@@ -14,22 +14,24 @@ at the cost model's sizes and one per size raised by DELTA bytes give each node'
 function of the sizes. From that, this script finds, for each size alone and for the pair
 (element_bytes, node_reserve_bytes), the range over which every observation holds.
 """
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
+import argparse
 import json
-import os
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-try:
-    import matplotlib
-except ImportError:  # Debian's python3 has matplotlib; another python3 first on PATH may not
-    if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
-    raise
+import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from ncube import page  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 ANALYSIS = ROOT / "analysis"
@@ -156,6 +158,9 @@ def figure(cells, models, base_values, capacity, path):
 
 
 def main():
+    argparse.ArgumentParser(description=__doc__.splitlines()[0]).parse_args()
+    page.will_run("memory_sensitivity.py", "its memory-plan-only runs (--iterations 0) itself",
+                  str(ROOT / "build" / "simulate"))
     document = json.loads((ROOT / "platforms" / "cost_model.json").read_text())
     platform = json.loads((ROOT / "platforms" / "ncube2.json").read_text())
     capacity = float(platform["parameters"]["node_memory"]["value"])

@@ -24,16 +24,18 @@ scenes/generate.py writes rooms first, then furniture. For every seed this scrip
 Seed 0 stands for the committed order and cost model (the results of experiments/reproduce in
 results/, run if missing). The output depends only on the seeds and the inputs.
 """
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
-import os
 import random
 import subprocess
 import sys
 from pathlib import Path
 
-if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)  # Debian's, with numpy
 
 import numpy as np  # noqa: E402
 
@@ -42,6 +44,7 @@ from ncube import sweep as sweeps  # noqa: E402
 from ncube.paper.cells import load_inputs, unique_cells  # noqa: E402
 from ncube.paper.sections import error_statistics  # noqa: E402
 from ncube import findings as fnd  # noqa: E402
+from ncube import page  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, PLATFORMS, ROOT, SCENES  # noqa: E402
 
 SCENE_NAMES = ["scene0", "scene1", "scene2", "scene3"]
@@ -163,6 +166,8 @@ def main():
     parser.add_argument("--results", type=Path, default=ROOT / "results" / "patch-order")
     parser.add_argument("--cores", type=int, default=2)
     args = parser.parse_args()
+    page.will_run("patch_order.py", f"a refit and the paper's sweeps for each of the seeds "
+                  f"{', '.join(map(str, args.seeds))} into {page.shown(args.results)}/ itself")
     names, cells = calibration_cells()
     fitted_now = {n: float(json.loads((PLATFORMS / "cost_model.json").read_text())
                            ["parameters"][n]["value"]) for n in names}

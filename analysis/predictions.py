@@ -13,17 +13,20 @@ each question, the simulator's figure and the command that repeats it:
 * render.yaml: the parallel rendering phase (section 2.3), each partition and distribution.
 
 The output depends only on the result files (sorted, no dates, no host times)."""
+
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import os
 import subprocess
 import sys
 from pathlib import Path
 
-if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)  # Debian's, with matplotlib
 
 from ncube import options as opts  # noqa: E402
-from ncube import results, summary  # noqa: E402
+from ncube import page, results, summary  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
 from ncube.sweep import load_all  # noqa: E402
 
@@ -225,6 +228,8 @@ def main():
                         help=f"the results folder (default: {RESULTS}/)")
     args = parser.parse_args()
     results_dir = args.results.resolve()
+    page.will_run("predictions.py", f"the cells of {page.shown(SWEEP_DIR)}/ without a result in "
+                  f"{page.shown(results_dir)}/ through experiments/sweep")
     sweeps = load_all([SWEEP_DIR / f for f in SWEEP_FILES])
     run_missing(sweeps, results_dir)
     sections = {"octree-tables": octree_section, "scene4-hypercubes": scene4_section,

@@ -2,7 +2,10 @@
 """Compares the simulated sweeps with the paper's five tables: writes analysis/report.md and the
 PNG figures under analysis/figures/.
 
-usage: python3 analysis/report.py [--results DIR]
+usage: python3 analysis/report.py [--results DIR] [--partial]
+
+Without a result for every cell of the paper sweeps it refuses in one line, writing nothing
+(ncube.page); --partial writes the report anyway, with the missing cells "not run".
 
 Inputs: analysis/paper_tables.json (the paper's tables), the paper sweeps as run into DIR
 (DIR/plan.json, else experiments/*.json), their result files, platforms/*.json (fitted
@@ -11,13 +14,13 @@ only on these inputs (no dates, sorted iteration everywhere), so the same result
 report. The parts: ncube.paper.cells (inputs), ncube.paper.sections (text),
 ncube.findings (F1-F6), ncube.paper.figures; every sweep's own CSV and plots come from
 experiments/sweep (ncube.summary)."""
-import argparse
-import os
-import sys
-from pathlib import Path
 
-if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)  # Debian's, with matplotlib
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
+import argparse
+from pathlib import Path
 
 from ncube.paper import figures  # noqa: E402
 from ncube.paper.cells import load_inputs  # noqa: E402
@@ -25,6 +28,7 @@ from ncube.paper.sections import (findings_section, header_section, summary_sect
                                   tables_section)
 from ncube.paper.text import relative  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
+from ncube import page  # noqa: E402
 
 REPORT = ANALYSIS / "report.md"
 
@@ -33,9 +37,19 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results",
                         help="the results folder of experiments/reproduce (default: results/)")
+    parser.add_argument("--partial", action="store_true",
+                        help="write the report even when cells have no result (shown as not run)")
     args = parser.parse_args()
     figures.FIGURES = ANALYSIS / "figures"
     inputs = load_inputs(args.results.resolve())
+    needed = sorted({c.key for c in inputs.cells if c.key} |
+                    ({inputs.timeline.key} if inputs.timeline else set()))
+    missing = sorted({c.key for c in inputs.cells if c.key and c.result is None} |
+                     ({inputs.timeline.key} if inputs.timeline and inputs.timeline.result is None
+                      else set()))
+    if not args.partial:
+        page.require_results("report.py", missing, len(needed), args.results,
+                             "run experiments/reproduce first")
     findings_lines, findings = findings_section(inputs)
     lines = (header_section(inputs) + tables_section(inputs) + summary_section(inputs) +
              findings_lines + figures.figures_section(inputs))

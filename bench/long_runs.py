@@ -29,6 +29,15 @@ the replay's CPU seconds.
 --iterations N caps the runs at N iterations (quick checks of the script).
 Writes bench/measured/long_runs.json.
 """
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
 import os

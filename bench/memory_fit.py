@@ -11,6 +11,14 @@ Runs `simulate --iterations 0 --unlimited-memory` once per row (nothing is shot;
 each for scene4, most of it loading the scene).
 """
 
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
 import os

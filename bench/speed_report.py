@@ -17,6 +17,15 @@ The runs to convergence (--converge, --converge-only) run old and new in turn, r
 seconds and peak resident memory, and check that both result files agree byte for byte apart
 from host seconds, the code version and the paths of the input files.
 """
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
 import os

@@ -21,6 +21,14 @@ every run on one host thread, so about as long on an idle machine. Python 3 stan
 only.
 """
 
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import functools
 import json
 import os
@@ -393,6 +401,9 @@ def generic_checks(probe):
 
 
 def main():
+    if sys.argv[1:] in (["-h"], ["--help"]):
+        print("usage: docs_figures.py SIMULATE\n" + __doc__)
+        return 0
     if len(sys.argv) != 2:
         sys.exit("usage: docs_figures.py SIMULATE")
     failures = []

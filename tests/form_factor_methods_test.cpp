@@ -87,6 +87,18 @@ TEST(FormFactorMethods, TheResultFileRecordsTheHemicubeOnlyForHemicubeRuns) {
   EXPECT_THROW(result_to_json(scene, config, SimulationResult{}), std::logic_error);
 }
 
+// Each node program calls another of them (the paper's radiosity processor `shoot`, the
+// shooter-centred scheme's `form_factors`): an empty one is a run failing with exit 7
+// (docs/architecture.md, "Form-factor methods").
+TEST(FormFactorMethods, EveryRegistrationHasAllFourFunctions) {
+  for (const FormFactorMethod& method : form_factor_methods().all()) {
+    EXPECT_TRUE(method.shoot) << method.name;
+    EXPECT_TRUE(method.form_factors) << method.name;
+    EXPECT_TRUE(method.setup_work) << method.name;
+    EXPECT_TRUE(method.node_bytes) << method.name;
+  }
+}
+
 TEST(FormFactorMethods, EveryMethodHasAHostVersionAndNodeMemory) {
   const Scene scene = load_scene(repo("scenes/cornell-box.json"));
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));

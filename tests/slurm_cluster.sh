@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
-# A one-node Slurm cluster for the tests (tests/sweep_slurm_test.sh), started in a folder of its
-# own: munged with its own key and socket, slurmctld and slurmd on the loopback with free ports,
-# proctrack/linuxproc and task/none (no cgroups), no accounting database. Source this file, then
+# A one-node Slurm cluster for the tests (tests/sweep_slurm_test.sh) and for trying
+# `experiments/sweep --slurm` on this machine (docs/sweeps.md, "Trying --slurm on this
+# machine"), started in a folder of its own: munged with its own key and socket, slurmctld and
+# slurmd on the loopback with free ports, proctrack/linuxproc and task/none (no cgroups), no
+# accounting database. Run it:
+#   tests/slurm_cluster.sh start [DIR]   # default /tmp/ncube-slurm; prints the SLURM_CONF to export
+#   tests/slurm_cluster.sh stop [DIR]    # cancels its jobs and stops its daemons
+# or source this file, then
 #   slurm_cluster_start DIR   # exports SLURM_CONF; returns 1 with the reason in SLURM_CLUSTER_WHY
 #   slurm_cluster_stop DIR    # stops the daemons it started (by their pid files)
 # Needs root (slurmd runs the jobs as their submitter) and Debian's slurmctld, slurmd,
@@ -112,3 +117,29 @@ slurm_cluster_stop() {
     kill -9 "$pid" 2>/dev/null
   done
 }
+
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then   # run, not sourced
+  dir="${2:-/tmp/ncube-slurm}"
+  case "${1:-}" in
+    start)
+      if [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid")" 2>/dev/null; then
+        echo "slurm_cluster.sh: a cluster runs in $dir already (stop it: $0 stop $dir)" >&2
+        exit 2
+      fi
+      if ! slurm_cluster_start "$dir"; then
+        echo "slurm_cluster.sh: the cluster did not start: $SLURM_CLUSTER_WHY" >&2
+        slurm_cluster_stop "$dir"
+        exit 1
+      fi
+      echo "a one-node Slurm cluster runs in $dir (partition test, $(nproc) CPUs); for experiments/sweep --slurm:"
+      echo "export SLURM_CONF=$SLURM_CONF"
+      echo "stop it with: $0 stop $dir" ;;
+    stop)
+      [ -f "$dir/slurm.conf" ] && export SLURM_CONF="$dir/slurm.conf"
+      slurm_cluster_stop "$dir"
+      echo "stopped the cluster of $dir" ;;
+    *)
+      echo "usage: $0 start|stop [DIR]   (default DIR /tmp/ncube-slurm)" >&2
+      exit 2 ;;
+  esac
+fi

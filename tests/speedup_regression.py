@@ -9,6 +9,15 @@ here and has to update the record on purpose:  tests/speedup_regression.py SIMUL
 
 usage: speedup_regression.py SIMULATE [--record]
 """
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import json
 import os
 import sys
@@ -76,6 +85,9 @@ def verdicts(t):
 
 
 def main():
+    if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
+        print("usage: speedup_regression.py SIMULATE [--record]\n" + __doc__)
+        return 0 if len(sys.argv) > 1 else 2
     os.environ["NCUBE_SIMULATE"] = sys.argv[1]
     record = "--record" in sys.argv
     times = measure()

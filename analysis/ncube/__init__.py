@@ -13,4 +13,6 @@ sys.path (experiments/sweep, tests/ and the Snakefile do).
     ncube.summary   a sweep's CSV table and plots
     ncube.findings  the one definition of each of the paper's findings F1-F6
     ncube.paper     the paper report (analysis/report.py)
+    ncube.interpreter  which Python runs a script (Debian's /usr/bin/python3, restarted into)
+    ncube.page      a page script's refusal without results, or its word that it runs its cells
 """

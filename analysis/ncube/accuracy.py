@@ -20,6 +20,15 @@ as the simulator's (src/scene/scene.cpp: Y = 0.2126 R + 0.7152 G + 0.0722 B). Th
 * per element and per patch (--per-element, --per-patch): (Y - Yref) / Yref.
 
 Exit codes: 0, 2 (a file unreadable or not of the same scene's elements)."""
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import json
 import math

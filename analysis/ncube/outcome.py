@@ -12,7 +12,7 @@ from pathlib import Path
 # Exit codes of experiments/sweep (and experiments/reproduce), as ./simulate's where they mean
 # the same thing (docs/cli.md).
 OK = 0
-BAD_INPUT = 2            # a sweep file refused
+BAD_INPUT = 2            # a sweep file refused, or --slurm and the cluster does not answer
 CELLS_FAILED = 4         # one or more cells failed; the others finished
 NOT_WRITTEN = 5          # the results folder cannot be written (its file system is full, ...)
 INTERNAL = 7             # Snakemake failed for another reason
@@ -110,9 +110,9 @@ def snakemake_log(results_dir):
     return logs[-1] if logs else None
 
 
-def failed(status, messages, results_dir, missing):
+def failed(status, messages, results_dir, missing, total=None):
     """Says what happened when Snakemake ended with `status` != 0 and returns the exit code;
-    `missing` are the result files of the cells without a finished result."""
+    `missing` are the result files of the cells without a finished result, of `total` cells."""
     log = snakemake_log(results_dir)
     if messages.locked:
         say(f"{results_dir} is locked by another Snakemake run on it: wait for it to end; if "
@@ -124,8 +124,10 @@ def failed(status, messages, results_dir, missing):
         shown = ", ".join(missing[:5])
         if len(missing) > 5:
             shown += f" and {len(missing) - 5} more"
+        kept = ("no cell finished" if total is not None and len(missing) >= total
+                else "the other cells finished and are kept")
         say(f"{len(missing)} cell(s) failed: {shown}; their messages are above and in {log}; "
-            f"the other cells finished and are kept; fix the cause and run the same command again")
+            f"{kept}; fix the cause and run the same command again")
         return CELLS_FAILED
     say(f"Snakemake failed (exit {status}): see the messages above and {log}")
     return INTERNAL

@@ -171,7 +171,37 @@ def not_written(error, results_dir):
     return outcome.NOT_WRITTEN
 
 
+# How long the cluster may take to answer `sinfo` before --slurm gives up (a busy controller
+# answers in well under a second; one that is down makes sinfo retry for its MessageTimeout).
+SLURM_ANSWER_SECONDS = 5
+
+
+def slurm_answers():
+    """None when the Slurm cluster answers `sinfo`, else why not (one line)."""
+    try:
+        answer = subprocess.run(["sinfo", "--noheader", "--format=%P"], capture_output=True,
+                                text=True, timeout=SLURM_ANSWER_SECONDS, check=False)
+    except FileNotFoundError:
+        return "sinfo is not installed (Debian: slurm-client)"
+    except subprocess.TimeoutExpired:
+        return f"sinfo did not answer in {SLURM_ANSWER_SECONDS} s"
+    if answer.returncode != 0:
+        lines = [line for line in answer.stderr.splitlines() if line.strip()]
+        return lines[-1] if lines else f"sinfo exited {answer.returncode}"
+    return None
+
+
 def main(argv=None):
+    """experiments/sweep; a closed standard output (`--check | head`) ends it quietly, as a
+    closed pipe ends any command: exit 128 + SIGPIPE, no traceback."""
+    try:
+        return run(argv)
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + signal.SIGPIPE
+
+
+def run(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("sweeps", nargs="+", type=Path, help="sweep files (YAML or JSON)")
     parser.add_argument("--results", type=Path, default=Path("results"),
@@ -200,7 +230,15 @@ def main(argv=None):
             print(f"{sweep.name}: {len(sweep.cells)} cells, measure {sweep.measure}")
             for cell in sweep.cells:
                 print(f"  {cell.file}  ({cell.label})")
+        sys.stdout.flush()   # a closed pipe raises here, not at the interpreter's exit
         return 0
+    if args.slurm:   # before any file is written or any job submitted
+        why = slurm_answers()
+        if why:
+            outcome.say(f"--slurm: the Slurm cluster does not answer ({why}); nothing submitted; "
+                        f"is SLURM_CONF set? (a one-node cluster to try it: docs/sweeps.md, "
+                        f"\"Trying --slurm on this machine\")")
+            return outcome.BAD_INPUT
     if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
         os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
@@ -235,7 +273,7 @@ def main(argv=None):
             slurm_status.report(results_dir, missing,
                                 {c.file: cell_resources.request(c) for c in cells.values()},
                                 states_before, outcome.say)
-            code = outcome.failed(status, messages, results_dir, missing)
+            code = outcome.failed(status, messages, results_dir, missing, len(cells))
     except outcome.Interrupted as stop:
         code = outcome.say_interrupted(stop.signum)
     outcome.final_line(time.monotonic() - start, outcome.tables_written(before, tables))

@@ -21,6 +21,15 @@ exercises what it is there for (cuts made, patches moved, octree cells visited, 
 usage: goldens.py check SIMULATE
        goldens.py regenerate [SIMULATE]     (default: build/simulate)
 """
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import json
 import os
 import sys
@@ -238,6 +247,9 @@ def regenerate():
 
 def main(argv):
     usable = (len(argv) == 3 and argv[1] == "check") or (argv[1:2] == ["regenerate"] and len(argv) <= 3)
+    if argv[1:] in (["-h"], ["--help"]):
+        print("usage: " + __doc__.split("usage:")[1].strip())
+        return 0
     if not usable:
         print(__doc__.split("usage:")[1].strip(), file=sys.stderr)
         return 2

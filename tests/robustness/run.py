@@ -27,6 +27,15 @@ table counts them by the issue's classes and by input or output. Cells listed in
 known_open.KNOWN_OPEN are reported, not failed (--strict fails on entries that are now clean).
 Exit status: 0 when every case and every cell not known open is clean, 1 otherwise (ctest).
 """
+
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
 import argparse
 import concurrent.futures
 import hashlib

@@ -1,0 +1,68 @@
+"""What every script that writes a committed page (analysis/*.md, analysis/figures/*.png,
+platforms/cost_model.json) does before it writes anything, so that no committed page is
+overwritten by an empty or partial one (README.md, "Reproducing the paper's tables"):
+
+* a page made from results it does not run itself (analysis/report.py, analysis/machines.py
+  without --run) refuses with one line naming what is missing, writing nothing (exit 2),
+  when a cell the page needs has no result; --partial asks for the page anyway, with the
+  missing cells shown as not run (for a page written elsewhere, or on purpose);
+* a page whose script runs its own cells (the others) says so in one line first, and refuses
+  the same way when there is no simulator to run them with.
+
+tests/page_scripts_test.sh runs every page script in a clean clone and checks that the tree
+is unchanged."""
+import os
+import sys
+from pathlib import Path
+
+from . import paths
+
+REFUSED = 2   # as a missing input file: ./simulate's and experiments/sweep's "bad input"
+
+
+def shown(path):
+    """A path as a message names it: relative to the repository when inside it."""
+    path = Path(path).resolve()
+    try:
+        return str(path.relative_to(paths.ROOT))
+    except ValueError:
+        return str(path)
+
+
+def refuse(script, line):
+    """One line on stderr, `script: line; nothing written`, and exit REFUSED."""
+    print(f"{script}: {line}; nothing written", file=sys.stderr, flush=True)
+    sys.exit(REFUSED)
+
+
+def require_results(script, missing, total, results_dir, how):
+    """Refuses unless every one of the page's `total` cells has a result: `missing` are the
+    result files (relative to `results_dir`) it lacks, `how` what gives them."""
+    if not missing:
+        return
+    if len(missing) == total:
+        what = f"no result of its {total} cells in {shown(results_dir)}/"
+    else:
+        listed = ", ".join(missing[:3]) + (f" and {len(missing) - 3} more"
+                                           if len(missing) > 3 else "")
+        what = (f"{len(missing)} of its {total} cells have no result in "
+                f"{shown(results_dir)}/ ({listed})")
+    refuse(script, f"{what}: {how} (or add --partial for a page showing them as not run)")
+
+
+def simulator(binary=None):
+    """The binary a script's runs use: `binary` (its own --simulate), else $NCUBE_SIMULATE,
+    else what ./simulate runs (build/simulate)."""
+    return binary or os.environ.get("NCUBE_SIMULATE") or str(paths.ROOT / "build" / "simulate")
+
+
+def will_run(script, what, binary=None, announce=True):
+    """A script that runs its own cells says so before it starts (unless not `announce`: a
+    check before its other checks); without a simulator built, it refuses."""
+    binary = simulator(binary)
+    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+        refuse(script, f"it runs {what} with {shown(binary)}, which is not built (cmake -S . "
+                       f"-B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2)")
+    if announce:
+        print(f"{script}: runs {what} (a cell with a finished result is not run again)",
+              file=sys.stderr, flush=True)

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Nothing committed is lost to a script (issue 39 item 1, analysis/ncube/page.py): every script
+# that writes a committed page or figure runs in a clean copy of the repository (its tracked
+# files as they are now, no results/, no build/) and leaves the tree as it was. Those that need
+# results or the simulator refuse with exit 2 and one line naming what is missing; the docs'
+# table generators, which need neither, rewrite their tables unchanged (exit 0). About 5 s.
+root="$2"
+work=$(mktemp -d /tmp/page_scripts_test.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+clone="$work/clone"
+git clone --quiet --no-hardlinks "$root" "$clone" 2>/dev/null || { echo "FAIL: git clone $root"; exit 1; }
+# The working tree's tracked files, committed changes or not, so the test sees what it tests.
+(cd "$root" && git ls-files -z | while IFS= read -r -d '' f; do
+   [ -f "$f" ] && { mkdir -p "$clone/$(dirname "$f")"; cp -p "$f" "$clone/$f"; }; done)
+for f in $(cd "$root" && git ls-files --others --exclude-standard -- analysis tests docs experiments); do
+  mkdir -p "$clone/$(dirname "$f")"; cp -p "$root/$f" "$clone/$f"
+done
+git -C "$clone" add -A && git -C "$clone" -c user.name=test -c user.email=test@localhost \
+  commit --quiet --allow-empty -m "the tree under test"
+[ -z "$(git -C "$clone" status --porcelain)" ] || fail "the clone is not clean to begin with"
+
+unset NCUBE_SIMULATE NCUBE_ROOT
+refuses() {   # SCRIPT [ARGS...]: exit 2, one line, the tree unchanged
+  local out code
+  out=$(cd "$clone" && timeout 300 /usr/bin/python3 "$@" 2>&1); code=$?
+  [ "$code" = 2 ] || fail "$1 exited $code, not 2: $out"
+  [ "$(printf '%s\n' "$out" | wc -l)" = 1 ] || fail "$1 said more than one line: $out"
+  case "$out" in *"nothing written"*) ;; *) fail "$1 does not say it wrote nothing: $out";; esac
+  local changed
+  changed=$(git -C "$clone" status --porcelain)
+  [ -z "$changed" ] || { fail "$1 changed the tree: $changed"; git -C "$clone" checkout --quiet -- . ; git -C "$clone" clean -qfdx; }
+}
+unchanged() {   # SCRIPT [ARGS...]: exit 0, the tree unchanged
+  local out code
+  out=$(cd "$clone" && timeout 120 /usr/bin/python3 "$@" 2>&1); code=$?
+  [ "$code" = 0 ] || fail "$1 exited $code: $out"
+  local changed
+  changed=$(git -C "$clone" status --porcelain)
+  [ -z "$changed" ] || { fail "$1 changed the tree: $changed"; git -C "$clone" checkout --quiet -- . ; git -C "$clone" clean -qfdx; }
+}
+
+# No results: the pages made from results refuse (report.py names the 42 cells it lacks).
+refuses analysis/report.py
+grep -q "no result of its" <(cd "$clone" && /usr/bin/python3 analysis/report.py 2>&1) \
+  || fail "report.py does not name the missing results"
+refuses analysis/machines.py
+# No simulator built: the scripts that run their own cells refuse (before running anything).
+for script in predictions claims claims_schemes adaptive calibrate memory_sensitivity patch_order; do
+  refuses "analysis/$script.py"
+done
+refuses analysis/machines.py --run
+grep -q "build/simulate, which is not built" <(cd "$clone" && /usr/bin/python3 analysis/claims.py 2>&1) \
+  || fail "claims.py does not name the simulator it lacks"
+# The docs' table generators and the platform and scene generators write committed files from
+# committed inputs: run in the clean clone, they change nothing.
+for script in docs/model_tables.py docs/options_table.py docs/platform_tables.py \
+              docs/machines/index_table.py platforms/generate.py platforms/machines/generate.py \
+              scenes/generate.py; do
+  unchanged "$script"
+done
+[ "$failed" = 0 ] && echo "page_scripts_test: passed"
+exit "$failed"
