@@ -52,6 +52,10 @@ def simgrid_settings_problem(cfg):
     return _settings_problem(tuple(f"--cfg={k}:{v}" for k, v in sorted(cfg.items())))
 
 
+# A sweep's name names a folder of the results (sweeps/<name>/) and a Snakemake wildcard; it is
+# held to a set of characters no shell, file system or scheduler reads as syntax
+# (docs/sweeps.md), so that no sweep file can make the sweep tool run a command.
+SWEEP_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.+-]{0,99}")
 CELL_KEYS = dict({name: option.doc or name for name, option in opts.OPTIONS.items()},
                  scene="a scene or model file (.obj, .ply, .gltf, .glb): a path (relative to the sweep file) or a name in scenes/",
                  platform="a platform file (JSON or SimGrid XML): a path or a name in platforms/",
@@ -433,8 +437,11 @@ def load(path):
             raise SweepError(f"{where}: key {key!r}: unknown key (known: "
                              + ", ".join(sorted(SWEEP_KEYS)) + ")")
     name = document.get("name", path.stem)
-    if not isinstance(name, str) or not name or "/" in name or name.startswith("."):
-        raise SweepError(f"{where}: key 'name': {name!r} must be a plain name")
+    if not isinstance(name, str) or not SWEEP_NAME.fullmatch(name):
+        raise SweepError(f"{where}: key 'name': {name!r} must be a plain name: letters, digits "
+                         f"and _ . + - (a letter or digit first, at most 100 characters)"
+                         + ("; the file's name is the default, so give one" if "name" not in document
+                            else ""))
     measure = document.get("measure", "seconds_per_iteration")
     if measure not in MEASURES:
         raise SweepError(f"{where}: key 'measure': {measure!r} must be one of "
