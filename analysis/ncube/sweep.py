@@ -40,7 +40,13 @@ def _settings_problem(arguments):
     checked = subprocess.run([simulate, "--check-settings", *arguments], capture_output=True,
                              text=True, env=paths.simulate_environment())
     if checked.returncode == 0:
-        return None
+        # A sweep writes into its results folder only (docs/sweeps.md, "What runs"): settings
+        # that would make SimGrid write a file (a trace: the cell key trace instead) are refused.
+        written = [line.removeprefix("output: ") for line in checked.stdout.splitlines()
+                   if line.startswith("output: ")]
+        return (f"these settings would make SimGrid write {', '.join(written)}; a sweep writes "
+                f"only into its results folder (a cell's trace: the key trace: true)"
+                if written else None)
     return checked.stderr.strip().removeprefix("simulate: ") or f"exit {checked.returncode}"
 
 

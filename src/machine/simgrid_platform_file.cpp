@@ -107,8 +107,7 @@ void check_config_tags(const std::string& path, const std::string& text) {
     for (xmlNode* prop = config->children; prop; prop = prop->next) {
       if (!named(prop, "prop")) continue;
       const std::string name = attribute(prop, "id"), value = attribute(prop, "value");
-      const SimgridSettingRange* range = simgrid_setting_range(name);
-      const std::string problem = range ? setting_range_problem(*range, value) : "";
+      const std::string problem = platform_setting_problem(name, value);
       if (!problem.empty())
         throw InputError(path + ": <config> <prop id=\"" + name + "\" value=\"" + value +
                          "\">: " + problem);

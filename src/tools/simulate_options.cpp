@@ -212,7 +212,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "");
   table.flag("--check-settings", options.check_settings,
              "check the SimGrid settings given (--cfg, --log) as a run would, then stop: exit "
-             "0, or 2 with the setting SimGrid refuses (no scene needed)",
+             "0, printing 'output: PATH' for each file they would write, or 2 with the "
+             "setting SimGrid refuses (no scene needed)",
              "");
   table.flag("--list-inputs", options.list_inputs,
              "print every file the run would read (role, file, sha256) as JSON, each read "
