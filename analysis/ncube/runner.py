@@ -178,6 +178,9 @@ def run_snakemake(command):
 
 def not_written(error, results_dir):
     """The plain line and exit code of the runner's own writes failing."""
+    if isinstance(error, output_file.OutputIsInputError):   # as ./simulate: a bad output path
+        outcome.say(str(error))
+        return 2
     if outcome.is_full(error):
         return outcome.say_full(results_dir)
     outcome.say(f"{error.filename or results_dir}: cannot be written: {error.strerror or error}")

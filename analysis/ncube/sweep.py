@@ -426,6 +426,14 @@ def _cell(spec, label, sweep_name, base, where):
                 nodes=nodes, scene_parts_sha256=scene_parts)
 
 
+def protect_plan_inputs(plan_path, plan):
+    """The plan and every file it names as read (ncube.input_file.protect): a job writes none of
+    them, whatever link is planted among its outputs."""
+    input_file.protect([plan_path] + [s["file"] for s in plan["sweeps"]] +
+                       [c[key] for s in plan["sweeps"] for c in s["cells"]
+                        for key in ("scene_file", "platform_file", "cost_model_file")])
+
+
 def load(path):
     """Reads and validates a sweep file; raises SweepError naming the file, cell and key."""
     try:
