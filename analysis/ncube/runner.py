@@ -176,6 +176,19 @@ def run_snakemake(command):
     return status, messages
 
 
+def bounded(low, high):
+    """An argparse type: a whole number in [low, high] (argparse says which option, and exits 2)."""
+    def whole_number(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"{value} is not in {low}..{high}")
+        return value
+    return whole_number
+
+
 def not_written(error, results_dir):
     """The plain line and exit code of the runner's own writes failing."""
     if isinstance(error, output_file.OutputIsInputError):   # as ./simulate: a bad output path
@@ -192,11 +205,13 @@ def main(argv=None):
     parser.add_argument("sweeps", nargs="+", type=Path, help="sweep files (YAML or JSON)")
     parser.add_argument("--results", type=Path, default=Path("results"),
                         help="results folder (default: ./results)")
-    parser.add_argument("--cores", type=int, default=2, help="local cores (default 2)")
+    parser.add_argument("--cores", type=bounded(1, 1024), default=2,
+                        help="local cores, 1 to 1024 (default 2)")
     parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
     parser.add_argument("--profile", type=Path, help="a Snakemake profile")
     parser.add_argument("--cluster", help="generic cluster mode: the submit command")
-    parser.add_argument("--jobs", type=int, default=100, help="cluster jobs at once (default 100)")
+    parser.add_argument("--jobs", type=bounded(1, 100_000), default=100,
+                        help="cluster jobs at once, 1 to 100000 (default 100)")
     parser.add_argument("--check", action="store_true", help="validate and list the cells only")
     argv = sys.argv[1:] if argv is None else argv
     extra = []

@@ -10,6 +10,7 @@ import functools
 import hashlib
 import itertools
 import json
+import math
 import os
 import re
 import subprocess
@@ -57,6 +58,11 @@ def simgrid_settings_problem(cfg):
         return None
     return _settings_problem(tuple(f"--cfg={k}:{v}" for k, v in sorted(cfg.items())))
 
+
+# The most cells one sweep file may describe, counted before any is made: each cell is checked,
+# hashed and planned (about a millisecond and a few KB each), and each is one file of the results
+# folder; a grid of 10^8 would take gigabytes before its first line of output.
+MAX_CELLS = 100_000
 
 # A sweep's name names a folder of the results (sweeps/<name>/) and a Snakemake wildcard; it is
 # held to a set of characters no shell, file system or scheduler reads as syntax
@@ -308,6 +314,13 @@ def _expand(document, where):
                 raise SweepError(f"{where}: grid: key {key!r}: not a cell key (known: "
                                  + ", ".join(sorted(CELL_KEYS)) + "), nor a group of keys "
                                  "that vary together (a list of mappings, e.g. {R: 4, V: 15})")
+        count = math.prod(len(values) for values in grid.values())
+        listed = len(document.get("cells") or []) if isinstance(document.get("cells"), list) else 0
+        if count + listed > MAX_CELLS:
+            raise SweepError(f"{where}: \"grid\": {count:,} cells"
+                             + (f" and {listed:,} listed" if listed else "")
+                             + f", more than a sweep file may hold ({MAX_CELLS:,}); "
+                             "split it into several sweep files")
         keys = list(grid)
         for combination in itertools.product(*(grid[k] for k in keys)):
             point = {}
@@ -319,6 +332,9 @@ def _expand(document, where):
     if cells is not None:
         if not isinstance(cells, list):
             raise SweepError(f"{where}: \"cells\": expected a list")
+        if len(cells) > MAX_CELLS:
+            raise SweepError(f"{where}: \"cells\": {len(cells):,} cells, more than a sweep file "
+                             f"may hold ({MAX_CELLS:,}); split it into several sweep files")
         for k, cell in enumerate(cells, 1):
             if not isinstance(cell, dict):
                 raise SweepError(f"{where}: cell {k}: expected a mapping")
