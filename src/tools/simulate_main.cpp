@@ -105,6 +105,15 @@ int simulate(int argc, char** argv) {
       std::cout << "output: " << output.path << "\n";
     return ncube::kExitOk;
   }
+  if (options.platform_nodes) {  // the platform alone, read as a run reads it
+    if (ncube::is_simgrid_platform_file(options.config.platform_file))
+      ncube::simgrid_engine(simgrid_outputs.engine_arguments(
+          [](const std::string&) { return std::string("/dev/null"); }));
+    const ncube::PlatformConfig platform = ncube::load_platform_config(
+        options.config.platform_file, options.config.simgrid_arguments);
+    std::cout << platform.node_count() << "\n";
+    return ncube::kExitOk;
+  }
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
   // A model file is imported into the project's scene JSON, then loaded (and checked) as a

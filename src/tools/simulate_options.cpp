@@ -215,6 +215,10 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "0, printing 'output: PATH' for each file they would write, or 2 with the "
              "setting SimGrid refuses (no scene needed)",
              "");
+  table.flag("--platform-nodes", options.platform_nodes,
+             "read the platform (--platform) with every check a run makes, print its number "
+             "of nodes and stop (no scene needed; the sweep tool counts a platform's nodes so)",
+             "");
   table.flag("--list-inputs", options.list_inputs,
              "print every file the run would read (role, file, sha256) as JSON, each read "
              "through the same checks and limits, then stop without simulating",
@@ -248,7 +252,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   }
   for (CLI::Option* option : import_options)
     options.import_options_given = options.import_options_given || option->count() > 0;
-  if (options.scene_file.empty() && !options.check_settings) {
+  if (options.scene_file.empty() && !options.check_settings && !options.platform_nodes) {
     std::cerr << "simulate: scene is required\n(see simulate --help)\n";
     return kExitBadInput;
   }
