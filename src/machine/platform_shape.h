@@ -10,8 +10,9 @@
 //    topology's host count equal to the radical's);
 //  - numbers: every bandwidth, latency and speed attribute's number finite and not negative;
 //  - no <trace> or <trace_connect> (a node's or link's values changing during the run);
-//  - after loading: every link's bandwidth and latency, every host's speed, within the machine
-//    parameters' ranges (link_bandwidth, hop_latency, node_speed: machine_parameters.h).
+//  - after loading: every link's bandwidth and latency within the machine parameters' ranges
+//    (link_bandwidth, hop_latency: machine_parameters.h; the hosts, all nodes, are held to
+//    node_speed's with the other node values).
 #pragma once
 
 #include <string>
@@ -31,8 +32,8 @@ inline constexpr long kMaxPlatformHosts = 65536;
 // file, line or element and the limit for anything above.
 long check_platform_shape(const std::string& path, const std::string& text);
 
-// After SimGrid loaded the file: every link's and host's values within the machine
-// parameters' ranges; throws InputError naming the link or host.
+// After SimGrid loaded the file: every link's values within the machine parameters' ranges;
+// throws InputError naming the link.
 void check_platform_values(const std::string& path, simgrid::s4u::Engine& engine);
 
 }  // namespace ncube
