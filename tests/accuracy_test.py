@@ -5,9 +5,7 @@ made from itself is exact, its faces are the reference's elements (areas from th
 corners), and a mesh of another grid is refused (exit 2).
 
 usage: accuracy_test.py SIMULATE SOURCE_DIR"""
-import json
 import math
-import struct
 import subprocess
 import sys
 import tempfile
@@ -16,6 +14,9 @@ from pathlib import Path
 simulate, root = sys.argv[1], Path(sys.argv[2])
 sys.path.insert(0, str(root / "analysis"))
 from ncube import accuracy  # noqa: E402
+
+sys.path.insert(0, str(root / "tests"))
+from accuracy_test_meshes import ply_bytes, reference  # noqa: E402
 
 failures = []
 
@@ -27,30 +28,6 @@ def check(condition, what):
 
 def near(a, b, what, tolerance=1e-12):
     check(abs(a - b) <= tolerance * max(1.0, abs(b)), f"{what}: {a!r}, expected {b!r}")
-
-
-def ply_bytes(faces):
-    """A mesh in ./simulate's layout (solution_mesh.h): faces (patch, element, r, g, b), each
-    a triangle of its own three vertices."""
-    header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\n"
-              "property double x\nproperty double y\nproperty double z\n"
-              "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-              "property double radiosity_r\nproperty double radiosity_g\nproperty double radiosity_b\n"
-              "element face %d\nproperty list uchar int vertex_indices\nproperty int patch\n"
-              "property int element\nproperty double radiosity_r\nproperty double radiosity_g\n"
-              "property double radiosity_b\nend_header\n") % (3 * len(faces), len(faces))
-    out = header.encode()
-    for k in range(len(faces)):
-        for corner in ((0, 0, k), (1, 0, k), (0, 1, k)):
-            out += struct.pack("<dddBBBddd", *corner, 0, 0, 0, 0.0, 0.0, 0.0)
-    for k, (patch, element, r, g, b) in enumerate(faces):
-        out += struct.pack("<B3iiiddd", 3, 3 * k, 3 * k + 1, 3 * k + 2, patch, element, r, g, b)
-    return out
-
-
-def reference(elements):
-    return {"reference_file_version": 1, "self_agreement": {"element_rms": 0.0},
-            "elements": elements}
 
 
 with tempfile.TemporaryDirectory() as folder:

@@ -71,6 +71,28 @@ with tempfile.TemporaryDirectory() as work:
         except output_file.OutputPathError as e:
             expect(name in str(e), f"message does not say {name}")
         expect(test(os.lstat(w / name).st_mode), f"{name} replaced")
+    # A file read through the input gate, and one protected: never written, by any name or link.
+    from ncube import input_file
+    (w / "input.yaml").write_text("read")
+    input_file.read_input_text(w / "input.yaml", "sweep file", 100)
+    (w / "protected.json").write_text("named")
+    input_file.protect([w / "protected.json"])
+    (w / "to-input").symlink_to("input.yaml")
+    os.link(w / "protected.json", w / "hard-link.json")
+    for name in ("input.yaml", "to-input", "protected.json", "hard-link.json"):
+        for how in ("write", "move"):
+            try:
+                if how == "write":
+                    output_file.write(w / name, "overwritten")
+                else:
+                    (w / "done.partial").write_text("overwritten")
+                    output_file.move(w / "done.partial", w / name)
+                problems.append(f"{how} onto the input {name} did not fail")
+            except output_file.OutputIsInputError as e:
+                expect("is the input file" in str(e), f"{how} {name}: message {e}")
+            (w / "done.partial").unlink(missing_ok=True)
+    expect((w / "input.yaml").read_text() == "read" and
+           (w / "protected.json").read_text() == "named", "an input was written")
     left = [p.name for p in w.iterdir() if ".partial-" in p.name]
     expect(not left, f"temporary files left: {left}")
 

@@ -19,7 +19,18 @@ as the simulator's (src/scene/scene.cpp: Y = 0.2126 R + 0.7152 G + 0.0722 B). Th
   Yref_p > 0), and worst_patch, its index;
 * per element and per patch (--per-element, --per-patch): (Y - Yref) / Yref.
 
-Exit codes: 0, 2 (a file unreadable or not of the same scene's elements)."""
+Every file is read through the project's input gate (ncube.input_file: regular files only, a
+size limit, a FIFO or a device refused at once) and every value is checked: a face's patch and
+element indices whole numbers >= 0, radiosities and areas finite and >= 0 (areas > 0), a PLY
+header's counts within what its file holds. An element whose reference luminance is 0 has no
+relative error: its per-element value is null in --json (and "undefined" in the listing), and
+it is left out of the RMS, as a patch whose reference is 0 is. --json is written under the
+output rule (ncube.output_file): never onto an input, whatever link leads there.
+
+Exit codes: 0; 2 bad input (a file unreadable, malformed, with a value out of range, or not of
+the same scene's elements; a --json path onto an input), one line naming the file, item and
+field; 5 the --json file could not be written. No traceback, no partial --json file."""
+
 
 import sys  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -29,11 +40,12 @@ from ncube.interpreter import use_project_python  # noqa: E402
 
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
-import argparse
-import json
-import math
-import struct
-import sys
+import argparse  # noqa: E402
+import json  # noqa: E402
+import math  # noqa: E402
+import struct  # noqa: E402
+
+from ncube import input_file, output_file  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -42,8 +54,30 @@ _TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "u
           "int32": "i", "uint32": "I", "float32": "f", "float64": "d"}
 
 
+# A ./simulate --mesh of scene4 (51,200 patches at 4 x 4 elements) is about 90 MB; a reference of
+# the same scene about 60 MB.
+MESH_BYTES = 1 << 30
+REFERENCE_BYTES = 512 << 20
+
+
 class AccuracyError(Exception):
     pass
+
+
+def _finite(value, what, low=0.0, strictly=False):
+    """`value` as a float when it is a finite number >= low (> low when strictly), else an
+    AccuracyError naming `what`."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+            or value < low or (strictly and value == low):
+        raise AccuracyError(f"{what}: {value!r} must be a finite number "
+                            f"{'>' if strictly else '>='} {low:g}")
+    return float(value)
+
+
+def _index(value, what):
+    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        raise AccuracyError(f"{what}: {value!r} must be a whole number >= 0")
+    return value
 
 
 def luminance(rgb):
@@ -54,25 +88,41 @@ def read_ply(path):
     """The faces of a binary little-endian PLY as dicts of their scalar properties (and
     'vertex_indices'), and the vertices likewise."""
     try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as e:
-        raise AccuracyError(f"{path}: cannot read: {e.strerror}") from None
+        data = input_file.read_input_bytes(path, "solution mesh", MESH_BYTES)
+    except input_file.InputFileError as e:
+        raise AccuracyError(str(e)) from None
     end = data.find(b"end_header\n")
     if not data.startswith(b"ply\n") or end < 0:
         raise AccuracyError(f"{path}: not a PLY file")
     elements = []
-    for line in data[:end].decode("ascii", "replace").splitlines():
+    for number, line in enumerate(data[:end].decode("ascii", "replace").splitlines(), 1):
         words = line.split()
-        if words[:1] == ["format"] and words[1] != "binary_little_endian":
-            raise AccuracyError(f"{path}: format {words[1]}: only binary_little_endian is read")
-        if words[:1] == ["element"]:
-            elements.append((words[1], int(words[2]), []))
-        elif words[:1] == ["property"]:
-            if words[1] == "list":
-                elements[-1][2].append((words[4], _TYPES[words[2]], _TYPES[words[3]]))
-            else:
-                elements[-1][2].append((words[2], _TYPES[words[1]], None))
+        try:
+            if words[:1] == ["format"] and words[1] != "binary_little_endian":
+                raise AccuracyError(f"{path}: format {words[1]}: only binary_little_endian is read")
+            if words[:1] == ["element"]:
+                count = int(words[2])
+                if count < 0:
+                    raise ValueError
+                elements.append((words[1], count, []))
+            elif words[:1] == ["property"]:
+                if not elements:
+                    raise ValueError
+                if words[1] == "list":
+                    elements[-1][2].append((words[4], _TYPES[words[2]], _TYPES[words[3]]))
+                else:
+                    elements[-1][2].append((words[2], _TYPES[words[1]], None))
+        except (IndexError, KeyError, ValueError):
+            raise AccuracyError(f"{path}: header line {number} ({line[:60]!r}): not a PLY "
+                                "element or property this reader knows") from None
+    # Every row takes at least its scalars' bytes and one count per list: a header announcing
+    # more rows than the file can hold is refused before any is read.
+    least = sum(count * sum(struct.calcsize(kind) for _, kind, _ in properties)
+                for _, count, properties in elements)
+    holds = len(data) - end - len(b"end_header\n")
+    if least > holds:
+        raise AccuracyError(f"{path}: its header announces at least {least:,} bytes of rows, "
+                            f"the file holds {holds:,}")
     offset = end + len(b"end_header\n")
     out = {}
     try:
@@ -104,21 +154,40 @@ def solution_from_ply(path):
     if not faces or not needed <= set(faces[0]):
         raise AccuracyError(f"{path}: no faces with patch, element and radiosity_r/g/b "
                             "(not a ./simulate --mesh file)")
+    solution = []
     for k, face in enumerate(faces):
-        if face["element"] != k:
+        if _index(face["element"], f"{path}: face {k}: element") != k:
             raise AccuracyError(f"{path}: face {k} is element {face['element']}: the mesh of a "
                                 "run with --subdivide has no element of the reference's grid")
-    return [(f["patch"], (f["radiosity_r"], f["radiosity_g"], f["radiosity_b"])) for f in faces]
+        solution.append((_index(face["patch"], f"{path}: face {k}: patch"),
+                         tuple(_finite(face[f"radiosity_{c}"], f"{path}: face {k}: radiosity_{c}")
+                               for c in "rgb")))
+    return solution
 
 
 def read_reference(path):
     try:
-        with open(path, encoding="utf-8") as f:
-            reference = json.load(f)
-    except (OSError, ValueError) as e:
-        raise AccuracyError(f"{path}: cannot read the reference: {e}") from None
-    if reference.get("reference_file_version") != 1 or "elements" not in reference:
+        reference = json.loads(input_file.read_input_text(path, "reference file", REFERENCE_BYTES),
+                               parse_constant=lambda name: name)   # NaN, Infinity: refused below
+    except input_file.InputFileError as e:
+        raise AccuracyError(str(e)) from None
+    except (ValueError, RecursionError) as e:
+        raise AccuracyError(f"{path}: cannot read the reference: not JSON ({e})") from None
+    if not isinstance(reference, dict) or reference.get("reference_file_version") != 1 \
+            or not isinstance(reference.get("elements"), list) or not reference["elements"]:
         raise AccuracyError(f"{path}: not a reference file (build/reference_solution)")
+    for k, element in enumerate(reference["elements"]):
+        if not isinstance(element, list) or len(element) != 5:
+            raise AccuracyError(f"{path}: element {k}: expected [patch, area, radiosity_r, "
+                                "radiosity_g, radiosity_b]")
+        _index(element[0], f"{path}: element {k}: patch")
+        _finite(element[1], f"{path}: element {k}: area", strictly=True)
+        for c, value in zip("rgb", element[2:]):
+            _finite(value, f"{path}: element {k}: radiosity_{c}")
+    agreement = reference.get("self_agreement")
+    if not isinstance(agreement, dict):
+        raise AccuracyError(f"{path}: self_agreement: expected an object")
+    _finite(agreement.get("element_rms"), f"{path}: self_agreement: element_rms")
     return reference
 
 
@@ -143,7 +212,7 @@ def compare(solution, reference, solution_name="solution", reference_name="refer
             squares += area * relative ** 2
             weight += area
         else:
-            relative = 0.0 if y == 0 else math.inf
+            relative = 0.0 if y == 0 else None   # no relative error against a black reference
         per_element.append(relative)
         patch_sum[patch] += area * y
         patch_ref[patch] += area * y_ref
@@ -151,6 +220,9 @@ def compare(solution, reference, solution_name="solution", reference_name="refer
     per_patch, worst, largest = [], -1, 0.0
     patch_squares = patch_weight = 0.0
     for p in range(patch_count):
+        if patch_area[p] == 0:   # a patch number no element has (the numbering has a gap)
+            per_patch.append(None)
+            continue
         y = patch_sum[p] / patch_area[p]
         y_ref = patch_ref[p] / patch_area[p]
         if y_ref > 0:
@@ -160,7 +232,7 @@ def compare(solution, reference, solution_name="solution", reference_name="refer
             if worst < 0 or abs(relative) > largest:
                 worst, largest = p, abs(relative)
         else:
-            relative = 0.0 if y == 0 else math.inf
+            relative = 0.0 if y == 0 else None
         per_patch.append(relative)
     return {"element_rms": math.sqrt(squares / weight) if weight > 0 else 0.0,
             "patch_rms": math.sqrt(patch_squares / patch_weight) if patch_weight > 0 else 0.0,
@@ -192,13 +264,20 @@ def main(argv=None):
           f"[reference's own: element RMS {result['reference_element_rms']:.2g}]")
     if args.per_patch:
         for p, e in enumerate(result["per_patch"]):
-            print(f"patch {p} {e:+.4g}")
+            print(f"patch {p} " + ("undefined" if e is None else f"{e:+.4g}"))
     if args.per_element:
         for k, e in enumerate(result["per_element"]):
-            print(f"element {k} {e:+.4g}")
+            print(f"element {k} " + ("undefined" if e is None else f"{e:+.4g}"))
     if args.json:
-        with open(args.json, "w", encoding="utf-8") as f:
-            json.dump(result, f, indent=1)
+        try:
+            output_file.write(args.json, json.dumps(result, indent=1, allow_nan=False) + "\n")
+        except output_file.OutputIsInputError as e:
+            print(f"accuracy: --json {e}", file=sys.stderr)
+            return 2
+        except OSError as e:
+            print(f"accuracy: --json {args.json}: cannot be written: {e.strerror or e}",
+                  file=sys.stderr)
+            return 5
     return 0
 
 

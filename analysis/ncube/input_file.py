@@ -16,6 +16,28 @@ _KINDS = {stat.S_IFIFO: "a FIFO", stat.S_IFCHR: "a character device", stat.S_IFB
           stat.S_IFDIR: "a folder", stat.S_IFSOCK: "a socket"}
 
 
+# Every file read through this gate, by identity (device, inode) -> the path read: the output
+# rule (ncube.output_file) never writes onto one of them, whatever link or name leads there.
+_READ = {}
+
+
+def files_read():
+    """{(st_dev, st_ino): path} of every regular file this process read through the gate."""
+    return dict(_READ)
+
+
+def protect(paths):
+    """Counts PATHS (files another process of the sweep read: the sweep files, scenes, platform
+    and cost-model files a plan names) as read, so that nothing here writes onto them."""
+    for path in paths:
+        try:
+            status = os.stat(path)
+        except OSError:
+            continue
+        if stat.S_ISREG(status.st_mode):
+            _READ.setdefault((status.st_dev, status.st_ino), str(path))
+
+
 class InputFileError(ValueError):
     """A file that cannot be read under the rule; the message names the file and why."""
 
@@ -28,10 +50,12 @@ def read_input_bytes(path, what, max_bytes):
         reason = "a loop of symbolic links" if e.errno == errno.ELOOP else e.strerror
         raise InputFileError(f"{path}: cannot open {what}: {reason}") from None
     try:
-        mode = os.fstat(descriptor).st_mode
+        status = os.fstat(descriptor)
+        mode = status.st_mode
         if not stat.S_ISREG(mode):
             raise InputFileError(f"{path}: {what} is {_KINDS.get(stat.S_IFMT(mode), 'not a file')}, "
                                  "not a regular file")
+        _READ.setdefault((status.st_dev, status.st_ino), str(path))
         pieces, size = [], 0
         while size <= max_bytes:
             piece = os.read(descriptor, min(MIB, max_bytes + 1 - size))

@@ -3,17 +3,24 @@
 renamed onto it (atomic replacement is for files); a symbolic link is followed and its target
 written that way (the link stays); a character device or a FIFO is written where it points;
 anything else (a folder, a socket, a block device) is refused. Nothing that is not a regular
-file is ever replaced."""
+file is ever replaced, and no file this process read through its input gate (ncube.input_file)
+is ever written, whichever name or link leads to it."""
 import os
 import stat
 import tempfile
 from pathlib import Path
+
+from . import input_file
 
 MAX_LINKS = 40   # as ./simulate (src/tools/output_files.cpp) and Linux
 
 
 class OutputPathError(OSError):
     """A path that names something that cannot be written as a file."""
+
+
+class OutputIsInputError(OutputPathError):
+    """A path that leads to a file this process read: bad input (exit 2, as ./simulate)."""
 
 
 def target(path):
@@ -28,10 +35,22 @@ def target(path):
     raise OutputPathError(f"{path}: more than {MAX_LINKS} symbolic links")
 
 
+def _refuse_inputs(path, final):
+    """An OutputPathError when `final` (the path's target) is a file this process read."""
+    try:
+        status = os.stat(final)
+    except FileNotFoundError:
+        return
+    read = input_file.files_read().get((status.st_dev, status.st_ino))
+    if read is not None:
+        raise OutputIsInputError(f"{path}: is the input file {read}")
+
+
 def write(path, data):
     """Writes `data` (str or bytes) to `path` by the rule above; returns `path`."""
     data = data.encode() if isinstance(data, str) else bytes(data)
     final = target(path)
+    _refuse_inputs(path, final)
     try:
         mode = os.stat(final).st_mode
     except FileNotFoundError:
@@ -61,6 +80,7 @@ def move(written, path):
     rule above: renamed onto a file in its folder, else copied (a link's target elsewhere, a
     device or a FIFO)."""
     final = target(path)
+    _refuse_inputs(path, final)
     try:
         mode = os.stat(final).st_mode
     except FileNotFoundError:

@@ -23,7 +23,7 @@ import time
 from pathlib import Path
 
 from . import output_file, paths, results
-from .sweep import Cell
+from .sweep import Cell, protect_plan_inputs
 
 PR_SET_PDEATHSIG = 1
 
@@ -35,6 +35,7 @@ def _die_with_parent():
 def find_cell(plan_path, cell_file):
     """The cell, and whether it may replace a finished result (reruns forced)."""
     plan = json.loads(Path(plan_path).read_text())
+    protect_plan_inputs(plan_path, plan)
     for sweep in plan["sweeps"]:
         for cell in sweep["cells"]:
             if cell["file"] == cell_file:

@@ -16,13 +16,14 @@ line names the tables this run wrote."""
 import argparse
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
 import time
 from pathlib import Path
 
-from . import cell_resources, outcome, output_file, paths, results, slurm_status
+from . import cell_resources, outcome, output_file, paths, results, shell_words, slurm_status
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -95,8 +96,11 @@ def snakemake_command(plan, results_dir, args):
     # final name and exiting keeps that file (Snakemake deletes the outputs of every job it sees
     # fail, and a stopped job is one); the next run then finds the cell finished.
     # --rerun-triggers mtime with no declared inputs: the identity in the file name decides.
+    # The plan is named relative to the results folder, Snakemake's working folder: a path in
+    # --config is parsed by Snakemake (a newline in it would be lost), and the folder is named
+    # once, by --directory.
     command = [SNAKEMAKE, "--snakefile", str(SNAKEFILE), "--directory", str(results_dir),
-               "--config", f"plan={plan}", "--ignore-incomplete", "--keep-incomplete",
+               "--config", f"plan={plan.relative_to(results_dir)}", "--ignore-incomplete", "--keep-incomplete",
                "--rerun-triggers", "mtime",
                "--keep-going", "--cores", str(args.cores)]
     if args.slurm:
@@ -109,6 +113,12 @@ def snakemake_command(plan, results_dir, args):
 
 
 SLURM_LOGS = Path("logs") / "slurm"
+# Snakemake writes a job's folder into its job script as '...\n...' (tests/sweep_shell_words_test.py),
+# which a shell reads as a backslash and an n: such a results folder is refused up front.
+CONTROL_CHARACTER = re.compile(r"[\x00-\x1f\x7f]")
+# Snakemake's cluster modes run '<submit command> "<job script>"' through a shell, the job script
+# inside the results folder: there the characters a shell reads inside double quotes would run.
+CLUSTER_UNSAFE = re.compile(r'["$`\\]')
 
 
 def slurm_arguments(results_dir):
@@ -116,10 +126,13 @@ def slurm_arguments(results_dir):
     built-in --slurm executor, which needs $USER and, with an account, slurmdbd accounting:
     docs/sweeps.md, "Running on a cluster"). One single-core job per cell with the cell's own
     memory and time (ncube.cell_resources); its output goes to logs/slurm/<job id>.log."""
+    log = str(results_dir / SLURM_LOGS).replace("%", "%%") + "/%j.log"  # %j: sbatch's job id
     submit = ("sbatch --parsable --job-name=ncube-{rule}-{wildcards.name} --cpus-per-task=1 "
               "--mem={resources.mem_mb} --time={resources.runtime} "
-              f"--chdir={results_dir} --output={results_dir / SLURM_LOGS}/%j.log")
-    status = f"env PYTHONPATH={paths.ANALYSIS} /usr/bin/python3 -m ncube.slurm_status"
+              f"--chdir={shell_words.template_word(results_dir)} "
+              f"--output={shell_words.template_word(log)}")
+    status = (f"env PYTHONPATH={shell_words.template_word(paths.ANALYSIS)} "
+              "/usr/bin/python3 -m ncube.slurm_status")
     return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel"]
 
 
@@ -163,8 +176,24 @@ def run_snakemake(command):
     return status, messages
 
 
+def bounded(low, high):
+    """An argparse type: a whole number in [low, high] (argparse says which option, and exits 2)."""
+    def whole_number(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"{value} is not in {low}..{high}")
+        return value
+    return whole_number
+
+
 def not_written(error, results_dir):
     """The plain line and exit code of the runner's own writes failing."""
+    if isinstance(error, output_file.OutputIsInputError):   # as ./simulate: a bad output path
+        outcome.say(str(error))
+        return 2
     if outcome.is_full(error):
         return outcome.say_full(results_dir)
     outcome.say(f"{error.filename or results_dir}: cannot be written: {error.strerror or error}")
@@ -206,11 +235,13 @@ def run(argv=None):
     parser.add_argument("sweeps", nargs="+", type=Path, help="sweep files (YAML or JSON)")
     parser.add_argument("--results", type=Path, default=Path("results"),
                         help="results folder (default: ./results)")
-    parser.add_argument("--cores", type=int, default=2, help="local cores (default 2)")
+    parser.add_argument("--cores", type=bounded(1, 1024), default=2,
+                        help="local cores, 1 to 1024 (default 2)")
     parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
     parser.add_argument("--profile", type=Path, help="a Snakemake profile")
     parser.add_argument("--cluster", help="generic cluster mode: the submit command")
-    parser.add_argument("--jobs", type=int, default=100, help="cluster jobs at once (default 100)")
+    parser.add_argument("--jobs", type=bounded(1, 100_000), default=100,
+                        help="cluster jobs at once, 1 to 100000 (default 100)")
     parser.add_argument("--check", action="store_true", help="validate and list the cells only")
     argv = sys.argv[1:] if argv is None else argv
     extra = []
@@ -242,6 +273,16 @@ def run(argv=None):
     if os.environ.get("NCUBE_SIMULATE"):   # the jobs run in the results folder
         os.environ["NCUBE_SIMULATE"] = os.path.abspath(os.environ["NCUBE_SIMULATE"])
     results_dir = args.results.resolve()
+    if CONTROL_CHARACTER.search(str(results_dir)):
+        print(f"sweep: --results {str(results_dir)!r}: a results folder's path may not hold a "
+              f"control character (a newline, a tab): Snakemake's job scripts cannot carry it",
+              file=sys.stderr)
+        return 2
+    if (args.slurm or args.cluster or args.profile) and CLUSTER_UNSAFE.search(str(results_dir)):
+        print(f"sweep: --results {str(results_dir)!r}: with a cluster, a results folder's path may "
+              f"not hold \" $ ` or \\ (Snakemake hands each job script's path, inside it, to a "
+              f"shell in double quotes); choose another folder", file=sys.stderr)
+        return 2
     try:
         results_dir.mkdir(parents=True, exist_ok=True)
         if args.slurm:   # sbatch does not make the folder of a job's output

@@ -17,7 +17,7 @@ from pathlib import Path, PurePath
 
 from . import options as opts
 from . import output_file, paths, results
-from .sweep import Sweep
+from .sweep import Sweep, protect_plan_inputs
 
 COLUMNS = (["sweep", "cell", "scene", "scene_label", "scene_file", "R", "V", "nodes"] +
            [name for name in opts.OPTIONS if name not in ("R", "V")] +
@@ -144,7 +144,9 @@ def summarize(sweep, results_dir="."):
 
 def main():
     plan, name = sys.argv[1], sys.argv[2]
-    for document in json.loads(Path(plan).read_text())["sweeps"]:
+    planned = json.loads(Path(plan).read_text())
+    protect_plan_inputs(plan, planned)
+    for document in planned["sweeps"]:
         if document["name"] == name:
             try:
                 csv_path, figures = summarize(Sweep.from_dict(document))

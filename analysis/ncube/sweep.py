@@ -10,10 +10,10 @@ import functools
 import hashlib
 import itertools
 import json
+import math
 import os
 import re
 import subprocess
-import xml.etree.ElementTree as ElementTree
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
@@ -40,7 +40,13 @@ def _settings_problem(arguments):
     checked = subprocess.run([simulate, "--check-settings", *arguments], capture_output=True,
                              text=True, env=paths.simulate_environment())
     if checked.returncode == 0:
-        return None
+        # A sweep writes into its results folder only (docs/sweeps.md, "What runs"): settings
+        # that would make SimGrid write a file (a trace: the cell key trace instead) are refused.
+        written = [line.removeprefix("output: ") for line in checked.stdout.splitlines()
+                   if line.startswith("output: ")]
+        return (f"these settings would make SimGrid write {', '.join(written)}; a sweep writes "
+                f"only into its results folder (a cell's trace: the key trace: true)"
+                if written else None)
     return checked.stderr.strip().removeprefix("simulate: ") or f"exit {checked.returncode}"
 
 
@@ -52,6 +58,15 @@ def simgrid_settings_problem(cfg):
     return _settings_problem(tuple(f"--cfg={k}:{v}" for k, v in sorted(cfg.items())))
 
 
+# The most cells one sweep file may describe, counted before any is made: each cell is checked,
+# hashed and planned (about a millisecond and a few KB each), and each is one file of the results
+# folder; a grid of 10^8 would take gigabytes before its first line of output.
+MAX_CELLS = 100_000
+
+# A sweep's name names a folder of the results (sweeps/<name>/) and a Snakemake wildcard; it is
+# held to a set of characters no shell, file system or scheduler reads as syntax
+# (docs/sweeps.md), so that no sweep file can make the sweep tool run a command.
+SWEEP_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.+-]{0,99}")
 CELL_KEYS = dict({name: option.doc or name for name, option in opts.OPTIONS.items()},
                  scene="a scene or model file (.obj, .ply, .gltf, .glb): a path (relative to the sweep file) or a name in scenes/",
                  platform="a platform file (JSON or SimGrid XML): a path or a name in platforms/",
@@ -187,21 +202,26 @@ def read_document(path):
                          "mappings and lists)") from None
 
 
+@functools.lru_cache(maxsize=None)
+def _platform_nodes(path):
+    run = subprocess.run([paths.simulate_binary(), "--platform", path, "--platform-nodes"],
+                         capture_output=True, text=True, env=paths.simulate_environment())
+    if run.returncode != 0:
+        raise ValueError(run.stderr.strip().removeprefix("simulate: "))
+    return int(run.stdout)
+
+
 def platform_nodes(path):
-    """Nodes of a platform file: 2^dimension (JSON), the hosts node-0... (SimGrid XML)."""
-    text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)
+    """Nodes of a platform file, as ./simulate counts them (--platform-nodes: the file read with
+    every check and limit a run applies: one function for both). Without a simulator yet (a
+    sweep file checked before the build), a JSON platform's 2^dimension; an XML platform needs
+    the simulator."""
+    text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)   # through the gate
+    if os.access(paths.simulate_binary(), os.X_OK):
+        return _platform_nodes(str(path))
     if text.lstrip().startswith("<"):
-        root = ElementTree.fromstring(text)
-        names = {h.get("id") for h in root.iter("host")}
-        for cluster in root.iter("cluster"):
-            for part in cluster.get("radical", "").split(","):
-                low, _, high = part.partition("-")
-                for k in range(int(low), int(high or low) + 1):
-                    names.add(f"{cluster.get('prefix', '')}{k}{cluster.get('suffix', '')}")
-        count = 0
-        while f"node-{count}" in names:
-            count += 1
-        return count
+        raise ValueError(f"counting a SimGrid platform's nodes needs {paths.simulate_binary()} "
+                         "built (README.md)")
     return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
 
 
@@ -298,6 +318,13 @@ def _expand(document, where):
                 raise SweepError(f"{where}: grid: key {key!r}: not a cell key (known: "
                                  + ", ".join(sorted(CELL_KEYS)) + "), nor a group of keys "
                                  "that vary together (a list of mappings, e.g. {R: 4, V: 15})")
+        count = math.prod(len(values) for values in grid.values())
+        listed = len(document.get("cells") or []) if isinstance(document.get("cells"), list) else 0
+        if count + listed > MAX_CELLS:
+            raise SweepError(f"{where}: \"grid\": {count:,} cells"
+                             + (f" and {listed:,} listed" if listed else "")
+                             + f", more than a sweep file may hold ({MAX_CELLS:,}); "
+                             "split it into several sweep files")
         keys = list(grid)
         for combination in itertools.product(*(grid[k] for k in keys)):
             point = {}
@@ -309,6 +336,9 @@ def _expand(document, where):
     if cells is not None:
         if not isinstance(cells, list):
             raise SweepError(f"{where}: \"cells\": expected a list")
+        if len(cells) > MAX_CELLS:
+            raise SweepError(f"{where}: \"cells\": {len(cells):,} cells, more than a sweep file "
+                             f"may hold ({MAX_CELLS:,}); split it into several sweep files")
         for k, cell in enumerate(cells, 1):
             if not isinstance(cell, dict):
                 raise SweepError(f"{where}: cell {k}: expected a mapping")
@@ -368,7 +398,7 @@ def _cell(spec, label, sweep_name, base, where):
         fail("scene", f"{files['scene']}: not a scene file ({e})")
     try:
         nodes = platform_nodes(files["platform"])
-    except (ValueError, KeyError, TypeError, ElementTree.ParseError) as e:
+    except (ValueError, KeyError, TypeError) as e:
         fail("platform", f"{files['platform']}: not a platform file ({e})")
     R, V = options["R"], options["V"]
     if R * (V + 1) > nodes:
@@ -416,6 +446,14 @@ def _cell(spec, label, sweep_name, base, where):
                 nodes=nodes, scene_parts_sha256=scene_parts)
 
 
+def protect_plan_inputs(plan_path, plan):
+    """The plan and every file it names as read (ncube.input_file.protect): a job writes none of
+    them, whatever link is planted among its outputs."""
+    input_file.protect([plan_path] + [s["file"] for s in plan["sweeps"]] +
+                       [c[key] for s in plan["sweeps"] for c in s["cells"]
+                        for key in ("scene_file", "platform_file", "cost_model_file")])
+
+
 def load(path):
     """Reads and validates a sweep file; raises SweepError naming the file, cell and key."""
     try:
@@ -433,8 +471,11 @@ def load(path):
             raise SweepError(f"{where}: key {key!r}: unknown key (known: "
                              + ", ".join(sorted(SWEEP_KEYS)) + ")")
     name = document.get("name", path.stem)
-    if not isinstance(name, str) or not name or "/" in name or name.startswith("."):
-        raise SweepError(f"{where}: key 'name': {name!r} must be a plain name")
+    if not isinstance(name, str) or not SWEEP_NAME.fullmatch(name):
+        raise SweepError(f"{where}: key 'name': {name!r} must be a plain name: letters, digits "
+                         f"and _ . + - (a letter or digit first, at most 100 characters)"
+                         + ("; the file's name is the default, so give one" if "name" not in document
+                            else ""))
     measure = document.get("measure", "seconds_per_iteration")
     if measure not in MEASURES:
         raise SweepError(f"{where}: key 'measure': {measure!r} must be one of "

@@ -4,6 +4,7 @@
 
 #include "machine/parameter_file.h"
 #include "machine/simgrid_platform_file.h"
+#include "machine/simgrid_setting_ranges.h"
 #include "machine/simgrid_settings.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
@@ -22,9 +23,11 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
     if (!it.value().is_string())
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": expected a string");
     settings[it.key()] = it.value().get<std::string>();
-    // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h).
-    const std::string problem =
-        simgrid_setting_problem("--cfg=" + it.key() + ":" + settings[it.key()]);
+    // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h);
+    // a platform file never names a file to write (src/machine/simgrid_setting_ranges.h).
+    std::string problem = platform_setting_problem(it.key(), settings[it.key()]);
+    if (problem.empty())
+      problem = simgrid_setting_problem("--cfg=" + it.key() + ":" + settings[it.key()]);
     if (!problem.empty())
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": " + problem);
   }

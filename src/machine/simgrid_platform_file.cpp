@@ -12,6 +12,7 @@
 
 #include "machine/machine_parameters.h"
 #include "machine/parameter_file.h"
+#include "machine/platform_shape.h"
 #include "machine/simgrid_session.h"
 #include "machine/simgrid_setting_ranges.h"
 #include "util/input_error.h"
@@ -108,8 +109,7 @@ void check_config_tags(const std::string& path, const std::string& text) {
     for (xmlNode* prop = config->children; prop; prop = prop->next) {
       if (!named(prop, "prop")) continue;
       const std::string name = attribute(prop, "id"), value = attribute(prop, "value");
-      const SimgridSettingRange* range = simgrid_setting_range(name);
-      const std::string problem = range ? setting_range_problem(*range, value) : "";
+      const std::string problem = platform_setting_problem(name, value);
       if (!problem.empty())
         throw InputError(path + ": <config> <prop id=\"" + name + "\" value=\"" + value +
                          "\">: " + problem);
@@ -135,6 +135,7 @@ PlatformConfig read_simgrid_platform_file(const std::string& path,
   // SimGrid would open the files an XML platform names (a host's speed_file, a link's
   // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
   const std::string text = file.read_all();
+  check_platform_shape(path, text);  // before SimGrid or libxml2 builds anything of it
   check_config_tags(path, text);
   simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
   const std::string attribute = file_attribute(text);
@@ -147,6 +148,7 @@ PlatformConfig read_simgrid_platform_file(const std::string& path,
   } catch (const std::exception& e) {
     throw InputError(path + ": not a SimGrid platform file: " + e.what());
   }
+  check_platform_values(path, engine);
   PlatformConfig c;
   c.format = "simgrid-xml";
   c.simgrid_config.clear();  // the file's own <config> tags are the defaults

@@ -139,7 +139,8 @@ const std::vector<SimgridSettingRange> kRanges = {
     {"tracing/disable-destroy", K::kBoolean, 0, 0, {}, "both values run scene0 traced"},
     {"tracing/disable_link", K::kBoolean, 0, 0, {}, "both values run scene0 traced"},
     {"tracing/disable_power", K::kBoolean, 0, 0, {}, "both values run scene0 traced"},
-    {"tracing/filename", K::kAny, 0, 0, {}, "the trace's path"},
+    {"tracing/filename", K::kOutputFile, 0, 0, {},
+     "the trace's path, which only the command line names (docs/cli.md, \"Output files\")"},
     {"tracing/platform", K::kBoolean, 0, 0, {}, "traced runs are read by pajeng (tests)"},
     {"tracing/platform/topology", K::kBoolean, 0, 0, {}, "both values run scene0 traced"},
     {"tracing/precision", K::kInteger, 0, 17, {},
@@ -211,6 +212,7 @@ bool within(const SimgridSettingRange& range, const std::string& value) {
   switch (range.kind) {
     case K::kAny:
     case K::kBoolean:
+    case K::kOutputFile:  // where a platform gives it, platform_setting_problem refuses it
       return true;  // SimGrid's own check tells its type
     case K::kInteger:
       return read_integer(value, number) && number >= range.low && number <= range.high;
@@ -261,6 +263,7 @@ std::string describe_range(const SimgridSettingRange& range) {
     case K::kEmpty: return "empty (not available in ./simulate)";
     case K::kFactorList: return "SIZE:FACTOR;SIZE:FACTOR... with sizes >= 0 and finite factors > 0";
     case K::kThreeFactors: return "A;B;C, three finite numbers > 0";
+    case K::kOutputFile: return "a path, named on ./simulate's command line";
   }
   return "";
 }
@@ -269,6 +272,16 @@ std::string setting_range_problem(const SimgridSettingRange& range, const std::s
   if (within(range, value)) return "";
   return std::string(range.name) + " must be " + describe_range(range) + " (" +
          std::string(range.why) + ")";
+}
+
+std::string platform_setting_problem(std::string_view name, const std::string& value) {
+  const SimgridSettingRange* range = simgrid_setting_range(name);
+  if (!range) return "";  // SimGrid names what it does not know
+  if (range->kind == K::kOutputFile)
+    return std::string(name) + " names a file SimGrid would write, and a platform file never "
+           "chooses where anything is written: name it on the command line (--cfg=" +
+           std::string(name) + ":PATH), where the output rule applies";
+  return setting_range_problem(*range, value);
 }
 
 }  // namespace ncube

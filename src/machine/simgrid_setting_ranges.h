@@ -23,6 +23,9 @@ enum class SettingKind {
   kEmpty,           // only the empty value (the feature is refused)
   kFactorList,      // SIZE:FACTOR;SIZE:FACTOR... (SMPI's piecewise factors), finite factors > 0
   kThreeFactors,    // A;B;C, three finite numbers > 0 (the IB model's penalty factors)
+  kOutputFile,      // the path of a file SimGrid writes: taken from ./simulate's command line
+                    // only, under the output rule (src/machine/simgrid_outputs.h); a platform
+                    // file never chooses where anything is written (platform_setting_problem)
 };
 
 struct SimgridSettingRange {
@@ -45,5 +48,10 @@ std::string describe_range(const SimgridSettingRange& range);
 // "" when `value` lies in the row's range, else what it must be, e.g.
 // "maxmin/precision must be a finite number in [1e-15, 0.01] (NaN ... end in abort)".
 std::string setting_range_problem(const SimgridSettingRange& range, const std::string& value);
+
+// What is wrong with a setting that a platform file gives (a JSON platform's simgrid_config,
+// a SimGrid platform file's <config> tags): its range problem, or, for a setting that names a
+// file SimGrid writes (kOutputFile), that a platform file may not choose it. "" when fine.
+std::string platform_setting_problem(std::string_view name, const std::string& value);
 
 }  // namespace ncube

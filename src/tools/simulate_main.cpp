@@ -99,6 +99,19 @@ int simulate(int argc, char** argv) {
                                     &options.config.cost_model_file})
       if (!file->empty()) named.push_back(*file);
     ncube::OutputFiles checked(simgrid_files, named);
+    // Each file the settings would make SimGrid write, one line each: the sweep tool refuses
+    // a cell's settings that write outside its results folder (docs/sweeps.md, "What runs").
+    for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
+      std::cout << "output: " << output.path << "\n";
+    return ncube::kExitOk;
+  }
+  if (options.platform_nodes) {  // the platform alone, read as a run reads it
+    if (ncube::is_simgrid_platform_file(options.config.platform_file))
+      ncube::simgrid_engine(simgrid_outputs.engine_arguments(
+          [](const std::string&) { return std::string("/dev/null"); }));
+    const ncube::PlatformConfig platform = ncube::load_platform_config(
+        options.config.platform_file, options.config.simgrid_arguments);
+    std::cout << platform.node_count() << "\n";
     return ncube::kExitOk;
   }
   // Elements are built only after the memory check: a scene far too large for the modeled
@@ -127,17 +140,24 @@ int simulate(int argc, char** argv) {
   ncube::Scene scene =
       model ? import() : ncube::load_scene(options.scene_file, ncube::SceneElements::kLater);
   // A JSON platform is read before any Engine exists (its settings are checked in child
-  // processes); its own tracing settings then join the command line's, so that a trace it
-  // turns on is an output like the others. A SimGrid platform file is read by the Engine,
-  // after the outputs are checked (SimGrid opens log files as its Engine starts).
+  // processes). A platform file never chooses where anything is written: it cannot name a
+  // trace's file (platform_setting_problem), and its own tracing settings shape only a trace
+  // the command line asks for (they then join the command line's); a platform that turns
+  // tracing on by itself writes it nowhere, as a SimGrid platform file's <config> does
+  // (engine_arguments names /dev/null). A SimGrid platform file is read by the Engine, after
+  // the outputs are checked (SimGrid opens log files as its Engine starts).
   const bool simgrid_platform = ncube::is_simgrid_platform_file(options.config.platform_file);
   std::optional<ncube::PlatformConfig> json_platform;
   std::vector<std::string> run_settings;
   if (!simgrid_platform) {
     json_platform =
         ncube::load_platform_config(options.config.platform_file, options.config.simgrid_arguments);
+    bool command_line_traces = false;
+    for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
+      command_line_traces |= output.setting.rfind("--cfg=tracing", 0) == 0;
     for (const auto& [name, value] : json_platform->simgrid_config)
-      if (name.rfind("tracing", 0) == 0) run_settings.push_back("--cfg=" + name + ":" + value);
+      if (command_line_traces && name.rfind("tracing", 0) == 0)
+        run_settings.push_back("--cfg=" + name + ":" + value);
   }
   run_settings.insert(run_settings.end(), options.config.simgrid_arguments.begin(),
                       options.config.simgrid_arguments.end());

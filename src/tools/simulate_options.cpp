@@ -212,7 +212,12 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "");
   table.flag("--check-settings", options.check_settings,
              "check the SimGrid settings given (--cfg, --log) as a run would, then stop: exit "
-             "0, or 2 with the setting SimGrid refuses (no scene needed)",
+             "0, printing 'output: PATH' for each file they would write, or 2 with the "
+             "setting SimGrid refuses (no scene needed)",
+             "");
+  table.flag("--platform-nodes", options.platform_nodes,
+             "read the platform (--platform) with every check a run makes, print its number "
+             "of nodes and stop (no scene needed; the sweep tool counts a platform's nodes so)",
              "");
   table.flag("--list-inputs", options.list_inputs,
              "print every file the run would read (role, file, sha256) as JSON, each read "
@@ -247,7 +252,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   }
   for (CLI::Option* option : import_options)
     options.import_options_given = options.import_options_given || option->count() > 0;
-  if (options.scene_file.empty() && !options.check_settings) {
+  if (options.scene_file.empty() && !options.check_settings && !options.platform_nodes) {
     std::cerr << "simulate: scene is required\n(see simulate --help)\n";
     return kExitBadInput;
   }

@@ -22,6 +22,7 @@ struct SimulateOptions {
   bool quiet = false;
   bool check_settings = false;  // --check-settings: check the SimGrid settings and stop
   bool list_inputs = false;     // --list-inputs: print the files the run reads and stop
+  bool platform_nodes = false;  // --platform-nodes: print the platform's node count and stop
   std::vector<std::string> command_line;  // argv, for the result file's provenance
 };
 
