@@ -85,10 +85,8 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
     std::fprintf(out, "parallelisation       %s, %s\n", config.parallelisation.c_str(),
                  count_of(long(r.shooters.size()), "shot", "shots").c_str());
   if (config.options.subdivision.enabled) {
-    long long at_end = 0;
-    for (const ncube::PatchSolution& patch : r.solution) at_end += patch.cells.size();
-    std::fprintf(out, "subdivision           %lld elements at the end (%lld at the start)\n",
-                 at_end, (long long)scene.element_total());
+    std::fprintf(out, "subdivision           %ld elements at the end (%ld at the start)\n",
+                 r.elements_at_end(), long(scene.element_total()));
   }
   if (config.balancing.enabled)
     std::fprintf(out, "load balancing        %s moved in %s (%.0f bytes)\n",
