@@ -102,6 +102,20 @@ with tempfile.TemporaryDirectory() as folder:
     missing(cwd, "platform", "nosuch")
     missing(cwd, "cost model", "nosuch.json")
     missing(cwd, "scene", str(elsewhere / "nosuch.json"))
+    # build/network_bench finds its platform by the same rule.
+    bench = Path(SIMULATE).parent / "network_bench"
+    done = subprocess.run([str(bench), "--platform", "cm5", "--quiet", "--max-bytes", "64",
+                           "--json", "bench.json"], cwd=cwd, capture_output=True, text=True,
+                          timeout=60, env=dict(os.environ, NCUBE_ROOT=str(ROOT)))
+    check(done.returncode == 0 and os.path.realpath(elsewhere / json.loads(
+          (elsewhere / "bench.json").read_text())["platform_file"]) == str(elsewhere / "cm5"),
+          f"network_bench --platform cm5 reads ./cm5 first ({done.stderr.strip()})")
+    (elsewhere / "cm5").unlink()
+    done = subprocess.run([str(bench), "--platform", "cm5", "--quiet", "--max-bytes", "64",
+                           "--json", "bench.json"], cwd=cwd, capture_output=True, text=True,
+                          timeout=60, env=dict(os.environ, NCUBE_ROOT=str(ROOT)))
+    check(done.returncode == 0 and json.loads((elsewhere / "bench.json").read_text())["platform_file"]
+          == str(platforms / "machines/cm5.xml"), f"network_bench --platform cm5 reads platforms/machines/cm5.xml ({done.stderr.strip()})")
     # A sweep file names a machine and a scene by their bare names, as ./simulate does.
     sweep = elsewhere / "machines.json"
     sweep.write_text(json.dumps({"name": "lookup", "cells": [
