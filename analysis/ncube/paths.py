@@ -36,6 +36,8 @@ def input_candidates(name, base, role, root=None):
     sweep file's folder in a sweep); relative to the repository root; and a bare name (no
     '/') in the role's folders, as given and with each of the role's extensions."""
     root = Path(root or ROOT)
+    # "~/..." in a sweep file means what it means on a command line, where the shell expands it.
+    name = os.path.expanduser(name)
     path = Path(name)
     if not name or path.is_absolute():
         return [path]
