@@ -40,6 +40,8 @@ def usage(option):
         return "`%s %s`" % (flag, "\\|".join(option["values"]))
     if kind == "setting":
         return "`%s=%s`" % (flag, option.get("value_name", PLACEHOLDERS[kind]))
+    if kind == "text":
+        return "`%s %s`" % (flag, option["value_name"])
     return "`%s %s`" % (flag, PLACEHOLDERS[kind])
 
 

@@ -110,6 +110,8 @@ refused "named.xml: line 4: speed_file=: names a file, which SimGrid would read 
   scene0.json --R 1 --platform named.xml
 mkdir -p "$work/root/platforms"
 mkfifo "$work/root/platforms/ncube2.json"
+# (Every input is looked up before any is read: the cost model must be there to reach the FIFO.)
+cp "$root/platforms/cost_model.json" "$work/root/platforms/"
 NCUBE_ROOT="$work/root" refused "ncube2.json: platform file is a FIFO, not a regular file" "$root/scenes/scene0.json"
 
 # A model may name files in a folder given with --model-folder.

@@ -16,7 +16,7 @@ def run(scene, options=None, platform=None, cost_model=None, cfg=None, timeout=N
     """Runs ./simulate on `scene` (a bare name or a path) with `options` (ncube.options names)
     and returns the result file as a dict, with "exit_code" added. `threads`: host threads
     (0: every core, for runs one at a time; results do not depend on it)."""
-    scene = paths.resolve_input(str(scene), Path.cwd(), paths.SCENES) or scene
+    scene = paths.find_input(str(scene), Path.cwd(), "scene") or scene
     with tempfile.TemporaryDirectory() as folder:
         out = Path(folder) / "result.json"
         command = opts.command(paths.simulate_binary(), scene, options or {}, platform,

@@ -360,15 +360,16 @@ def _cell(spec, label, sweep_name, base, where):
     if "scene" not in spec:
         fail("scene", "missing")
     files = {}
-    for key, default, folder in (("scene", None, paths.SCENES),
-                                 ("platform", "ncube2.json", paths.PLATFORMS),
-                                 ("cost_model", "cost_model.json", paths.PLATFORMS)):
+    # The one lookup rule of ./simulate (paths.find_input), relative to the sweep file's folder.
+    for key, default, role in (("scene", None, "scene"),
+                               ("platform", "ncube2.json", "platform"),
+                               ("cost_model", "cost_model.json", "cost model")):
         name = spec.get(key, default)
         if not isinstance(name, str):
             fail(key, "must be a file name or path")
-        files[key] = paths.resolve_input(name, base, folder)
+        files[key] = paths.find_input(name, base, role)
         if files[key] is None:
-            fail(key, f"no such file: {name!r} (relative to {base}, or in {folder})")
+            fail(key, f"no such {role} file: {name!r} ({paths.looked_for(name, base, role)})")
     options = {}
     for name, option in opts.OPTIONS.items():
         if name in spec:

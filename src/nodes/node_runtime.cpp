@@ -56,10 +56,36 @@ double NodeRuntime::now() {
   return simgrid::s4u::Engine::get_clock();
 }
 
-void NodeRuntime::busy(double seconds, const char* what, double& account) {
+const char* message_kind_name(MessageKind kind) {
+  switch (kind) {
+    case MessageKind::kCandidate: return "candidate";
+    case MessageKind::kShooter: return "shooter";
+    case MessageKind::kStop: return "stop";
+    case MessageKind::kPoints: return "points";
+    case MessageKind::kAnswers: return "answers";
+    case MessageKind::kPatches: return "patches";
+    case MessageKind::kIncrements: return "increments";
+    case MessageKind::kElements: return "elements";
+    case MessageKind::kCredit: return "credit";
+    case MessageKind::kHistogram: return "histogram";
+    case MessageKind::kSelection: return "selection";
+    case MessageKind::kPixels: return "pixels";
+  }
+  return "unknown";
+}
+
+TraceEvent NodeRuntime::event(const char* what) const {
+  TraceEvent e{stats_.node, what, 0.0, 0.0};
+  e.iteration = render_ ? -1 : iteration_;
+  e.shooter = render_ ? -1 : shooter_;
+  e.render = render_;
+  return e;
+}
+
+void NodeRuntime::busy(double seconds, const char* what, double& account, const TraceEvent* traced) {
   if (seconds <= 0.0) return;
   account += seconds;
-  charged_.push_back({what, seconds});
+  charged_.push_back({what, seconds, trace_ ? (traced ? *traced : event(what)) : TraceEvent{}});
 }
 
 void NodeRuntime::run_charged() {
@@ -71,7 +97,10 @@ void NodeRuntime::run_charged() {
   if (record_) record_->executed(total * platform_.node_speed);
   if (trace_)
     for (const Charged& c : charged_) {
-      trace_->push_back({stats_.node, c.what, start, start + c.seconds});
+      TraceEvent e = c.event;
+      e.start = start;
+      e.end = start + c.seconds;
+      trace_->push_back(e);
       start += c.seconds;
     }
   charged_.clear();
@@ -88,13 +117,19 @@ void NodeRuntime::charge(const RenderCounts& counts) {
 }
 
 void NodeRuntime::send(int to, std::unique_ptr<Message> message) {
-  busy(platform_.send_overhead, "overhead", stats_.overhead_seconds);
   const double bytes = payload_bytes(*message, costs_) + costs_.message_header_bytes;
+  TraceEvent traced = event("overhead");
+  traced.has_message = traced.sent = true;
+  traced.kind = message->kind;
+  traced.peer = to;
+  traced.bytes = bytes;
+  busy(platform_.send_overhead, "overhead", stats_.overhead_seconds, &traced);
   run_charged();  // the message leaves once the sender's overhead has run
   message->from = stats_.node;
   ++stats_.messages_sent;
   stats_.bytes_sent += bytes;
-  XBT_DEBUG("node %d -> node %d: kind %d, %.0f bytes", stats_.node, to, int(message->kind), bytes);
+  XBT_DEBUG("node %d -> node %d: %s, %.0f bytes", stats_.node, to, message_kind_name(message->kind),
+            bytes);
   if (record_) record_->put(to, std::uint64_t(bytes));
   node_mailbox(to)->put_init(message.release(), std::uint64_t(bytes))->detach();
 }
@@ -127,14 +162,27 @@ std::unique_ptr<Message> NodeRuntime::receive(std::initializer_list<MessageKind>
     else
       deferred_.push_back(std::move(arrived));
   }
+  TraceEvent traced = event("overhead");
+  if (trace_) {
+    traced.has_message = true;
+    traced.kind = message->kind;
+    traced.peer = message->from;
+    traced.bytes = payload_bytes(*message, costs_) + costs_.message_header_bytes;
+  }
   if (wait_start >= 0.0) {
     const double end = simgrid::s4u::Engine::get_clock();
     stats_.waiting_seconds += end - wait_start;
-    if (trace_) trace_->push_back({stats_.node, "wait", wait_start, end});
+    if (trace_) {
+      TraceEvent wait = traced;
+      wait.what = "wait";
+      wait.start = wait_start;
+      wait.end = end;
+      trace_->push_back(wait);
+    }
   }
   ++stats_.messages_received;
-  XBT_DEBUG("node %d <- node %d: kind %d", stats_.node, message->from, int(message->kind));
-  busy(platform_.receive_overhead, "overhead", stats_.overhead_seconds);
+  XBT_DEBUG("node %d <- node %d: %s", stats_.node, message->from, message_kind_name(message->kind));
+  busy(platform_.receive_overhead, "overhead", stats_.overhead_seconds, &traced);
   return message;
 }
 

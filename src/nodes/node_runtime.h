@@ -37,11 +37,32 @@ struct NodeStats {
   WorkCounts counts;
 };
 
+// One slice of a node's timeline (--trace; docs/result-format.md, "The trace"). Recording it
+// changes no simulated time: the slices are written down as the charged time runs.
 struct TraceEvent {
   int node;
   const char* what;  // "compute", "overhead", "wait"
   double start, end;
+  // Where the node's program was: the iteration (the pass of its loop that chooses and shoots
+  // a shooter, from 1; 0 before the first) and the patch being shot (-1: not known yet), or
+  // the rendering phase (render: iteration and shooter -1).
+  int iteration = 0;
+  int shooter = -1;
+  bool render = false;
+  // "overhead" of a send or receive, and "wait": the message's kind, the other node (the
+  // receiver of a send; the sender of a receive, or of the message that ended a wait), its
+  // modeled bytes (header included) and whether it was sent.
+  bool has_message = false;
+  MessageKind kind = MessageKind::kStop;
+  int peer = -1;
+  double bytes = 0.0;
+  bool sent = false;
 };
+
+// The message kind's name in the trace and the message log: "candidate", "shooter", "stop",
+// "points", "answers", "patches", "increments", "elements", "credit", "histogram",
+// "selection", "pixels".
+const char* message_kind_name(MessageKind kind);
 
 // The mailbox of node `node` ("node-N"), looked up by name once per node and engine: every
 // message to a node goes there (NodeRuntime, and bench/simgrid_replay.cpp's replay of them).
@@ -90,6 +111,13 @@ class NodeRuntime {
   double node_memory() const { return platform_.node_memory; }
   // The simulated time, after the CPU time charged so far has run.
   double now();
+  // Where the program is, for the trace's events from now on (TraceEvent): the node programs
+  // call it as an iteration begins and as its shooter becomes known, the rendering phase once.
+  void set_trace_context(int iteration, int shooter) {
+    iteration_ = iteration;
+    shooter_ = shooter;
+  }
+  void set_trace_render() { render_ = true; }
   const NodeStats& stats() const { return stats_; }
   const CostModel& costs() const { return costs_; }
 
@@ -99,14 +127,17 @@ class NodeRuntime {
   // of a node's program (receive overhead, work, send overhead) then take one SimGrid
   // activity instead of one each, with the same simulated times up to rounding. Valid
   // because one program runs per node, so nothing else wants the CPU meanwhile.
-  void busy(double seconds, const char* what, double& account);
+  void busy(double seconds, const char* what, double& account, const TraceEvent* traced = nullptr);
   // Runs the CPU time charged and not yet run, as one execute().
   void run_charged();
 
   struct Charged {
     const char* what;
     double seconds;
+    TraceEvent event;  // what the trace records of it (when tracing)
   };
+  // An event of this node in its current context, for the trace.
+  TraceEvent event(const char* what) const;
   std::vector<Charged> charged_;
 
   const PlatformConfig& platform_;
@@ -118,6 +149,8 @@ class NodeRuntime {
   RenderCounts render_counts_;
   bool finished_ = false;
   double memory_ = 0.0;
+  int iteration_ = 0, shooter_ = -1;  // the trace's context (set_trace_context)
+  bool render_ = false;
 };
 
 }  // namespace ncube

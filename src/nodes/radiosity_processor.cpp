@@ -29,7 +29,8 @@ void RadiosityProcessor::run() {
     const WorkCounts setup = form_factor_methods().at(setup_.options.form_factors).setup_work(setup_.options);
     if (!(setup == WorkCounts{})) runtime_.charge(setup);
   }
-  for (;;) {
+  for (int pass = 1;; ++pass) {
+    runtime_.set_trace_context(pass, -1);
     // Every processor offers the patch with the most unshot radiosity (and, when loads can
     // change, its load); the master chooses the globally best as shooter, and the patches
     // to move, and sends its decision to all (sections 2.2, 4.2).
@@ -41,6 +42,7 @@ void RadiosityProcessor::run() {
     const ShooterChoice global_best = selection_.reduce_to_master(local_best, loads);
     const Decision decision = selection_.broadcast_from_master(
         selection_.is_master() ? decide(global_best, loads) : Decision{});
+    runtime_.set_trace_context(pass, decision.shooter.patch);
     tell_visibility_processors(decision);
     if (decision.shooter.patch < 0) break;
     carry_out(decision.transfers, decision.shooter.patch);

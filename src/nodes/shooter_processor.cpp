@@ -32,6 +32,7 @@ void ShooterProcessor::run() {
   const ProgressiveOptions& o = setup_.options;
   const std::size_t elements = std::size_t(setup_.scene.element_total());
   for (int iteration = 0;; ++iteration) {
+    runtime_.set_trace_context(iteration + 1, -1);
     // Every node holds every patch's unshot radiosity, so every node chooses the same
     // shooters without asking anyone.
     WorkCounts search;
@@ -48,6 +49,8 @@ void ShooterProcessor::run() {
       XBT_VERB("iteration %d: %zu shooters, the best patch %d (unshot power %g)", iteration + 1,
                chosen.size(), best.patch, best.power);
     std::vector<Rgb> increments(elements, Rgb(0.0));
+    if (std::size_t(rank_) < chosen.size())
+      runtime_.set_trace_context(iteration + 1, chosen[std::size_t(rank_)].patch);
     if (std::size_t(rank_) < chosen.size()) shoot(chosen[std::size_t(rank_)], increments);
     exchange_.sum(increments, iteration);
     apply(chosen, increments);

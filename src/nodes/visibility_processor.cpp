@@ -15,11 +15,13 @@ void VisibilityProcessor::run() {
   runtime_.start();
   runtime_.charge(share_.build_work());  // section 6: the octree over the share, if any
   Shooter shooter;
+  int iteration = 0;  // the trace's context: shooters received so far
   for (;;) {
     const std::unique_ptr<Message> message =
         runtime_.receive({MessageKind::kShooter, MessageKind::kPoints, MessageKind::kStop});
     if (message->kind == MessageKind::kStop) break;
     if (message->kind == MessageKind::kShooter) {
+      runtime_.set_trace_context(++iteration, message->candidate.patch);
       shooter = make_shooter(setup_.scene, message->candidate.patch, message->candidate.unshot,
                              setup_.options.samples);
       continue;

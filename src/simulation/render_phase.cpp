@@ -63,6 +63,7 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
     NodeRuntime& runtime = runtimes.emplace_back(node, radiosity ? NodeRole::kRadiosity : NodeRole::kVisibility,
                                                  node / (V + 1), platform, costs, trace);
     runtime.set_memory(memory[std::size_t(node)]);
+    runtime.set_trace_render();
     RenderProcessor& program = programs.emplace_back(setup, node, runtime);
     simgrid::s4u::Actor::create("render-" + std::to_string(node), hosts[std::size_t(node)],
                                 exceptions.guard([&program] { program.run(); }));

@@ -125,9 +125,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   // Sections 4.1, 4.2: the elements each radiosity processor held at each shooter selection
   // (with subdivision or balancing on), the elements at the end, and the patches moved.
   j["elements_per_iteration"] = result.elements_per_iteration;
-  long elements = 0;
-  for (const PatchSolution& p : result.solution) elements += long(p.cells.size());
-  j["elements_at_end"] = elements;
+  j["elements_at_end"] = result.elements_at_end();
   j["patches_moved"] = result.patches_moved;
   j["transfers"] = {{"messages", result.transfer_messages}, {"payload_bytes", result.transfer_bytes}};
   nlohmann::json radiosity = nlohmann::json::array();

@@ -42,6 +42,13 @@ struct SimulationResult {
   // Every patch's elements and radiosities as the radiosity processors hold them at the end
   // (one entry per scene patch, in scene order).
   std::vector<PatchSolution> solution;
+  // The elements of the solution (after subdivision's cuts): the result file's
+  // elements_at_end and the summary's.
+  long elements_at_end() const {
+    long elements = 0;
+    for (const PatchSolution& p : solution) elements += long(p.cells.size());
+    return elements;
+  }
   std::vector<Rgb> element_radiosity;  // per level-0 element of the scene (area-weighted mean
                                        // of its descendants when cut), for rendering
   std::vector<std::vector<int>> held_patches;  // per radiosity processor, at the end

@@ -1,13 +1,35 @@
 // The timeline of a run as a Chrome trace-event file (opens in Perfetto or chrome://tracing):
-// one track per node, a slice for every stretch of computing, message overhead and waiting.
+// one track per node, a slice for every stretch of computing, message overhead (each send and
+// receive) and waiting, each with its arguments (docs/result-format.md, "The trace").
 #pragma once
 
+#include <climits>
 #include <string>
+#include <vector>
 
 #include "simulation/simulation.h"
 
 namespace ncube {
 
-std::string trace_to_json(const SimulationResult& result);
+// Which events a trace keeps (--trace-iterations, --trace-nodes): by default all of them.
+struct TraceWindow {
+  // Iterations first to last, both included (from 1; 0 is the time before the first). Once
+  // limited, the rendering phase's events (which belong to no iteration) are left out.
+  bool iterations_limited = false;
+  int first_iteration = 0, last_iteration = INT_MAX;
+  std::vector<int> nodes;  // the nodes kept, ascending; empty: every node
+
+  bool keeps_node(int node) const;
+  bool keeps(const TraceEvent& event) const;
+};
+
+// "A:B" (iterations A to B), "A:" (A to the end), "A" (A alone); A <= B, from 0. Returns an
+// empty string when `text` is one of these (and sets the window's iterations), else why not.
+std::string parse_trace_iterations(const std::string& text, TraceWindow& window);
+// "0,3,8-15": node numbers and ranges, ascending or not, from 0. Returns an empty string when
+// `text` is such a list (and sets the window's nodes), else why not.
+std::string parse_trace_nodes(const std::string& text, TraceWindow& window);
+
+std::string trace_to_json(const SimulationResult& result, const TraceWindow& window = {});
 
 }  // namespace ncube

@@ -79,6 +79,15 @@ nlohmann::json range_json(const ValueRange& range, bool integer) {
           {"high_included", range.high_included}};
 }
 
+// What --help shows after an option's flag: the placeholder docs/cli.md's table uses (N, X,
+// FILE, the choices, a setting's NAME:VALUE) and the default, instead of CLI11's C++ types and
+// validator names ("INT:INT=1", "FLOAT:NUMBER").
+CLI::Option* shown_as(CLI::Option* option, const std::string& placeholder,
+                      const std::string& shown_default) {
+  return option->option_text(placeholder +
+                             (shown_default.empty() ? "" : " (default " + shown_default + ")"));
+}
+
 }  // namespace
 
 nlohmann::json& OptionTable::entry(const std::string& flag, const std::string& kind,
@@ -92,8 +101,9 @@ CLI::Option* OptionTable::integer(const std::string& flag, int& value, long low,
                                   const std::string& help, const std::string& field) {
   const ValueRange range{double(low), double(high)};
   entry(flag, "integer", help, field).update({{"default", value}, {"range", range_json(range, true)}});
-  return app_.add_option(flag, value, help)->capture_default_str()->check(
+  CLI::Option* option = app_.add_option(flag, value, help)->capture_default_str()->check(
       decimal_integer(range, false));
+  return shown_as(option, "N", option->get_default_str());
 }
 
 CLI::Option* OptionTable::square(const std::string& flag, int& value, long low, long high,
@@ -101,8 +111,9 @@ CLI::Option* OptionTable::square(const std::string& flag, int& value, long low, 
   const ValueRange range{double(low), double(high)};
   entry(flag, "integer", help, field)
       .update({{"default", value}, {"range", range_json(range, true)}, {"perfect_square", true}});
-  return app_.add_option(flag, value, help)->capture_default_str()->check(
+  CLI::Option* option = app_.add_option(flag, value, help)->capture_default_str()->check(
       decimal_integer(range, true));
+  return shown_as(option, "N", option->get_default_str());
 }
 
 CLI::Option* OptionTable::even(const std::string& flag, int& value, long low, long high,
@@ -110,8 +121,9 @@ CLI::Option* OptionTable::even(const std::string& flag, int& value, long low, lo
   const ValueRange range{double(low), double(high)};
   entry(flag, "integer", help, field)
       .update({{"default", value}, {"range", range_json(range, true)}, {"even", true}});
-  return app_.add_option(flag, value, help)->capture_default_str()->check(
+  CLI::Option* option = app_.add_option(flag, value, help)->capture_default_str()->check(
       decimal_integer(range, false, true));
+  return shown_as(option, "N", option->get_default_str());
 }
 
 CLI::Option* OptionTable::number(const std::string& flag, double& value, ValueRange range,
@@ -120,15 +132,20 @@ CLI::Option* OptionTable::number(const std::string& flag, double& value, ValueRa
       .update({{"default", value}, {"range", range_json(range, false)}});
   // transform, not check: a check's changes to the text are discarded (CLI11), and -0 has to
   // become 0 before CLI11 converts it.
-  return app_.add_option(flag, value, help)->capture_default_str()->transform(
+  CLI::Option* option = app_.add_option(flag, value, help)->capture_default_str()->transform(
       finite_number(range));
+  return shown_as(option, "X", show(value));
 }
 
 CLI::Option* OptionTable::choice(const std::string& flag, std::string& value,
                                  const std::vector<std::string>& values, const std::string& help,
                                  const std::string& field) {
   entry(flag, "choice", help, field).update({{"default", value}, {"values", values}});
-  return app_.add_option(flag, value, help)->capture_default_str()->check(CLI::IsMember(values));
+  std::string choices;
+  for (const std::string& v : values) choices += (choices.empty() ? "" : "|") + v;
+  return shown_as(
+      app_.add_option(flag, value, help)->capture_default_str()->check(CLI::IsMember(values)),
+      choices, value);
 }
 
 CLI::Option* OptionTable::flag(const std::string& flag, bool& value, const std::string& help,
@@ -146,19 +163,30 @@ CLI::Option* OptionTable::file(const std::string& flag, std::string& value,
   const CLI::Validator not_empty(
       [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : ""; },
       "FILE");
-  return app_.add_option(flag, value, help)->check(not_empty);
+  return shown_as(app_.add_option(flag, value, help)->check(not_empty), "FILE", shown_default);
 }
 
 CLI::Option* OptionTable::setting(const std::string& flag, std::vector<std::string>& values,
                                   const std::string& type_name, const std::string& help) {
   entry(flag, "setting", help, "").update({{"repeatable", true}, {"value_name", type_name}});
-  return app_.add_option(flag, values, help)->type_name(type_name)->allow_extra_args(false);
+  return shown_as(app_.add_option(flag, values, help)->allow_extra_args(false),
+                  type_name + " (repeatable)", "");
+}
+
+CLI::Option* OptionTable::text(const std::string& flag, std::string& value,
+                               const std::string& value_name,
+                               std::function<std::string(const std::string&)> check,
+                               const std::string& help) {
+  entry(flag, "text", help, "")["value_name"] = value_name;
+  const CLI::Validator well_formed(
+      [check](std::string& text) -> std::string { return check(text); }, "");
+  return shown_as(app_.add_option(flag, value, help)->check(well_formed), value_name, "");
 }
 
 CLI::Option* OptionTable::positional(const std::string& name, std::string& value,
                                      const std::string& help) {
   entry(name, "file", help, "")["positional"] = true;
-  return app_.add_option(name, value, help);
+  return shown_as(app_.add_option(name, value, help), "FILE", "");
 }
 
 void OptionTable::annotate(const std::string& flag, const std::string& key,

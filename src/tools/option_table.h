@@ -5,6 +5,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -49,6 +50,10 @@ class OptionTable {
   // A repeatable text setting passed on (SimGrid's --cfg and --log).
   CLI::Option* setting(const std::string& flag, std::vector<std::string>& values,
                        const std::string& type_name, const std::string& help);
+  // A text value of a form of its own (--trace-iterations A:B): `check` returns "" when the
+  // text is well formed, else why not (the parser's message). Not recorded in the result file.
+  CLI::Option* text(const std::string& flag, std::string& value, const std::string& value_name,
+                    std::function<std::string(const std::string&)> check, const std::string& help);
   // A positional argument.
   CLI::Option* positional(const std::string& name, std::string& value, const std::string& help);
 

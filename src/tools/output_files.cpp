@@ -195,4 +195,11 @@ void OutputFiles::commit() {
       throw failed(p, "cannot rename the written file onto it");
 }
 
+std::vector<OutputFiles::Output> OutputFiles::written() const {
+  std::vector<Output> done;
+  for (const Pending& p : pending_)
+    if (p.written) done.push_back({p.option, p.path});
+  return done;
+}
+
 }  // namespace ncube

@@ -56,6 +56,8 @@ class OutputFiles {
   // target and renames these onto the targets (the others vanish). Throws OutputError if a
   // write, a link or a rename fails.
   void commit();
+  // Every output written (after commit: in place), in the order they were asked for.
+  std::vector<Output> written() const;
 
  private:
   enum class Kind { kFile, kStream, kStandardOutput };

@@ -27,6 +27,7 @@
 #include "simulation/provenance.h"
 #include "simulation/result_file.h"
 #include "simulation/trace_file.h"
+#include "tools/input_lookup.h"
 #include "tools/output_files.h"
 #include "tools/progress.h"
 #include "tools/simulate_options.h"
@@ -34,49 +35,86 @@
 
 namespace {
 
-// `out`: stdout, or stderr when an output file is standard output.
+// "1 node", "64 nodes".
+std::string count_of(long long n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// A path as the summary shows it: relative to the repository when it lies there.
+std::string shown_path(const std::string& path) {
+  const std::string root = ncube::repository_root() + "/";
+  return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
+}
+
+// `out`: stdout, or stderr when an output file is standard output. The lines of the
+// defaults' runs come first and keep their form; a line for a choice away from the default
+// (platform aside, always named) is added only then (docs/cli.md, "Output").
 void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::SimulationConfig& config,
-                   const ncube::SimulationResult& r) {
-  std::fprintf(out, "scene                 %s (%zu patches, %zu elements)\n", scene.name.c_str(),
-              scene.patches.size(), std::size_t(scene.element_total()));
+                   const ncube::PlatformConfig& platform, const ncube::SimulationResult& r) {
+  std::fprintf(out, "scene                 %s (%s, %s)\n", scene.name.c_str(),
+               count_of(long(scene.patches.size()), "patch", "patches").c_str(),
+               count_of(scene.element_total(), "element", "elements").c_str());
+  std::fprintf(out, "platform              %s (%s, %s)\n",
+               std::filesystem::path(config.platform_file).stem().string().c_str(),
+               shown_path(config.platform_file).c_str(),
+               count_of(platform.node_count(), "node", "nodes").c_str());
+  const std::string nodes = count_of(config.node_count(), "node", "nodes");
   const bool hemicube = config.options.form_factors == "hemicube";
   if (hemicube)
-    std::fprintf(out, "configuration         R=%d V=%d on %d nodes, hemicube N=%d at the shooter's %s\n",
-                config.radiosity_processors, config.visibility_processors, config.node_count(),
-                config.options.hemicube.resolution,
-                ncube::hemicube_placement_name(config.options.hemicube.placement));
+    std::fprintf(out, "configuration         R=%d V=%d on %s, hemicube N=%d at the shooter's %s\n",
+                 config.radiosity_processors, config.visibility_processors, nodes.c_str(),
+                 config.options.hemicube.resolution,
+                 ncube::hemicube_placement_name(config.options.hemicube.placement));
   else
-    std::fprintf(out, "configuration         R=%d V=%d on %d nodes, %d samples per shooter\n",
-                config.radiosity_processors, config.visibility_processors, config.node_count(),
-                config.options.samples);
+    std::fprintf(out, "configuration         R=%d V=%d on %s, %d samples per shooter\n",
+                 config.radiosity_processors, config.visibility_processors, nodes.c_str(),
+                 config.options.samples);
+  const ncube::ProgramOptions defaults;
+  if (config.options.visibility != defaults.options.visibility)
+    std::fprintf(out, "visibility            %s\n", config.options.visibility.c_str());
+  if (hemicube)
+    std::fprintf(out, "form factors          %s\n", config.options.form_factors.c_str());
   std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
   if (r.status == ncube::RunStatus::kOutOfMemory)
     std::fprintf(out, "                      node %d (%s processor) needs %.0f bytes, has %.0f\n",
-                r.out_of_memory.node, ncube::role_name(r.out_of_memory.role), r.out_of_memory.needed_bytes,
-                r.out_of_memory.available_bytes);
+                 r.out_of_memory.node, ncube::role_name(r.out_of_memory.role),
+                 r.out_of_memory.needed_bytes, r.out_of_memory.available_bytes);
   std::fprintf(out, "iterations            %d (%s)\n", r.iterations,
-              r.converged ? "converged" : "not converged");
-  if (config.parallelisation != ncube::ProgramOptions{}.parallelisation)
-    std::fprintf(out, "parallelisation       %s, %zu shots\n", config.parallelisation.c_str(),
-                r.shooters.size());
+               r.converged ? "converged" : "not converged");
+  if (config.parallelisation != defaults.parallelisation)
+    std::fprintf(out, "parallelisation       %s, %s\n", config.parallelisation.c_str(),
+                 count_of(long(r.shooters.size()), "shot", "shots").c_str());
+  if (config.options.subdivision.enabled) {
+    std::fprintf(out, "subdivision           %ld elements at the end (%ld at the start)\n",
+                 r.elements_at_end(), long(scene.element_total()));
+  }
+  if (config.balancing.enabled)
+    std::fprintf(out, "load balancing        %s moved in %s (%.0f bytes)\n",
+                 count_of(r.patches_moved, "patch", "patches").c_str(),
+                 count_of(r.transfer_messages, "message", "messages").c_str(), r.transfer_bytes);
   std::fprintf(out, "simulated seconds     %.3f in all\n", r.simulated_seconds);
-  if (const std::optional<double> per_iteration = ncube::seconds_per_iteration(r.iteration_seconds))
-    std::fprintf(out, "seconds per iteration %.3f (mean of the first %d iterations%s)\n", *per_iteration,
-                ncube::iterations_measured(r.iteration_seconds),
-                r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
+  if (const std::optional<double> per_iteration = ncube::seconds_per_iteration(r.iteration_seconds)) {
+    const int measured = ncube::iterations_measured(r.iteration_seconds);
+    if (measured == 1)
+      std::fprintf(out, "seconds per iteration %.3f (1 iteration, all that ran)\n", *per_iteration);
+    else
+      std::fprintf(out, "seconds per iteration %.3f (mean of the first %d iterations%s)\n",
+                   *per_iteration, measured,
+                   r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
+  }
   if (hemicube)
     std::fprintf(out, "hemicube cells        %llu depth-tested, %llu read out\n",
-                (unsigned long long)r.counts.hemicube_depth_tests,
-                (unsigned long long)r.counts.hemicube_cells_read);
+                 (unsigned long long)r.counts.hemicube_depth_tests,
+                 (unsigned long long)r.counts.hemicube_cells_read);
   else
     std::fprintf(out, "ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
-                (unsigned long long)r.counts.ray_patch_tests,
-                (unsigned long long)r.counts.plane_crossings);
+                 (unsigned long long)r.counts.ray_patch_tests,
+                 (unsigned long long)r.counts.plane_crossings);
   if (r.render.ran)
     std::fprintf(out, "rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
-                ncube::row_partition_name(config.render.partition),
-                ncube::render_distribution_name(config.render.distribution),
-                r.render.simulated_seconds, r.render.imbalance);
+                 ncube::row_partition_name(config.render.partition),
+                 ncube::render_distribution_name(config.render.distribution),
+                 r.render.simulated_seconds, r.render.imbalance);
   std::fprintf(out, "host seconds          %.3f\n", r.host_seconds);
 }
 
@@ -94,10 +132,20 @@ int simulate(int argc, char** argv) {
   ncube::check_simgrid_settings(options.config.simgrid_arguments);
   if (options.check_settings) {
     // Their paths as a run checks them, against the files the command line names.
+    // The files found as a run would find them; one that is nowhere is named as given (a
+    // missing input is the run's error, not the settings').
     std::vector<std::string> named = simgrid_outputs.inputs();
-    for (const std::string* file : {&options.scene_file, &options.config.platform_file,
-                                    &options.config.cost_model_file})
-      if (!file->empty()) named.push_back(*file);
+    for (const auto& [file, role] :
+         {std::pair{&options.scene_file, ncube::InputRole::kScene},
+          std::pair{&options.config.platform_file, ncube::InputRole::kPlatform},
+          std::pair{&options.config.cost_model_file, ncube::InputRole::kCostModel}}) {
+      if (file->empty()) continue;
+      try {
+        named.push_back(ncube::find_input(*file, role, ncube::repository_root()));
+      } catch (const ncube::InputError&) {
+        named.push_back(*file);
+      }
+    }
     ncube::OutputFiles checked(simgrid_files, named);
     // Each file the settings would make SimGrid write, one line each: the sweep tool refuses
     // a cell's settings that write outside its results folder (docs/sweeps.md, "What runs").
@@ -114,6 +162,7 @@ int simulate(int argc, char** argv) {
     std::cout << platform.node_count() << "\n";
     return ncube::kExitOk;
   }
+  ncube::find_simulate_inputs(options);
   // Elements are built only after the memory check: a scene far too large for the modeled
   // machine is refused (exit 3) before the host allocates it.
   // A model file is imported into the project's scene JSON, then loaded (and checked) as a
@@ -128,6 +177,11 @@ int simulate(int argc, char** argv) {
   for (const char* other : {".obj", ".gltf", ".glb", ".stl", ".fbx", ".dae", ".off", ".x3d"})
     if (strcasecmp(mesh_extension.c_str(), other) == 0)
       throw ncube::InputError("--mesh " + options.mesh_file + ": only PLY is written (name it .ply)");
+  // The picture is PNG whatever the name (no JPEG encoder is linked): a name promising another
+  // format is refused. A name without an extension ("-", /dev/stdout, "picture") is taken.
+  const std::string image_extension = std::filesystem::path(options.image_file).extension().string();
+  if (!image_extension.empty() && strcasecmp(image_extension.c_str(), ".png") != 0)
+    throw ncube::InputError("--image " + options.image_file + ": only PNG is written (name it .png)");
   ncube::ImportSummary imported;
   std::string imported_text;  // the imported scene's JSON, kept for --export-scene only
   const auto import = [&options, &imported, &imported_text] {
@@ -229,13 +283,14 @@ int simulate(int argc, char** argv) {
   if (!options.quiet && model)
     std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
                  "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "
-                 "degenerate dropped, %ld pairs merged), %zu files read\n",
+                 "degenerate dropped, %ld pairs merged), %s read\n",
                  imported.faces, imported.patches, imported.split, imported.degenerate,
-                 imported.merged, imported.files.size());
+                 imported.merged, count_of(long(imported.files.size()), "file", "files").c_str());
   if (!options.quiet)
-    print_summary(outputs.uses_standard_output() ? stderr : stdout, scene, options.config, result);
+    print_summary(outputs.uses_standard_output() ? stderr : stdout, scene, options.config, platform,
+                  result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
-  if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result));
+  if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result, options.trace_window));
   if (!options.image_file.empty() && result.status == ncube::RunStatus::kOk)  // the simulated phase's picture if it ran
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
@@ -254,6 +309,10 @@ int simulate(int argc, char** argv) {
                                                          options.config.render.width,
                                                          options.config.render.height)));
   outputs.commit();
+  if (!options.quiet)
+    for (const ncube::OutputFiles::Output& written : outputs.written())
+      std::fprintf(outputs.uses_standard_output() ? stderr : stdout, "written               %s (%s)\n",
+                   written.path.c_str(), written.option.c_str());
   if (result.status == ncube::RunStatus::kOutOfMemory) {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
                  result.out_of_memory.node, ncube::role_name(result.out_of_memory.role),

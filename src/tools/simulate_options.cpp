@@ -9,6 +9,8 @@
 #include "radiosity/form_factor_methods.h"
 #include "scene/scene_loader.h"
 #include "simulation/parallelisations.h"
+#include "simulation/trace_file.h"
+#include "tools/input_lookup.h"
 #include "tools/option_table.h"
 #include "util/input_error.h"
 #include "util/version.h"
@@ -21,13 +23,12 @@ std::string repository_root() {
   return NCUBE_SOURCE_DIR;
 }
 
-std::string resolve_scene_path(const std::string& name) {
-  namespace fs = std::filesystem;
-  // The error_code forms: a loop of links is the gate's to report (exit 2), not an exception.
-  std::error_code error;
-  if (fs::exists(name, error) || error || name.find('/') != std::string::npos) return name;
-  const fs::path in_scenes = fs::path(repository_root()) / "scenes" / name;
-  return fs::exists(in_scenes, error) ? in_scenes.string() : name;
+void find_simulate_inputs(SimulateOptions& options) {
+  const std::string root = repository_root();
+  SimulationConfig& config = options.config;
+  options.scene_file = find_input(options.scene_file, InputRole::kScene, root);
+  config.platform_file = find_input(config.platform_file, InputRole::kPlatform, root);
+  config.cost_model_file = find_input(config.cost_model_file, InputRole::kCostModel, root);
 }
 
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
@@ -48,7 +49,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   constexpr long kMaxInt = std::numeric_limits<int>::max();
   // Required, but for --check-settings (checked after parsing).
   table.positional("scene", options.scene_file,
-                   "scene file (JSON); a bare name is also looked up in scenes/");
+                   "scene file (JSON) or model (OBJ, PLY, glTF): a path (from here, else from the "
+                   "repository), or a name in scenes/ (scene3 or scene3.json)");
   table.integer("--R", config.radiosity_processors, 1, kMaxInt, "radiosity processors", "R");
   table.integer("--V", config.visibility_processors, 0, kMaxInt,
                 "visibility processors per radiosity processor", "V");
@@ -178,10 +180,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   for (const char* flag : {"--scale", "--element-size", "--element-budget", "--flip-faces",
                            "--merge-coplanar", "--light", "--model-folder", "--export-scene"})
     table.annotate(flag, "applies_to", "model files");
-  table.file("--platform", config.platform_file, "file", "machine description",
+  table.file("--platform", config.platform_file, "file",
+             "machine description: a path (from here, else from the repository), or a name in "
+             "platforms/ or platforms/machines/ (ncube2, cm5.xml)",
              "platforms/ncube2.json")
       ->capture_default_str();
-  table.file("--cost-model", config.cost_model_file, "file", "flops per counted operation",
+  table.file("--cost-model", config.cost_model_file, "file",
+             "flops per counted operation: a path, or a name in platforms/",
              "platforms/cost_model.json")
       ->capture_default_str();
   table.file("--json", options.json_file, "output", "write the result file here");
@@ -191,6 +196,24 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
              "tone-mapped as the picture, raw radiosity as doubles");
   table.file("--trace", options.trace_file, "output",
              "write every node's timeline as a Chrome trace-event file (Perfetto)");
+  std::string trace_iterations, trace_nodes;
+  const auto trace_iterations_check = [](const std::string& text) {
+    TraceWindow window;
+    return parse_trace_iterations(text, window);
+  };
+  const auto trace_nodes_check = [](const std::string& text) {
+    TraceWindow window;
+    return parse_trace_nodes(text, window);
+  };
+  CLI::Option* trace_iterations_option = table.text(
+      "--trace-iterations", trace_iterations, "A:B", trace_iterations_check,
+      "--trace: keep only the events of iterations A to B (A: from A on; A alone; 0 is before "
+      "the first), without the rendering phase's");
+  CLI::Option* trace_nodes_option =
+      table.text("--trace-nodes", trace_nodes, "LIST", trace_nodes_check,
+                 "--trace: keep only the events of these nodes, e.g. 0,3,8-15");
+  for (const char* flag : {"--trace-iterations", "--trace-nodes"})
+    table.annotate(flag, "applies_to", "--trace");
   bool quiet = false;
   table.flag("--quiet", quiet, "print nothing but errors (no summary, no progress)", "");
   std::vector<std::string> cfg, log;
@@ -256,6 +279,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     std::cerr << "simulate: scene is required\n(see simulate --help)\n";
     return kExitBadInput;
   }
+  for (CLI::Option* option : {trace_iterations_option, trace_nodes_option})
+    if (option->count() > 0 && options.trace_file.empty()) {
+      std::cerr << "simulate: " << option->get_name() << " applies to --trace FILE only\n";
+      return kExitBadInput;
+    }
+  if (!trace_iterations.empty()) parse_trace_iterations(trace_iterations, options.trace_window);
+  if (!trace_nodes.empty()) parse_trace_nodes(trace_nodes, options.trace_window);
   for (const std::string& setting : cfg) config.simgrid_arguments.push_back("--cfg=" + setting);
   for (const std::string& setting : log) config.simgrid_arguments.push_back("--log=" + setting);
   options.command_line.assign(argv, argv + argc);
@@ -263,7 +293,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   config.record_trace = !options.trace_file.empty();
   config.options.ray_policy =
       ray_test == "all" ? RayTestPolicy::kTestAllPatches : RayTestPolicy::kStopAtFirstBlocker;
-  options.scene_file = resolve_scene_path(options.scene_file);
   options.quiet = quiet;
   config.options.hemicube.placement =
       hemicube_placement == "elements" ? HemicubePlacement::kElements : HemicubePlacement::kCentre;

@@ -6,6 +6,7 @@
 
 #include "models/model_import.h"
 #include "simulation/simulation.h"
+#include "simulation/trace_file.h"
 
 namespace ncube {
 
@@ -15,6 +16,7 @@ struct SimulateOptions {
   std::string json_file;   // empty: no result file
   std::string image_file;  // empty: no picture
   std::string trace_file;  // empty: no timeline
+  TraceWindow trace_window;  // which of the timeline's events --trace keeps
   std::string mesh_file;   // empty: no solution mesh
   std::string export_scene_file;  // empty: the imported model is not written as JSON
   ImportOptions import;    // how a model file becomes a scene (docs/scene-format.md)
@@ -30,8 +32,10 @@ struct SimulateOptions {
 // bad option, with the message printed) or -1 to go on.
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options);
 
-// "scene0.json" -> "<repository>/scenes/scene0.json" when the bare name is not a file here.
-std::string resolve_scene_path(const std::string& name);
+// Finds the scene, the platform and the cost model by the one lookup rule
+// (tools/input_lookup.h) and replaces each name by the path found. Throws InputError naming
+// every place tried when one is nowhere.
+void find_simulate_inputs(SimulateOptions& options);
 
 // The repository root (for platforms/ and scenes/): $NCUBE_ROOT, else the source tree the
 // binary was built from.

@@ -166,7 +166,9 @@ def figure_gantt(inputs):
     slices = {}
     for event in read_json(trace_path)["traceEvents"]:
         if event["ph"] == "X":
-            slices.setdefault((event["tid"], event["name"]), []).append(
+            # By category (compute, overhead, wait): a send or receive is named by its
+            # message's kind (docs/result-format.md, "The trace").
+            slices.setdefault((event["tid"], event["cat"]), []).append(
                 (event["ts"] / 1e6, event["dur"] / 1e6))
     nodes = cell.result["nodes"]
     fig, ax = plt.subplots(figsize=(12, 0.2 * len(nodes) + 1.5))
