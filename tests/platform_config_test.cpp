@@ -21,8 +21,11 @@ TEST(PlatformFamily, EachDimensionFrom7To13DiffersFromTheNcube2OnlyInItsDimensio
     const PlatformConfig p = shipped("ncube2-d" + std::to_string(d) + ".json");
     EXPECT_EQ(p.dimension, d);
     EXPECT_EQ(p.node_count(), 1 << d);
-    for (const MachineParameter& m : machine_parameters())
-      if (std::string(m.name) != "dimension") EXPECT_EQ(m.get(p), m.get(base)) << d << " " << m.name;
+    for (const MachineParameter& m : machine_parameters()) {
+      if (std::string(m.name) != "dimension") {
+        EXPECT_EQ(m.get(p), m.get(base)) << d << " " << m.name;
+      }
+    }
     EXPECT_EQ(p.simgrid_config, base.simgrid_config) << d;
   }
   EXPECT_EQ(shipped("ncube2-d13.json").node_count(), 8192);
