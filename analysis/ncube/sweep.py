@@ -213,16 +213,30 @@ def _platform_nodes(path):
 
 def platform_nodes(path):
     """Nodes of a platform file, as ./simulate counts them (--platform-nodes: the file read with
-    every check and limit a run applies: one function for both). Without a simulator yet (a
-    sweep file checked before the build), a JSON platform's 2^dimension; an XML platform needs
-    the simulator."""
+    every check and limit a run applies: one function for both). Without a simulator built yet
+    (sweep files read by a page script in a fresh clone), an estimate that runs nothing: a JSON
+    platform's 2^dimension, an XML one's node-k hosts and cluster radicals, counted by ranges;
+    the cells' own runs then check the file."""
     text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)   # through the gate
-    if os.access(paths.simulate_binary(), os.X_OK):
+    if _simulator_built():
         return _platform_nodes(str(path))
-    if text.lstrip().startswith("<"):
-        raise ValueError(f"counting a SimGrid platform's nodes needs {paths.simulate_binary()} "
-                         "built (README.md)")
-    return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
+    if not text.lstrip().startswith("<"):
+        return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
+    names = set(re.findall(r'<host\s[^>]*id="(node-\d+)"', text))
+    count = len(names)
+    for radical in re.findall(r'<cluster\s[^>]*radical="([\d,-]+)"', text):
+        for part in radical.split(","):
+            low, _, high = part.partition("-")
+            count += max(0, int(high or low) - int(low) + 1)
+    return count
+
+
+def _simulator_built():
+    """Whether the simulator can run: $NCUBE_SIMULATE, else the build behind ./simulate."""
+    binary = Path(paths.simulate_binary())
+    if binary.resolve() == (paths.ROOT / "simulate").resolve():
+        binary = paths.ROOT / "build" / "simulate"
+    return os.access(binary, os.X_OK)
 
 
 MODEL_SUFFIXES = (".obj", ".ply", ".gltf", ".glb")   # models ./simulate imports
