@@ -84,8 +84,10 @@ int run(int argc, char** argv) {
     reference::FormFactorOptions options;
     options.side = point_side;
     options.threads = threads;
-    const reference::FormFactorRows rows = reference::area_form_factors(scene, options, &stats);
-    return reference::solve_radiosity(scene, rows, 1e-13, 100000, report);
+    std::vector<double> open;
+    const reference::FormFactorRows rows = reference::area_form_factors(scene, options, &stats, &open);
+    return reference::element_means(scene, reference::solve_radiosity(scene, rows, 1e-13, 100000, report),
+                                    open);
   };
   const std::vector<Rgb> check = solve(side / 2, result.check_stats, nullptr);
   result.radiosity = solve(side, result.stats, &result.solve);
