@@ -31,9 +31,9 @@ rc=$?
 [[ $rc == 2 && $(cat "$scratch/err") == *none.json* ]] || fail "missing scene: exit $rc"
 
 # Threads change nothing.
-"$solver" cornell-box --samples 16 --threads 1 --quiet --out "$scratch/one.json" \
+"$solver" cornell-box --samples 16 --refine 1 --threads 1 --quiet --out "$scratch/one.json" \
   --mesh "$scratch/one.ply" &&
-  "$solver" cornell-box --samples 16 --threads 2 --quiet --out "$scratch/two.json" &&
+  "$solver" cornell-box --samples 16 --refine 1 --threads 2 --quiet --out "$scratch/two.json" &&
   same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
 
 # --mesh is the same solution in ./simulate's mesh layout: no error against the file.
