@@ -3,17 +3,18 @@ Cycles side of analysis/cycles/cycles_answers.py, which writes JOB.json and read
 writes. Nothing here decides a number of the answer: it builds the scene the job describes,
 bakes Cycles' diffuse lighting (direct + indirect, without the surface's colour) onto every
 quad of it once per seed, and saves the raw texels as float32 next to the job
-(`<job>.texels-<seed>.npy`, shape quads x res x res x 3) with the build's checks.
+(`<job>.texels-<seed>.npy`: every quad's res x res x 3 values in turn, rows along v), and
+`<job>.report.json` (Blender's version, the faces' normals as built, the bakes' seconds).
 
 The job (written by cycles_answers.py, units already scaled there):
   quads: [{"corners": [[x,y,z] x 4], "patch": p, "res": n}], patches: [{"rho": [r,g,b],
-  "emission": [r,g,b]}], samples, seeds, threads.
+  "emission": [r,g,b]}], samples, seeds, bounces, threads.
 Each quad is one Blender object of two triangles (v0 v1 v2) and (v0 v2 v3), with the UV
 corners (0,0) (1,0) (1,1) (0,1), so its texels cover the quad exactly (no texel is partly
 outside it); its own float image; its own material:
   front (Backfacing = 0): Diffuse BSDF (colour rho) + Emission (colour E, strength 1)
-  back  (Backfacing = 1): Holdout-free black: an Emission of strength 0 (no BSDF), so a path
-         that reaches a back is absorbed: opaque backs, one-sided emitters and receivers.
+  back  (Backfacing = 1): black: an Emission of strength 0 and no BSDF, so a path that
+         reaches a back ends there: opaque backs, one-sided emitters and receivers.
 """
 import json
 import sys
