@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # analysis/cycles/cycles_answers.py (docs/accuracy.md, "Against Cycles") on closed forms, where
 # Debian's blender is installed (skipped, exit 77, elsewhere): units, one-sided emitters and
-# receivers, opaque backs, enough bounces. About 2 minutes on a shared 2-core machine.
+# receivers, opaque backs, enough bounces; the committed Cornell box answers reproduce. About 2
+# minutes on a shared 2-core machine.
 set -u
 root=$2
 command -v blender > /dev/null || { echo "cycles_answers_test: skipped: no blender on PATH"; exit 77; }
@@ -71,6 +72,18 @@ for d in (a, b):
         d.pop(k)
 sys.exit(0 if a == b else 1)
 PY
+# The committed Cornell box answers reproduce from their command (experiments/claims/cycles-answers)
+# but for the seconds and the thread count: about a minute.
+"$root/experiments/claims/cycles-answers" --out "$scratch/committed" cornell-box > /dev/null 2>&1 &&
+  /usr/bin/python3 - "$root/analysis/cycles/cornell-box.json" "$scratch/committed/cornell-box.json" <<'PY' ||
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+for d in (a, b):
+    for k in ("host_seconds", "bake_seconds", "threads"):
+        d.pop(k)
+sys.exit(0 if a == b else 1)
+PY
+  fail "analysis/cycles/cornell-box.json does not reproduce from experiments/claims/cycles-answers"
 # Bad input: one line, exit 2, no file.
 for args in "--seeds 1" "--samples 0"; do
   run "$scratch/squares.json" $args --out "$scratch/bad.json"
