@@ -93,12 +93,12 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
                                                mix_seed(options.seed, std::uint64_t(i), 1));
     radii[std::size_t(i)] = radius(scene.elements[std::size_t(i)]);
   }
-  // The share of each element's area that is open (enclosed_fraction's comment below).
-  std::vector<double> open(static_cast<std::size_t>(n));
+  // The share of each element's area that is open (open_fraction_of above).
+  std::vector<double> open_share(static_cast<std::size_t>(n));
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
   for (int i = 0; i < n; ++i)
-    open[std::size_t(i)] = open_fraction_of(points[std::size_t(i)],
+    open_share[std::size_t(i)] = open_fraction_of(points[std::size_t(i)],
                                             scene.patches[std::size_t(scene.elements[std::size_t(i)].patch)].normal,
                                             rays, mix_seed(options.seed, std::uint64_t(i), 0));
   // upper[i]: (j, I_ij) for j > i, the double integral.
@@ -161,14 +161,14 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
   // F_ij = I_ij / (A_i times i's open share): the exchange of i's open part, whose radiosity
   // is what i sends (its enclosed part sees no front, so I_ij holds nothing of it).
   const auto open_area = [&](int e) {
-    return scene.elements[std::size_t(e)].area * open[std::size_t(e)];
+    return scene.elements[std::size_t(e)].area * open_share[std::size_t(e)];
   };
   FormFactorRows rows(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     for (const FormFactorEntry& e : upper[std::size_t(i)]) {
-      if (open[std::size_t(i)] > 0.0)
+      if (open_share[std::size_t(i)] > 0.0)
         rows[std::size_t(i)].push_back({e.element, e.value / open_area(i)});
-      if (open[std::size_t(e.element)] > 0.0)
+      if (open_share[std::size_t(e.element)] > 0.0)
         rows[std::size_t(e.element)].push_back({i, e.value / open_area(e.element)});
     }
     std::vector<FormFactorEntry>().swap(upper[std::size_t(i)]);  // the host's memory back
@@ -177,7 +177,7 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
     std::sort(row.begin(), row.end(),
               [](const FormFactorEntry& a, const FormFactorEntry& b) { return a.element < b.element; });
   if (stats) *stats = {ray_total, near_total, pair_total};
-  if (open_fraction) *open_fraction = std::move(open);
+  if (open_fraction) *open_fraction = std::move(open_share);
   return rows;
 }
 
