@@ -2,7 +2,7 @@
 # build/reference_solution (docs/accuracy.md): every committed reference in analysis/reference/
 # reproduces from its one command (experiments/claims/references) but for host_seconds and
 # code_version; the result does not depend on the number of threads; bad input is exit 2 with
-# one line. About 1-3 minutes (two references at K = 256 on 2 cores).
+# one line. About 5 minutes on a shared 2-core machine (two references at --refine 2, K = 64).
 set -u
 simulate=$1 root=$2
 solver=$(dirname "$simulate")/reference_solution
@@ -20,7 +20,7 @@ PY
 }
 
 # Bad input: one line, exit 2, no file.
-for args in "--samples 9" "--samples 2" "--samples 4096" "--threads -1" "--samples x"; do
+for args in "--samples 9" "--samples 2" "--samples 4096" "--threads -1" "--samples x" "--refine 0" "--refine 5"; do
   "$solver" cornell-box $args --out "$scratch/bad.json" > "$scratch/out" 2> "$scratch/err"
   rc=$?
   [[ $rc == 2 && $(wc -l < "$scratch/err") == 1 && ! -e $scratch/bad.json ]] ||
@@ -31,9 +31,9 @@ rc=$?
 [[ $rc == 2 && $(cat "$scratch/err") == *none.json* ]] || fail "missing scene: exit $rc"
 
 # Threads change nothing.
-"$solver" cornell-box --samples 16 --threads 1 --quiet --out "$scratch/one.json" \
+"$solver" cornell-box --samples 16 --refine 1 --threads 1 --quiet --out "$scratch/one.json" \
   --mesh "$scratch/one.ply" &&
-  "$solver" cornell-box --samples 16 --threads 2 --quiet --out "$scratch/two.json" &&
+  "$solver" cornell-box --samples 16 --refine 1 --threads 2 --quiet --out "$scratch/two.json" &&
   same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
 
 # --mesh is the same solution in ./simulate's mesh layout: no error against the file.
@@ -62,9 +62,10 @@ sys.exit(0 if len(r["elements"]) == 96 and worst < 0.01 else "furnace: |B - 2| u
 # Each committed reference reproduces.
 for committed in "$root"/analysis/reference/*.json; do
   scene=$(basename "$committed" .json)
-  samples=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["samples"])' "$committed")
+  read -r samples refine < <(/usr/bin/python3 -c 'import json,sys; r = json.load(open(sys.argv[1]))
+print(r["samples"], r["refine"])' "$committed")
   "$root/experiments/claims/references" --build "$(dirname "$solver")" --out "$scratch" \
-    --samples "$samples" "$scene" > /dev/null || fail "$scene: the command failed"
+    --samples "$samples" --refine "$refine" "$scene" > /dev/null || fail "$scene: the command failed"
   same "$committed" "$scratch/$scene.json" || fail "$scene: analysis/reference/$scene.json does not reproduce"
 done
 [[ $failed == 0 ]] && echo "reference_solution_test: passed"

@@ -47,10 +47,42 @@ double pair_term(const AreaSample& x, const Vec3& nx, const AreaSample& y, const
   return rays.visible(x.point, nx, y.point, ny) ? term : 0.0;
 }
 
+// The weighted share of `points` (on a surface of normal `normal`) that are open: from which
+// some ray of a stratified cosine-weighted spread of kEnclosureSide^2 directions meets a
+// patch's front or leaves the scene. A point whose every ray meets a back (the floor inside
+// a bottomless box standing on it) is enclosed: it receives nothing and sends nothing to any
+// front, so its radiosity is its emission, and it must not dilute what the rest of its
+// element sends (the element's radiosity is constant: without this, the floor elements
+// partly under the Cornell box's blocks sent the blocks' faces their mean over the dark part
+// too, several per cent too little).
+double open_fraction_of(const std::vector<AreaSample>& points, const Vec3& normal,
+                        const RayVisibility& rays, std::uint64_t seed) {
+  constexpr int side = FormFactorOptions::kEnclosureSide;
+  const Vec3 tangent = glm::normalize(
+      glm::cross(normal, std::fabs(normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+  const Vec3 bitangent = glm::cross(normal, tangent);
+  SampleStream stream(seed);
+  double open = 0.0, all = 0.0;
+  for (const AreaSample& x : points) {
+    bool is_open = false;
+    for (int a = 0; a < side && !is_open; ++a)
+      for (int b = 0; b < side && !is_open; ++b) {
+        const double u = (a + stream.next_unit()) / side, v = (b + stream.next_unit()) / side;
+        const double r = std::sqrt(u), phi = 2.0 * M_PI * v;
+        const Vec3 direction = r * std::cos(phi) * tangent + r * std::sin(phi) * bitangent +
+                               std::sqrt(std::max(0.0, 1.0 - u)) * normal;
+        is_open = rays.first_hit(x.point, normal, direction) != RayVisibility::Hit::kBack;
+      }
+    all += x.weight;
+    if (is_open) open += x.weight;
+  }
+  return all > 0.0 ? open / all : 0.0;
+}
+
 }  // namespace
 
 FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& options,
-                                 FormFactorStats* stats) {
+                                 FormFactorStats* stats, std::vector<double>* open_fraction) {
   const int n = int(scene.elements.size());
   const int k = options.side * options.side;
   const RayVisibility rays(scene);
@@ -61,10 +93,17 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
                                                mix_seed(options.seed, std::uint64_t(i), 1));
     radii[std::size_t(i)] = radius(scene.elements[std::size_t(i)]);
   }
+  // The share of each element's area that is open (open_fraction_of above).
+  std::vector<double> open_share(static_cast<std::size_t>(n));
+  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
+  for (int i = 0; i < n; ++i)
+    open_share[std::size_t(i)] = open_fraction_of(points[std::size_t(i)],
+                                            scene.patches[std::size_t(scene.elements[std::size_t(i)].patch)].normal,
+                                            rays, mix_seed(options.seed, std::uint64_t(i), 0));
   // upper[i]: (j, I_ij) for j > i, the double integral.
   std::vector<std::vector<FormFactorEntry>> upper(static_cast<std::size_t>(n));
   long long ray_total = 0, near_total = 0, pair_total = 0;
-  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads) \
     reduction(+ : ray_total, near_total, pair_total)
   for (int i = 0; i < n; ++i) {
@@ -88,6 +127,10 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
         ++near_total;
         // The inner integral over j in closed form, visibility from every point pair.
         for (const AreaSample& x : pi) {
+          // One-sided: a point on or behind j's plane sees only j's back, which sends nothing.
+          // (The closed form below is the same magnitude from either side, and no kernel term
+          // of such a point is positive, so it must not reach the ratio's fallback.)
+          if (glm::dot(x.point - ej.centre, nj) <= 0.0) continue;
           const double unoccluded = point_polygon_factor(x.point, ni, ej.polygon);
           if (unoccluded <= 0.0) continue;
           double seen = 0.0, all = 0.0;
@@ -115,11 +158,18 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
       if (sum > 0.0) upper[std::size_t(i)].push_back({j, sum / count});
     }
   }
+  // F_ij = I_ij / (A_i times i's open share): the exchange of i's open part, whose radiosity
+  // is what i sends (its enclosed part sees no front, so I_ij holds nothing of it).
+  const auto open_area = [&](int e) {
+    return scene.elements[std::size_t(e)].area * open_share[std::size_t(e)];
+  };
   FormFactorRows rows(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     for (const FormFactorEntry& e : upper[std::size_t(i)]) {
-      rows[std::size_t(i)].push_back({e.element, e.value / scene.elements[std::size_t(i)].area});
-      rows[std::size_t(e.element)].push_back({i, e.value / scene.elements[std::size_t(e.element)].area});
+      if (open_share[std::size_t(i)] > 0.0)
+        rows[std::size_t(i)].push_back({e.element, e.value / open_area(i)});
+      if (open_share[std::size_t(e.element)] > 0.0)
+        rows[std::size_t(e.element)].push_back({i, e.value / open_area(e.element)});
     }
     std::vector<FormFactorEntry>().swap(upper[std::size_t(i)]);  // the host's memory back
   }
@@ -127,6 +177,7 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
     std::sort(row.begin(), row.end(),
               [](const FormFactorEntry& a, const FormFactorEntry& b) { return a.element < b.element; });
   if (stats) *stats = {ray_total, near_total, pair_total};
+  if (open_fraction) *open_fraction = std::move(open_share);
   return rows;
 }
 

@@ -12,7 +12,10 @@
 // (point_polygon_factor.h) times the share of the kernel cos cos / (pi r^2) over the K points
 // y of j whose ray is unblocked (K x K rays): exact when j is wholly seen or wholly hidden.
 // The double integral I_ij is computed once per pair (i < j), so F_ij A_i = F_ji A_j holds
-// exactly. Pairs on one patch are planar: F = 0.
+// exactly. Pairs on one patch are planar: F = 0. One-sided: only fronts send and receive (a
+// point behind the other element's plane takes nothing from it). A point enclosed by backs
+// (the floor inside a bottomless box) sees no front: it is left out of its element's open
+// area, which is what F_ij is the exchange of (open_fraction_of in the .cpp).
 #pragma once
 
 #include <cstdint>
@@ -32,6 +35,8 @@ struct FormFactorOptions {
   std::uint64_t seed = 1994;     // fixed: the same scene and K give the same matrix
   int threads = 0;               // host threads (0: every core); the result does not depend on it
   static constexpr double kNearFactor = 2.0;
+  // Directions a side of the test of a point being enclosed (area_form_factors.cpp).
+  static constexpr int kEnclosureSide = 4;
 };
 
 // Row i: the nonzero F_ij, j ascending.
@@ -43,7 +48,11 @@ struct FormFactorStats {
   long long pairs = 0;  // unordered pairs that face each other (tested)
 };
 
+// `open_fraction` (if given): per element, the share of its area that is open (not enclosed
+// so that it sees only backs); F_ij is the exchange of i's open part, I_ij / (A_i open_i),
+// and i's mean radiosity is open_i B_i + (1 - open_i) E_i (element_means in radiosity_solve.h).
 FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& options,
-                                 FormFactorStats* stats = nullptr);
+                                 FormFactorStats* stats = nullptr,
+                                 std::vector<double>* open_fraction = nullptr);
 
 }  // namespace ncube::reference

@@ -30,4 +30,14 @@ std::vector<Rgb> solve_radiosity(const Scene& scene, const FormFactorRows& rows,
   return b;
 }
 
+std::vector<Rgb> element_means(const Scene& scene, const std::vector<Rgb>& open_radiosity,
+                               const std::vector<double>& open_fraction) {
+  std::vector<Rgb> mean(open_radiosity.size());
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    const Rgb& emission = scene.patches[std::size_t(scene.elements[i].patch)].emission;
+    mean[i] = open_fraction[i] * open_radiosity[i] + (1.0 - open_fraction[i]) * emission;
+  }
+  return mean;
+}
+
 }  // namespace ncube::reference

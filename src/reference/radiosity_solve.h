@@ -22,4 +22,9 @@ std::vector<Rgb> solve_radiosity(const Scene& scene, const FormFactorRows& rows,
                                  double tolerance = 1e-13, int max_sweeps = 100000,
                                  SolveReport* report = nullptr);
 
+// Each element's mean radiosity over its whole area from the radiosity of its open part
+// (area_form_factors.h): open_i B_i + (1 - open_i) E_i, the enclosed part receiving nothing.
+std::vector<Rgb> element_means(const Scene& scene, const std::vector<Rgb>& open_radiosity,
+                               const std::vector<double>& open_fraction);
+
 }  // namespace ncube::reference

@@ -1,6 +1,8 @@
 #include "reference/ray_visibility.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <glm/geometric.hpp>
 #include <string>
 
 namespace ncube::reference {
@@ -25,6 +27,7 @@ RayVisibility::RayVisibility(const Scene& scene) {
   std::size_t t = 0;
   for (const Patch& patch : scene.patches)
     for (int k = 1; k + 1 < patch.polygon.count; ++k, ++t) {  // a fan: (0,1,2), (0,2,3)
+      triangle_normals_.push_back(patch.normal);
       const Vec3 corners[3] = {patch.polygon[0], patch.polygon[k], patch.polygon[k + 1]};
       for (int c = 0; c < 3; ++c) {
         for (int axis = 0; axis < 3; ++axis)
@@ -61,6 +64,32 @@ bool RayVisibility::visible(const Vec3& a, const Vec3& na, const Vec3& b, const 
   ray.flags = 0;
   rtcOccluded1(scene_, &context, &ray);
   return ray.tfar >= 0.0f;  // Embree sets tfar to -inf when the ray is blocked
+}
+
+}  // namespace ncube::reference
+
+namespace ncube::reference {
+
+RayVisibility::Hit RayVisibility::first_hit(const Vec3& a, const Vec3& na,
+                                            const Vec3& direction) const {
+  const Vec3 from = a + lift_ * na;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit{};
+  hit.ray.org_x = float(from.x);
+  hit.ray.org_y = float(from.y);
+  hit.ray.org_z = float(from.z);
+  hit.ray.dir_x = float(direction.x);
+  hit.ray.dir_y = float(direction.y);
+  hit.ray.dir_z = float(direction.z);
+  hit.ray.tnear = 0.0f;
+  hit.ray.tfar = INFINITY;
+  hit.ray.mask = 0xFFFFFFFFu;
+  hit.ray.flags = 0;
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &hit);
+  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return Hit::kNothing;
+  return glm::dot(triangle_normals_[hit.hit.primID], direction) < 0.0 ? Hit::kFront : Hit::kBack;
 }
 
 }  // namespace ncube::reference

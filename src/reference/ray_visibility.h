@@ -9,6 +9,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <vector>
+
 #include "scene/scene.h"
 
 namespace ncube::reference {
@@ -26,7 +28,14 @@ class RayVisibility {
   // meets no patch. Safe to call from several threads at once.
   bool visible(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb) const;
 
+  // What the ray from `a` (on a surface with unit normal na, lifted as above) along
+  // `direction` meets first: nothing (it leaves the scene), a patch's front (the side its
+  // normal points to) or a patch's back.
+  enum class Hit { kNothing, kFront, kBack };
+  Hit first_hit(const Vec3& a, const Vec3& na, const Vec3& direction) const;
+
  private:
+  std::vector<Vec3> triangle_normals_;  // each triangle's patch normal, by Embree's primID
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   double lift_ = 0.0;

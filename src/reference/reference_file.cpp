@@ -12,11 +12,13 @@ std::string reference_text(const Scene& scene, const ReferenceRun& run) {
   out["scene_sha256"] = run.scene_sha256;
   out["code_version"] = code_version();
   out["method"] =
-      "element-to-element form factors integrated over both elements: K jittered points per "
-      "element; far pairs: cos cos / (pi r^2) at K point pairs, an Embree visibility ray each; "
+      "every element solved as refine x refine parts, its radiosity their area-weighted mean; "
+      "part-to-part form factors integrated over both parts: K jittered points per part "
+      "(an enclosed part, seeing only backs, sends nothing); far pairs: cos cos / (pi r^2) at K point pairs, an Embree visibility ray each; "
       "near pairs: the inner integral in closed form (Lambert's contour integral) times the "
       "kernel-weighted visible share of K x K rays; Gauss-Seidel to convergence "
       "(docs/accuracy.md)";
+  out["refine"] = run.refine;
   out["samples"] = run.samples;
   out["check_samples"] = run.check_samples;
   out["self_agreement"] = {{"element_rms", run.self_agreement.element_rms},

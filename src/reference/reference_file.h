@@ -17,11 +17,12 @@
 
 namespace ncube::reference {
 
-constexpr int kReferenceFileVersion = 1;
+constexpr int kReferenceFileVersion = 1;  // the layout; "refine" (issue 38) was added to it
 
 struct ReferenceRun {
   std::string scene_file, scene_sha256;
   int samples = 0, check_samples = 0;
+  int refine = 1;  // every element solved as refine x refine parts
   FormFactorStats stats, check_stats;
   SolveReport solve;
   SolutionError self_agreement;  // the check_samples solution against the samples one

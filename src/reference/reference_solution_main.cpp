@@ -41,13 +41,18 @@ int run(int argc, char** argv) {
                "integrated over both elements, solved to convergence.",
                "reference_solution"};
   std::string scene_name, out_path, mesh_path;
-  int samples = 64, threads = 0;
+  int samples = 64, threads = 0, refine = 2;
   bool quiet = false;
   app.add_option("scene", scene_name, "scene file (JSON); a bare name is also looked up in scenes/")
       ->required();
   app.add_option("--samples", samples,
                  "K, points per element: the square of an even number from 4 to 1024; the "
                  "self-agreement is measured against K/4")
+      ->capture_default_str();
+  app.add_option("--refine", refine,
+                 "solve on every element cut into N x N parts and give each element its parts' "
+                 "area-weighted mean (1 to 4): the continuous radiosity's mean over the element, "
+                 "not the element grid's own constant-radiosity answer (docs/accuracy.md)")
       ->capture_default_str();
   app.add_option("--out", out_path, "write the reference solution (JSON) here")->required();
   app.add_option("--mesh", mesh_path,
@@ -69,6 +74,8 @@ int run(int argc, char** argv) {
     throw InputError("--samples " + std::to_string(samples) +
                      ": must be the square of an even number from 4 to 1024 (4, 16, 36, 64, ...)");
   if (threads < 0) throw InputError("--threads " + std::to_string(threads) + ": must be 0 or more");
+  if (refine < 1 || refine > 4)
+    throw InputError("--refine " + std::to_string(refine) + ": must be 1, 2, 3 or 4");
   const std::string scene_file = resolve_scene(scene_name);
   const Scene scene = load_scene(scene_file);
   OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
@@ -79,13 +86,41 @@ int run(int argc, char** argv) {
   result.scene_sha256 = input_sha256(scene_file, kSceneFile);
   result.samples = samples;
   result.check_samples = samples / 4;
+  result.refine = refine;
+  // The scene solved: every patch's grid `refine` times finer. Its parts tile each element
+  // exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's element
+  // order: part (a, b) of element (i, j) is element (refine i + a, refine j + b) of the fine grid.
+  Scene fine = scene;
+  for (Patch& patch : fine.patches) {
+    patch.nu *= refine;
+    patch.nv *= refine;
+  }
+  fine.build_elements();
   const auto solve = [&](int point_side, reference::FormFactorStats& stats,
                          reference::SolveReport* report) {
     reference::FormFactorOptions options;
     options.side = point_side;
     options.threads = threads;
-    const reference::FormFactorRows rows = reference::area_form_factors(scene, options, &stats);
-    return reference::solve_radiosity(scene, rows, 1e-13, 100000, report);
+    std::vector<double> open;
+    const reference::FormFactorRows rows = reference::area_form_factors(fine, options, &stats, &open);
+    const std::vector<Rgb> parts = reference::element_means(
+        fine, reference::solve_radiosity(fine, rows, 1e-13, 100000, report), open);
+    std::vector<Rgb> means(scene.elements.size(), Rgb(0.0));
+    std::vector<double> area(scene.elements.size(), 0.0);
+    for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+      const Patch& coarse = scene.patches[p];
+      const Patch& cut = fine.patches[p];
+      for (int j = 0; j < cut.nv; ++j)
+        for (int i = 0; i < cut.nu; ++i) {
+          const std::size_t part = std::size_t(cut.first_element + j * cut.nu + i);
+          const std::size_t element =
+              std::size_t(coarse.first_element + (j / refine) * coarse.nu + i / refine);
+          means[element] += fine.elements[part].area * parts[part];
+          area[element] += fine.elements[part].area;
+        }
+    }
+    for (std::size_t e = 0; e < means.size(); ++e) means[e] /= area[e];
+    return means;
   };
   const std::vector<Rgb> check = solve(side / 2, result.check_stats, nullptr);
   result.radiosity = solve(side, result.stats, &result.solve);
@@ -113,9 +148,11 @@ int run(int argc, char** argv) {
   }
   outputs.commit();
   if (!quiet)
-    std::printf("%s: %zu elements, K = %d points per element (%lld rays), K/4 = %d (%lld rays); "
+    std::printf("%s: %zu elements, solved as %zu parts (--refine %d), K = %d points per part "
+                "(%lld rays), K/4 = %d (%lld rays); "
                 "K/4 against K: element RMS %.3g, patch RMS %.3g, largest patch %.3g; %.1f s\n",
-                scene.name.c_str(), scene.elements.size(), samples, result.stats.rays,
+                scene.name.c_str(), scene.elements.size(), fine.elements.size(), refine, samples,
+                result.stats.rays,
                 samples / 4, result.check_stats.rays, result.self_agreement.element_rms,
                 result.self_agreement.patch_rms, result.self_agreement.patch_max,
                 result.host_seconds);

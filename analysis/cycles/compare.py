@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""The accuracy reference against Cycles' answers, patch by patch (docs/accuracy.md).
+
+usage: analysis/cycles/compare.py REFERENCE.json CYCLES.json [--per-patch] [--json OUT]
+
+REFERENCE.json: build/reference_solution's file; CYCLES.json: analysis/cycles/cycles_answers.py's
+of the same scene file (the SHA-256 must match). Per patch with Y_cycles > 0: the relative
+difference d_p = (Y_ref - Y_cycles) / Y_cycles of the luminances (Rec. 709) and its standard
+error from Cycles' s_p = se_Y / Y_cycles. Printed: the area-weighted RMS of d_p (as
+analysis/ncube/accuracy.py's patch RMS), the largest |d_p| and its patch, and the largest
+|d_p| / s_p. Exit codes: 0, 2 (unreadable files or not the same scene)."""
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from ncube import input_file, output_file  # noqa: E402
+
+LIMIT = 64 << 20
+
+
+def compare(reference, cycles):
+    if reference["scene_sha256"] != cycles["scene_sha256"]:
+        raise ValueError(f"not the same scene file: reference {reference['scene_file']} "
+                         f"{reference['scene_sha256'][:12]}, Cycles {cycles['scene_file']} "
+                         f"{cycles['scene_sha256'][:12]}")
+    rows = cycles["patches"]
+    if len(rows) != len(reference["patch_luminance"]):
+        raise ValueError("not the same number of patches")
+    per_patch, weighted, area_total = [], 0.0, 0.0
+    for row, y_ref in zip(rows, reference["patch_luminance"]):
+        patch, area, y, se = row[0], row[1], row[8], row[9]
+        if y <= 0.0:
+            continue
+        d, s = (y_ref - y) / y, se / y
+        per_patch.append({"patch": patch, "area": area, "reference": y_ref, "cycles": y,
+                          "difference": d, "cycles_se": s})
+        weighted += area * d * d
+        area_total += area
+    worst = max(per_patch, key=lambda p: abs(p["difference"]))
+    return {"patch_rms": math.sqrt(weighted / area_total), "patch_max": abs(worst["difference"]),
+            "worst_patch": worst["patch"],
+            "largest_sigmas": max(abs(p["difference"]) / p["cycles_se"] for p in per_patch
+                                  if p["cycles_se"] > 0),
+            "cycles_se_rms": math.sqrt(sum(p["area"] * p["cycles_se"] ** 2 for p in per_patch) / area_total),
+            "per_patch": per_patch}
+
+
+def load(path, what):
+    return json.loads(input_file.read_input_text(path, what, LIMIT))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("reference")
+    parser.add_argument("cycles")
+    parser.add_argument("--per-patch", action="store_true")
+    parser.add_argument("--json")
+    args = parser.parse_args(argv)
+    try:
+        result = compare(load(args.reference, "reference file"), load(args.cycles, "Cycles answer file"))
+    except (input_file.InputFileError, ValueError, KeyError, TypeError) as e:
+        print(f"compare: {e}", file=sys.stderr)
+        return 2
+    print(f"patch RMS {result['patch_rms']:.4f}  largest patch {result['patch_max']:.4f} "
+          f"(patch {result['worst_patch']})  largest |d|/se {result['largest_sigmas']:.1f}  "
+          f"Cycles' own se (RMS) {result['cycles_se_rms']:.4f}")
+    if args.per_patch:
+        for p in result["per_patch"]:
+            print(f"  patch {p['patch']:4d}  reference {p['reference']:.6g}  Cycles {p['cycles']:.6g}"
+                  f"  d {p['difference']:+.4f}  se {p['cycles_se']:.4f}")
+    if args.json:
+        output_file.write(args.json, json.dumps(result, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

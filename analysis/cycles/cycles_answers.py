@@ -1,0 +1,230 @@
+#!/usr/bin/python3
+"""Blender's Cycles path tracer as the accuracy reference's anchor (issue 38, docs/accuracy.md):
+for every patch of a scene file, its mean radiosity B = E + rho H (H the patch's mean
+irradiance) with its Monte Carlo standard error, per colour.
+
+usage: analysis/cycles/cycles_answers.py SCENE --out OUT.json [--samples S] [--seeds N]
+           [--texels R] [--bounces B] [--threads T] [--blender PATH]
+
+How (each choice checked in tests/cycles_answers_test.sh on closed forms):
+* Units: radiosity does not depend on the scene's size, so the scene is scaled to a
+  bounding-box diagonal of 10 Blender units (away from the float rounding of very large or very
+  small coordinates). An emission E of the scene is Cycles' Emission shader of colour E and
+  strength 1 (radiance E); Cycles' diffuse lighting pass without colour is then H in the
+  scene's radiosity units (a surface of radiance E has radiosity pi E, and the pass is
+  irradiance over pi): B = E + rho * pass. The two parallel unit squares check it.
+* One-sided: only a patch's front (its corners counter-clockwise seen from it, the project's
+  and Blender's convention) reflects and emits; its back is black and opaque (an Emission of
+  strength 0, no BSDF: a path that reaches it ends). The world is black.
+* No clamping (direct and indirect), no light ignored (light_sampling_threshold 0), Sobol
+  sampling (the default progressive multi-jitter read about 0.2 % low in a furnace at
+  rho = 0.8), B bounces (default 1024; Russian roulette ends paths unbiasedly before that),
+  Lambert (roughness 0), no denoising, no adaptive sampling.
+* The patch's mean: each quad patch is one Blender quad (triangles v0 v1 v2 and v0 v2 v3)
+  whose UV layout is the whole unit square, so every texel lies wholly on the patch (no edge
+  texel partly outside, which would be over-counted); a triangle patch is three such quads
+  (its corner, two edge midpoints, its centroid). Cycles bakes each texel as the mean of S
+  samples jittered over the texel's footprint; the patch's mean is the texels' mean weighted
+  by the area each covers on the patch (a texel below the diagonal lies on the first triangle,
+  above it on the second, on it half on each: the weights sum to the patch's area exactly).
+  Every quad gets R x R texels, whatever its area: the texels only spread the samples over
+  the patch (each is an unbiased mean of its footprint), and every patch gets as many paths,
+  so that small patches are not noisier than large ones.
+* The standard error: N independent bakes (Cycles seeds 0 .. N-1), the patch means' spread
+  over them divided by sqrt(N); the answer is their mean.
+The answer file: scene, scene_file, scene_sha256, the settings, blender version, host seconds
+and per patch [patch, area, R, G, B, se_R, se_G, se_B, Y, se_Y] (Y: Rec. 709 luminance, as the
+simulator's). Exit codes: 0; 2 bad input or Blender missing; 5 output not writable; 7 Blender
+failed."""
+import argparse
+import hashlib
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "analysis"))
+from ncube import input_file, output_file  # noqa: E402
+
+LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
+SCENE_DIAGONAL = 10.0
+BAKE_SCRIPT = Path(__file__).resolve().parent / "bake_in_blender.py"
+
+
+class Refusal(Exception):
+    def __init__(self, message, code):
+        super().__init__(message)
+        self.code = code
+
+
+def resolve_scene(name):
+    if os.path.exists(name):
+        return Path(name)
+    for candidate in (name, name + ".json"):
+        if (ROOT / "scenes" / candidate).exists():
+            return ROOT / "scenes" / candidate
+    raise Refusal(f"{name}: no such scene file (nor scenes/{name}.json)", 2)
+
+
+def load_scene(path):
+    data = input_file.read_input_bytes(path, "scene file", input_file.SCENE_FILE_BYTES)
+    try:
+        scene = json.loads(data)
+        patches = []
+        for index, patch in enumerate(scene["patches"]):
+            corners = np.array(patch["vertices"], dtype=float)
+            if corners.shape not in ((3, 3), (4, 3)):
+                raise Refusal(f"{path}: patch {index}: vertices: 3 or 4 points of 3 coordinates", 2)
+            patches.append({"corners": corners,
+                            "rho": [float(x) for x in patch.get("reflectance", [0.0] * 3)],
+                            "emission": [float(x) for x in patch.get("emission", [0.0] * 3)]})
+    except (ValueError, KeyError, TypeError) as e:
+        raise Refusal(f"{path}: not a scene file ({e})", 2) from None
+    return scene.get("name", path.stem), patches, hashlib.sha256(data).hexdigest()
+
+
+def triangle_area(a, b, c):
+    return 0.5 * np.linalg.norm(np.cross(b - a, c - a))
+
+
+def quads_of(corners):
+    """The patch as quads whose UV squares cover it exactly."""
+    if len(corners) == 4:
+        return [corners]
+    centroid = corners.mean(axis=0)
+    quads = []
+    for k in range(3):
+        a, b, c = corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]
+        quads.append(np.array([a, 0.5 * (a + b), centroid, 0.5 * (a + c)]))
+    return quads
+
+
+def texel_weights(quad, n):
+    """The area of the patch each of the n x n texels covers (rows along v, columns along u):
+    below the diagonal (v < u) the triangle v0 v1 v2, above it v0 v2 v3, on it half each."""
+    first = triangle_area(quad[0], quad[1], quad[2]) * 2.0 / (n * n)
+    second = triangle_area(quad[0], quad[2], quad[3]) * 2.0 / (n * n)
+    rows, columns = np.indices((n, n))
+    return np.where(rows < columns, first, np.where(rows > columns, second, 0.5 * (first + second)))
+
+
+def run(args):
+    scene_path = resolve_scene(args.scene)
+    name, patches, sha256 = load_scene(scene_path)
+    blender = shutil.which(args.blender)
+    if blender is None:
+        raise Refusal(f"--blender {args.blender}: not found (Debian: apt-get install blender)", 2)
+    lo = np.min([p["corners"].min(axis=0) for p in patches], axis=0)
+    hi = np.max([p["corners"].max(axis=0) for p in patches], axis=0)
+    scale = SCENE_DIAGONAL / np.linalg.norm(hi - lo)
+    quads = []
+    for index, patch in enumerate(patches):
+        for quad in quads_of(patch["corners"]):
+            quads.append({"patch": index, "corners": quad})
+    for quad in quads:
+        quad["res"] = args.texels
+    job = {"samples": args.samples, "seeds": list(range(args.seeds)), "bounces": args.bounces,
+           "threads": args.threads,
+           "patches": [{"rho": p["rho"], "emission": p["emission"]} for p in patches],
+           "quads": [{"patch": q["patch"], "res": q["res"],
+                      "corners": (q["corners"] * scale).tolist()} for q in quads]}
+    start = time.time()
+    with tempfile.TemporaryDirectory(prefix="cycles-answers-") as scratch:
+        job_path = Path(scratch) / "job.json"
+        job_path.write_text(json.dumps(job))
+        done = subprocess.run([blender, "-b", "--factory-startup", "-t", str(args.threads),
+                               "-P", str(BAKE_SCRIPT), "--", str(job_path)],
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        report_path = Path(str(job_path) + ".report.json")
+        if done.returncode != 0 or not report_path.exists():
+            tail = "\n".join(done.stdout.splitlines()[-15:])
+            raise Refusal(f"blender failed (exit {done.returncode}):\n{tail}", 7)
+        report = json.loads(report_path.read_text())
+        per_seed = [np.load(f"{job_path}.texels-{seed}.npy") for seed in job["seeds"]]
+    # The quads' normals as Blender built them face as the scene's (one-sidedness).
+    for quad, normals in zip(quads, report["normals"]):
+        c = quad["corners"]
+        expected = np.cross(c[1] - c[0], c[2] - c[0])
+        expected /= np.linalg.norm(expected)
+        if min(float(np.dot(expected, n)) for n in normals) < 0.999:
+            raise Refusal(f"patch {quad['patch']}: Blender's face normal is not the scene's", 7)
+    area = np.zeros(len(patches))
+    lighting = np.zeros((len(job["seeds"]), len(patches), 3))
+    offset = 0
+    for quad in quads:
+        n = quad["res"]
+        weights = texel_weights(quad["corners"], n)
+        area[quad["patch"]] += weights.sum()
+        for s, texels in enumerate(per_seed):
+            block = texels[offset:offset + n * n * 3].reshape(n, n, 3).astype(float)
+            lighting[s, quad["patch"]] += np.einsum("ij,ijc->c", weights, block)
+        offset += n * n * 3
+    lighting /= area[None, :, None]
+    rho = np.array([p["rho"] for p in patches])
+    emission = np.array([p["emission"] for p in patches])
+    radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
+    y = radiosity @ LUMINANCE
+    count = len(job["seeds"])
+    mean, se = radiosity.mean(axis=0), radiosity.std(axis=0, ddof=1) / math.sqrt(count)
+    y_mean, y_se = y.mean(axis=0), y.std(axis=0, ddof=1) / math.sqrt(count)
+    rows = [[p, float(area[p])] + [float(v) for v in mean[p]] + [float(v) for v in se[p]] +
+            [float(y_mean[p]), float(y_se[p])] for p in range(len(patches))]
+    header = {
+        "scene": name, "scene_file": scene_path.name, "scene_sha256": "sha256:" + sha256,
+        "renderer": f"Blender {report['blender']} Cycles (CPU), analysis/cycles/bake_in_blender.py",
+        "method": "bake of diffuse direct + indirect lighting without colour, B = E + rho * lighting",
+        "samples_per_texel": args.samples, "seeds": count, "texels_a_side": args.texels,
+        "bounces": args.bounces, "threads": args.threads, "scale": float(scale),
+        "texels": int(sum(q["res"] ** 2 for q in quads)),
+        "bake_seconds": [round(s, 1) for s in report["seconds"]],
+        "host_seconds": round(time.time() - start, 1),
+        "columns": ["patch", "area", "R", "G", "B", "se_R", "se_G", "se_B", "Y", "se_Y"],
+    }
+    text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
+    text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])
+                                          for r in rows) + "\n ]\n}\n"
+    output_file.write(args.out, text)
+    return rows
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("scene")
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--samples", type=int, default=256, help="Cycles samples per texel and bake")
+    parser.add_argument("--seeds", type=int, default=8, help="independent bakes (the standard error)")
+    parser.add_argument("--texels", type=int, default=24, help="texels a side of every quad")
+    parser.add_argument("--bounces", type=int, default=1024)
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--blender", default="blender")
+    args = parser.parse_args(argv)
+    try:
+        for option in ("samples", "texels", "bounces", "threads"):
+            if getattr(args, option) < 1:
+                raise Refusal(f"--{option} {getattr(args, option)}: must be 1 or more", 2)
+        if args.seeds < 2:
+            raise Refusal(f"--seeds {args.seeds}: must be 2 or more (the standard error)", 2)
+        rows = run(args)
+    except Refusal as e:
+        print(f"cycles_answers: {e}", file=sys.stderr)
+        return e.code
+    except input_file.InputFileError as e:
+        print(f"cycles_answers: {e}", file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"cycles_answers: {args.out}: cannot write: {e} (no output file was written)", file=sys.stderr)
+        return 5
+    print(f"cycles_answers: {len(rows)} patches -> {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
