@@ -1,6 +1,7 @@
 // build/reference_solution SCENE --samples K --out ref.json — the accuracy reference of
 // docs/accuracy.md: a converged element solution from form factors integrated over both
 // elements, with its self-agreement (K/4 against K points per element) in the file.
+#include <strings.h>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -73,7 +74,16 @@ int run(int argc, char** argv) {
   if (side * side != samples || side % 2 != 0 || samples < 4 || samples > 1024)
     throw InputError("--samples " + std::to_string(samples) +
                      ": must be the square of an even number from 4 to 1024 (4, 16, 36, 64, ...)");
-  if (threads < 0) throw InputError("--threads " + std::to_string(threads) + ": must be 0 or more");
+  // As ./simulate's --threads: more threads than cores gains nothing, and each takes a stack
+  // (a huge count ended in SIGSEGV).
+  if (threads < 0 || threads > 64)
+    throw InputError("--threads " + std::to_string(threads) + ": must be 0 (every core) to 64");
+  // The mesh is PLY whatever the name, as ./simulate's --mesh: a name promising another format
+  // is refused.
+  const std::string mesh_extension = std::filesystem::path(mesh_path).extension().string();
+  if (!mesh_path.empty() && mesh_path != "-" && strcasecmp(mesh_extension.c_str(), ".ply") != 0 &&
+      !mesh_extension.empty())
+    throw InputError("--mesh " + mesh_path + ": only PLY is written (name it .ply)");
   if (refine < 1 || refine > 4)
     throw InputError("--refine " + std::to_string(refine) + ": must be 1, 2, 3 or 4");
   const std::string scene_file = resolve_scene(scene_name);
