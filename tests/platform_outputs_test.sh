@@ -70,6 +70,19 @@ for cfg in "{'tracing': 'yes', 'tracing/filename': '$work/victim.txt'}" "{'traci
   [ "$(cat victim.txt)" = precious ] || fail "sweep cfg $cfg: victim.txt was overwritten"
 done
 
+# network_bench: SimGrid's files under the same output rule (its trace onto its own platform
+# file replaced it, exit 0).
+bench="$(dirname "$simulate")/network_bench"
+cp "$root/platforms/ncube2.json" mine.json && cp mine.json mine.orig
+"$bench" --platform mine.json --quiet --cfg=tracing:yes --cfg=tracing/filename:mine.json 2> err.txt
+code=$?
+[ "$code" = 2 ] && grep -q "is the input file" err.txt \
+  || fail "network_bench tracing onto its platform: exit $code: $(cat err.txt)"
+cmp -s mine.json mine.orig || fail "network_bench overwrote its own platform file"
+"$bench" --platform mine.json --quiet --cfg=tracing:yes --cfg=tracing/filename:bench.trace \
+  --round-trips 1 --stream-messages 1 --max-bytes 64 2> err.txt || fail "network_bench traced: $(cat err.txt)"
+grep -q "PajeDefineContainerType" bench.trace 2> /dev/null || fail "network_bench wrote no trace"
+
 [ "$failures" = 0 ] && echo "platform_outputs_test: all checks passed" && exit 0
 echo "platform_outputs_test: $failures check(s) failed"
 exit 1

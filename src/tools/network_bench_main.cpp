@@ -11,6 +11,7 @@
 
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
+#include "machine/simgrid_outputs.h"
 #include "machine/simgrid_session.h"
 #include "machine/simgrid_settings.h"
 #include "simulation/simulated_platform.h"
@@ -84,7 +85,17 @@ int network_bench(int argc, char** argv) {
   std::vector<std::string> simgrid_arguments;
   for (const std::string& setting : cfg) simgrid_arguments.push_back("--cfg=" + setting);
   ncube::check_simgrid_settings(simgrid_arguments);  // SimGrid would end the process
-  ncube::OutputFiles outputs({{"--json", json_file}}, {platform_file, cost_model_file});
+  // The files SimGrid's settings write (a Paje trace, a log) are outputs under the one rule,
+  // as ./simulate's: never onto an input, written to temporary files and committed at the end.
+  const ncube::SimgridOutputs simgrid_outputs(simgrid_arguments);
+  std::vector<ncube::OutputFiles::Output> wanted = {{"--json", json_file}};
+  for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
+    wanted.push_back({output.setting, output.path});
+  std::vector<std::string> read_files = {platform_file, cost_model_file};
+  read_files.insert(read_files.end(), simgrid_outputs.inputs().begin(), simgrid_outputs.inputs().end());
+  ncube::OutputFiles outputs(wanted, read_files);
+  ncube::simgrid_engine(simgrid_outputs.engine_arguments(
+      [&outputs](const std::string& setting) { return outputs.writer_path(setting); }));
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const ncube::PlatformConfig platform = ncube::load_platform_config(platform_file, simgrid_arguments);
   if (platform.node_count() < 2)
