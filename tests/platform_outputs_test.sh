@@ -83,6 +83,9 @@ cmp -s mine.json mine.orig || fail "network_bench overwrote its own platform fil
   --round-trips 1 --stream-messages 1 --max-bytes 64 2> err.txt || fail "network_bench traced: $(cat err.txt)"
 grep -q "PajeDefineContainerType" bench.trace 2> /dev/null || fail "network_bench wrote no trace"
 
+"$bench" --max-bytes 1099511627776 2> err.txt; code=$?
+[ "$code" = 2 ] && grep -q "max-bytes" err.txt || fail "network_bench --max-bytes 2^40: exit $code: $(head -c 200 err.txt)"
+
 [ "$failures" = 0 ] && echo "platform_outputs_test: all checks passed" && exit 0
 echo "platform_outputs_test: $failures check(s) failed"
 exit 1
