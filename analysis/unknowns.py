@@ -477,6 +477,7 @@ def page(summary, figure_name, small_run_note=None):
 
 
 def figure(summary, path):
+    from matplotlib import ticker
     from ncube.plotting import plt, save
     worlds = summary["worlds"][1:]
     rows = cell_table(summary, worlds)
@@ -495,6 +496,9 @@ def figure(summary, path):
             ax.plot(ratio(default), y, "kx", ms=5)
     ax.axvline(1.0, color="k", lw=1)
     ax.set_xscale("log")
+    ax.xaxis.set_major_locator(ticker.FixedLocator([0.25, 0.5, 0.8, 1, 1.25, 2, 4]))
+    ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(ticker.NullFormatter())
     ax.set_yticks(range(len(rows)))
     ax.set_yticklabels([r["key"] + (" (fit)" if r["calibration"] else "") for r in rows],
                        fontsize=7)
@@ -519,7 +523,8 @@ def main():
     parser.add_argument("--out-dir", type=Path, default=ANALYSIS,
                         help="where unknowns.md, unknowns-worlds.json and figures/ go")
     parser.add_argument("--label", default=None,
-                        help="a line at the top of the page (e.g. that it is a small run)")
+                        help="a line at the top of the page (default: none for the study, a "
+                             "warning for fewer worlds than experiments/unknowns/study.json's)")
     args = parser.parse_args()
     started = time.time()
     study = args.results.resolve()
@@ -544,6 +549,12 @@ def main():
         print("unknowns: fewer than 2 drawn worlds: no interval; nothing written",
               file=sys.stderr)
         return 2
+    drawn_count = len(summary["worlds"]) - 1
+    label = args.label
+    if label is None and drawn_count < study_defaults["worlds"]:
+        label = (f"A small run of {drawn_count} drawn worlds, not the study "
+                 f"({study_defaults['worlds']} worlds, {STUDY.relative_to(ROOT)}): "
+                 "its intervals are not the study's.")
     figure_name = "unknowns_intervals.png"
     out = args.out_dir
     (out / "figures").mkdir(parents=True, exist_ok=True)
@@ -551,7 +562,7 @@ def main():
         output_file.write(out / "unknowns-worlds.json",
                           json.dumps(summary, indent=1, sort_keys=True) + "\n")
     figure(summary, out / "figures" / figure_name)
-    output_file.write(out / "unknowns.md", page(summary, figure_name, args.label))
+    output_file.write(out / "unknowns.md", page(summary, figure_name, label))
     print(f"unknowns: {len(summary['worlds']) - 1} worlds; written: {out / 'unknowns.md'}, "
           f"{out / 'figures' / figure_name}; {time.time() - started:.0f} s wall time")
     return 0
