@@ -54,16 +54,20 @@ def run_study(count, seed, study, sweep_args):
         w.write_world(world, study)
     print(f"unknowns: {count} worlds drawn and the default world, scenes written under "
           f"{study}/worlds", flush=True)
-    for _ in range(1 + w.VERIFY_ROUNDS + 1):
+    for round_number in range(1 + w.VERIFY_ROUNDS + 1):
         states = [w.fit_world(world, study, results_dir) for world in drawn]
         pending = [s.sweep_file for s in states if not s.done]
         if not pending:
             break
         print(f"unknowns: fit round for {len(pending)} world(s)", flush=True)
-        w.run_sweeps(pending, results_dir, sweep_args)
+        w.run_sweeps([w.combined_sweep(pending, f"fit-round{round_number}",
+                                       study / "sweeps" / f"fit-round{round_number}.json")],
+                     results_dir, sweep_args)
     files = []
     for world, state in zip(drawn, states):
-        files += w.tables_sweeps(world, study, state.cost_model)
+        name = f"w{world['index']:02d}-tables"
+        files.append(w.combined_sweep(w.tables_sweeps(world, study, state.cost_model), name,
+                                      study / "sweeps" / f"{name}.json"))
     print(f"unknowns: the tables of {len(drawn)} worlds", flush=True)
     w.run_sweeps(files, results_dir, sweep_args)
 

@@ -389,3 +389,24 @@ def paper_cells():
     build_cells(inputs)
     return [(cell_key(c), c.table, c.scene, c.R, c.V, c.paper, c.calibration)
             for c in unique_cells(inputs.cells) if c.paper is not None]
+
+
+def combined_sweep(files, name, path):
+    """One sweep file holding the cells of several of these sweep files (each cell with its
+    sweep's options written into it, each configuration once): run as one, so that the sweep
+    tool writes one summary (a CSV and its plots) instead of one a file. The cells keep their
+    identities, so the files read back (`seconds`, `world_outcome`) find their results."""
+    cells, seen = [], set()
+    for file in files:
+        document = json.loads(Path(file).read_text())
+        for cell in document["cells"]:
+            merged = dict(document.get("options", {}), **cell)
+            merged.pop("paper_row", None)     # not part of a cell's identity
+            key = json.dumps(merged, sort_keys=True)
+            if key not in seen:
+                seen.add(key)
+                cells.append(merged)
+    document = {"name": name, "measure": "seconds_per_iteration",
+                "description": f"the cells of {len(files)} sweep files of the study over the "
+                               "unknowns (analysis/unknowns.py)", "cells": cells}
+    return write_if_changed(path, json.dumps(document, indent=1) + "\n")
