@@ -62,6 +62,25 @@ for u in unknown_list:
         ok = v in u["values"] if "values" in u else u["range"][0] <= v <= u["range"][1]
         check(ok, f"world 1: {key} = {v} outside its range in analysis/unknowns.json")
 
+# A world's runs: its tables are the paper sweeps' 41 distinct cells and the memory probe, and
+# the one sweep that runs them holds the very cells (identities) the per-table files name.
+from ncube import sweep as sweeps  # noqa: E402
+with tempfile.TemporaryDirectory() as folder:
+    study = Path(folder)
+    worlds.write_world(first, study)
+    names, _, committed = worlds.calibration()
+    model = worlds.write_cost_model(first, study, names, committed)
+    files = worlds.tables_sweeps(first, study, model)
+    combined = worlds.combined_sweep(files, "w01-tables", study / "w01-tables.json")
+    per_table = {c.file for f in files for c in sweeps.load(f).cells}
+    run_as_one = [c.file for c in sweeps.load(combined).cells]
+    check(len(per_table) == 42 and set(run_as_one) == per_table and
+          len(run_as_one) == len(set(run_as_one)),
+          f"world 1's tables: {len(per_table)} distinct cells, {len(run_as_one)} run as one")
+    document = json.loads(Path(model).read_text())["parameters"]
+    check(document["element_bytes"]["value"] == first["values"]["element_bytes"],
+          "world 1's cost model lacks its element record size")
+
 # 2. The statistics on canned worlds. Three cells; four drawn worlds and the default world.
 cells = [["T1 scene1 R=4 V=0", 1, "scene1", 4, 0, 4.0, False],
          ["T1 scene1 R=8 V=0", 1, "scene1", 8, 0, 2.0, False],
