@@ -345,6 +345,18 @@ def page(summary, figure_name, small_run_note=None):
         f"**{n} drawn worlds. The paper's value lies inside the simulation's 90 % interval "
         f"(5th to 95th percentile over the worlds) in {inside} of the {len(rows)} cells**; "
         f"{len(rows) - inside} lie outside (section 5).", ""]
+    # 0. The unknowns.
+    listed = json.loads((ANALYSIS / "unknowns.json").read_text())
+    lines += ["## The unknowns", "",
+              "Drawn (`analysis/unknowns.json` gives each one's reason in full):", "",
+              "| unknown | per scene | drawn from | default | basis |", "|---|---|---|---|---|"]
+    for u in listed["drawn"]:
+        span = (" or ".join(json.dumps(v) for v in u["values"]) if "values" in u else
+                f"{u['distribution']} {u['range'][0]} to {u['range'][1]}")
+        lines.append(f"| `{u['name']}` | {'yes' if u['per_scene'] else 'no'} | {span} | "
+                     f"{json.dumps(u['default'])} | {u['basis']} |")
+    lines += ["", "Held fixed: " + "; ".join(f"{u['name']} ({u['basis']})"
+                                             for u in listed["fixed"]) + ".", ""]
     # 1. The cells.
     lines += [f"## 1. The {len(rows)} cells", "",
               f"Median and 90 % interval over the {n} worlds; *default* is the default world. "
