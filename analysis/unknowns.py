@@ -402,7 +402,8 @@ def page(summary, figure_name, small_run_note=None):
               f". On the default world the procedure gives " +
               ", ".join(f"{v:.6g}" for v in default["fit"]["values"]) +
               f" ({default['fit']['how']}, {default['fit']['rounds']} verification round(s); "
-              "committed: " + ", ".join(f"{v:.6g}" for v in summary.get("committed", {}).values())
+              "committed: " + ", ".join(f"{summary['committed'][name]:.6g}" for name in names
+                                        if name in summary.get("committed", {}))
               + ")."]
     # 4. Sensitivity.
     table = sensitivity(summary, worlds)
@@ -438,7 +439,8 @@ def page(summary, figure_name, small_run_note=None):
     for m in misses:
         direction = "above" if m["above"] else "below"
         lines.append(f"* **{m['key']}**: paper {secs(m['paper'])} s, {direction} the interval "
-                     f"by {secs(abs(m['miss_seconds']))} s ({pct(abs(m['miss_share']), 0)}; "
+                     f"by {secs(abs(m['miss_seconds']))} s "
+                     f"({pct(abs(m['miss_share']), 1 if abs(m['miss_share']) < 0.1 else 0)}; "
                      f"median world {secs(m['interval']['median'])} s). Could close it: "
                      f"{mechanism(m, rows)}.")
     groups = sorted({(m["table"], m["scene"]) for m in misses})
