@@ -1,5 +1,6 @@
 """The scene builder (patches plus what the validation needs) and the furniture frame."""
 
+from .choices import DEFAULT
 from .materials import LAMP, LIGHT_EMISSION
 from .vectors import clean, vmean
 
@@ -12,8 +13,9 @@ class Builder:
     (away from the piece's centre c) and ("dir", d) for light panels (along d).
     """
 
-    def __init__(self, name, min_edge):
+    def __init__(self, name, min_edge, choices=DEFAULT):
         self.name = name
+        self.choices = choices  # the free choices (scenes/generator/choices.py)
         self.min_edge = min_edge
         self.patches = []
         self.boxes = []  # (lo, hi, label) of every solid piece, for the overlap check
@@ -59,6 +61,8 @@ class Builder:
         W, H, D = size
         wx = nx if wx is None else wx
         wz = nz if wz is None else wz
+        if self.choices.turn_panels:  # the same counts, panels the other way round
+            nx, nz, wx, wz = nz, nx, wz, wx
         self.room = ((0.0, 0.0, 0.0), (W, H, D))
         chk = ("in", (W / 2.0, H / 2.0, D / 2.0))
         xs = [clean(W * i / nx) for i in range(nx + 1)]
@@ -137,7 +141,11 @@ class Builder:
         self.flats.append((1, height, lo, hi, "rug"))
 
     def place(self, pieces, frame, label):
+        fw, fh = self.choices.furniture_width, self.choices.furniture_height
         for lo, hi, refl, omit in pieces:
+            # The piece's width and height scaled about its origin (x 1.0 is exact).
+            lo = (lo[0] * fw, lo[1] * fh, lo[2])
+            hi = (hi[0] * fw, hi[1] * fh, hi[2])
             wlo, whi = frame.box(lo, hi)
             self.box(wlo, whi, refl, [frame.face(f) for f in omit], label)
 

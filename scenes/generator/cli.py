@@ -7,18 +7,19 @@ import sys
 
 from .cornell_box import cornell_box
 from .elements import fit_elements
-from .interiors import scene0, scene1, scene2, scene3, scene4
+from .interiors import scene4
 from .targets import COMPACT, TARGETS, patch_cap
 from .text import to_text
 from .validation import partition_imbalance, validate
+from .variant import MAKERS, build_scene
 
 PARTITION_TABLE_SCENES = ("scene1", "scene2", "scene3")
 PARTITION_TABLE_PROCESSORS = (4, 8, 16, 32, 64)
 
 
 def build_all():
-    scenes = []
-    for make in (scene0, scene1, scene2, scene3, scene4):
+    scenes = [(build_scene(name), TARGETS[name]) for name in MAKERS]
+    for make in (scene4,):
         b = make()
         target = TARGETS[b.name]
         if len(b.patches) != target[0]:

@@ -16,12 +16,16 @@ def edge_lengths(p):
     return lu, vlen(vcross(e1, vsub(v[2], v[0]))) / lu
 
 
-def fit_elements(patches, target, cap=None):
+def fit_elements(patches, target, cap=None, size_factors=None):
     """Sets every patch's nu, nv so that elements are about h x h for one h over the whole
     scene (so element counts follow patch areas), then refines the coarsest directions one
     step at a time until the total is exactly `target`; a refinement never takes a patch
-    beyond `cap` elements. Deterministic."""
+    beyond `cap` elements. `size_factors` (one a patch; None: all 1) makes a patch's elements
+    that many times larger than h (scenes/generator/choices.py, piece_element_size).
+    Deterministic."""
     lengths = [edge_lengths(p) for p in patches]
+    if size_factors is not None:
+        lengths = [(lu / f, lv / f) for (lu, lv), f in zip(lengths, size_factors)]
 
     def capped(nu, nv):
         # A patch over the cap keeps its shape but gets coarser elements.

@@ -9,6 +9,7 @@ no order; the fitted plane-crossing cost and finding F4 rest on this one
 of the calls below changes the scenes and the calibration."""
 
 from .builder import Builder, Frame
+from .choices import DEFAULT
 from .furniture import (bookshelf, cabinet, chair, desk_and_chair, panel_table, plant, sofa,
                         table, table_with_chairs, tv_on_stand, upholstered_chair)
 from .materials import (BIRCH, BLACKBOARD, BLUE_FABRIC, BLUE_PLASTIC, CARPET, CEILING,
@@ -18,9 +19,9 @@ from .materials import (BIRCH, BLACKBOARD, BLUE_FABRIC, BLUE_PLASTIC, CARPET, CE
 from .vectors import clean
 
 
-def scene0():
+def scene0(choices=DEFAULT):
     """A small living room: one table, a sofa, a sideboard, two ceiling lights."""
-    b = Builder("scene0", min_edge=0.02)
+    b = Builder("scene0", min_edge=0.02, choices=choices)
     W, H, D = 6.0, 2.7, 5.0
     b.room_shell((W, H, D), 1, 1, OAK_FLOOR, CEILING, [OFF_WHITE, OFF_WHITE, OFF_WHITE,
                                                          PALE_BLUE])
@@ -37,9 +38,9 @@ def scene0():
     return b
 
 
-def scene1():
+def scene1(choices=DEFAULT):
     """A furnished living and dining room."""
-    b = Builder("scene1", min_edge=0.02)
+    b = Builder("scene1", min_edge=0.02, choices=choices)
     W, H, D = 8.0, 2.7, 6.0
     b.room_shell((W, H, D), 5, 5, OAK_FLOOR, CEILING, [WARM_WALL] * 4, wx=6, wz=4, rows=2)
     for x in (2.0, 6.0):
@@ -67,9 +68,9 @@ def scene1():
     return b
 
 
-def scene2():
+def scene2(choices=DEFAULT):
     """A classroom: fifteen desks with chairs, teacher's desk, blackboard, cabinets."""
-    b = Builder("scene2", min_edge=0.02)
+    b = Builder("scene2", min_edge=0.02, choices=choices)
     W, H, D = 10.0, 3.2, 8.0
     b.room_shell((W, H, D), 6, 5, LINOLEUM, CEILING, [OFF_WHITE, OFF_WHITE, OFF_WHITE,
                                                         PALE_BLUE], rows=2)
@@ -98,10 +99,10 @@ def scene2():
     return b
 
 
-def scene3():
+def scene3(choices=DEFAULT):
     """A large study hall: 48 desks with chairs, three group tables with six chairs each,
     a stage with a lectern, bookshelves, a lounge corner, four columns, 24 lights."""
-    b = Builder("scene3", min_edge=0.02)
+    b = Builder("scene3", min_edge=0.02, choices=choices)
     W, H, D = 30.0, 5.0, 20.0
     b.room_shell((W, H, D), 6, 5, CARPET, CEILING, [OFF_WHITE, OFF_WHITE, PALE_BLUE,
                                                       OFF_WHITE], wz=4, rows=2)
