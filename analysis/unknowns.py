@@ -16,14 +16,13 @@ committed scenes and model); the intervals are over the drawn worlds 1..N.
 """
 import argparse
 import json
-import math
-import os
 import sys
 import time
 from pathlib import Path
 
-if sys.executable != "/usr/bin/python3" and Path("/usr/bin/python3").exists():
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)  # Debian's, with numpy
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import numpy as np  # noqa: E402
 
@@ -399,7 +398,7 @@ def page(summary, figure_name, small_run_note=None):
               "; ".join(f"`{name}` {min(w['fit']['values'][j] for w in worlds):.2f} to "
                         f"{max(w['fit']['values'][j] for w in worlds):.2f}"
                         for j, name in enumerate(names)) +
-              f". On the default world the procedure gives " +
+              ". On the default world the procedure gives " +
               ", ".join(f"{v:.6g}" for v in default["fit"]["values"]) +
               f" ({default['fit']['how']}, {default['fit']['rounds']} verification round(s); "
               "committed: " + ", ".join(f"{summary['committed'][name]:.6g}" for name in names

@@ -48,6 +48,7 @@ grep -q "no result of its" <(cd "$clone" && /usr/bin/python3 analysis/report.py 
   || fail "report.py does not name the missing results"
 refuses analysis/machines.py
 # No simulator built: the scripts that run their own cells refuse (before running anything).
+refuses analysis/unknowns.py
 for script in predictions claims claims_schemes adaptive calibrate memory_sensitivity patch_order; do
   refuses "analysis/$script.py"
 done

@@ -48,10 +48,14 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "analysis"))
+from ncube.interpreter import use_project_python  # noqa: E402
+
+use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
+
+import numpy as np  # noqa: E402
+
 from ncube import input_file, output_file  # noqa: E402
 
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
