@@ -66,6 +66,12 @@ TEST(FormFactorMethods, EveryMethodIsAValueOfTheOptionWithItsDoc) {
             -1);
   EXPECT_EQ(elements.config.options.hemicube.resolution, 2);
   EXPECT_EQ(elements.config.options.hemicube.placement, HemicubePlacement::kElements);
+  // Back faces: block by default (every run before the option), pass on request.
+  EXPECT_EQ(elements.config.options.hemicube.back_faces, HemicubeBackFaces::kBlock);
+  EXPECT_EQ(parse({"--hemicube-back-faces", "transparent"}, bad), kExitBadInput);
+  SimulateOptions pass;
+  ASSERT_EQ(parse({"--form-factors", "hemicube", "--hemicube-back-faces", "pass"}, pass), -1);
+  EXPECT_EQ(pass.config.options.hemicube.back_faces, HemicubeBackFaces::kPass);
 }
 
 TEST(FormFactorMethods, TheResultFileRecordsTheHemicubeOnlyForHemicubeRuns) {
@@ -83,6 +89,13 @@ TEST(FormFactorMethods, TheResultFileRecordsTheHemicubeOnlyForHemicubeRuns) {
   EXPECT_EQ(hemicube["config"]["hemicube_resolution"], 50);
   EXPECT_EQ(hemicube["config"]["hemicube_placement"], "elements");
   EXPECT_TRUE(hemicube["counts"].contains("hemicube_cells_read"));
+  // The back faces only when they pass: a hemicube file without the field blocked, so every
+  // hemicube file of the default keeps its bytes.
+  EXPECT_FALSE(hemicube["config"].contains("hemicube_back_faces"));
+  config.options.hemicube.back_faces = HemicubeBackFaces::kPass;
+  EXPECT_EQ(result_to_json(scene, config, SimulationResult{})["config"]["hemicube_back_faces"], "pass");
+  config.options.form_factors = "ray-traced";
+  EXPECT_FALSE(result_to_json(scene, config, SimulationResult{})["config"].contains("hemicube_back_faces"));
   config.options.form_factors = "radiosity";
   EXPECT_THROW(result_to_json(scene, config, SimulationResult{}), std::logic_error);
 }
@@ -161,6 +174,12 @@ TEST(FormFactorMethods, OptionsTheHemicubeCannotHonourAreRefused) {
   SimulationConfig placement;
   placement.options.hemicube.placement = HemicubePlacement::kElements;
   EXPECT_THROW(check_configuration(scene, placement, platform), InputError);
+  SimulationConfig back_faces;
+  back_faces.options.hemicube.back_faces = HemicubeBackFaces::kPass;
+  EXPECT_THROW(check_configuration(scene, back_faces, platform), InputError);
+  SimulationConfig passing = hemicube_config(1, 0);
+  passing.options.hemicube.back_faces = HemicubeBackFaces::kPass;
+  EXPECT_NO_THROW(check_configuration(scene, passing, platform));
   // Out of simulated memory (exit 3) where the buffers do not fit a 4 MB node: N = 1000
   // needs 1.5e6 x 4 + 1e6 x 8 = 14 MB.
   const CostModel costs = load_cost_model(repo("platforms/cost_model.json"));

@@ -121,6 +121,94 @@ TEST(Hemicube, TheNearestPolygonTakesTheCellAndBackFacesReceiveNothing) {
   EXPECT_EQ(point_form_factors(100, {receiver(ceiling(-1, 1, -1, 1, -1.0))})[0], 0.0);
 }
 
+// F(eye -> receivers[k]) with the back faces' choice.
+std::vector<double> point_form_factors_with(HemicubeBackFaces back_faces, int n,
+                                            const std::vector<HemicubePolygon>& receivers,
+                                            const std::vector<HemicubePolygon>& occluders,
+                                            WorkCounts& counts) {
+  std::vector<double> f(receivers.size(), 0.0);
+  render_hemicube(kEye, kUp, kTangent, receivers, occluders, DeltaFormFactors(n), 1.0, f, counts,
+                  back_faces);
+  return f;
+}
+
+TEST(Hemicube, ABackFacingOccluderBlocksOrPassesAsChosen) {
+  // A receiver seen through an occluder whose back faces the eye (the Cornell box's ceiling
+  // over its light): block gives 0; pass gives the unoccluded cells exactly, which converge
+  // to the closed form (Howell B-3) as without the occluder.
+  const Polygon far = ceiling(-0.5, 0.5, -0.5, 0.5, 2.0);
+  const Polygon near = ceiling(-1.0, 1.0, -1.0, 1.0, 1.0);
+  const Polygon turned = Polygon::quad(near[3], near[2], near[1], near[0]);  // facing up
+  ASSERT_GT(turned.normal().z, 0.0);
+  const double exact = 4 * corner_rectangle(0.5, 0.5, 2.0);  // [-0.5, 0.5]^2 at 2
+  EXPECT_NEAR(exact, point_to_polygon_form_factor(kEye, kUp, far), 1e-12);
+  for (const int n : {200, 400}) {  // the square's edges on cell edges: the midpoint rule's error
+    WorkCounts blocked_counts, passed_counts, alone_counts;
+    const std::vector<double> blocked = point_form_factors_with(
+        HemicubeBackFaces::kBlock, n, {receiver(far)}, {receiver(turned)}, blocked_counts);
+    const std::vector<double> passed = point_form_factors_with(
+        HemicubeBackFaces::kPass, n, {receiver(far)}, {receiver(turned)}, passed_counts);
+    const std::vector<double> alone =
+        point_form_factors_with(HemicubeBackFaces::kBlock, n, {receiver(far)}, {}, alone_counts);
+    EXPECT_EQ(blocked[0], 0.0) << "N = " << n;
+    EXPECT_EQ(passed[0], alone[0]) << "N = " << n;
+    EXPECT_NEAR(passed[0], exact, 1e-4 * exact) << "N = " << n;
+    // Culled after its facing test: set up (4 vertices, 1 plane), never clipped or scanned.
+    WorkCounts culled = alone_counts;
+    culled.hemicube_vertices_transformed += 4;
+    culled.hemicube_polygons_set_up += 1;
+    EXPECT_EQ(passed_counts, culled) << "N = " << n;
+    EXPECT_GT(blocked_counts.hemicube_depth_tests, passed_counts.hemicube_depth_tests);
+  }
+  // The occluder's front blocks either way; a receiver seen from behind receives nothing
+  // either way.
+  for (const HemicubeBackFaces back_faces : {HemicubeBackFaces::kBlock, HemicubeBackFaces::kPass}) {
+    WorkCounts counts;
+    EXPECT_EQ(point_form_factors_with(back_faces, 100, {receiver(far)}, {receiver(near)}, counts)[0], 0.0);
+    EXPECT_EQ(point_form_factors_with(back_faces, 100, {receiver(turned)}, {}, counts)[0], 0.0);
+  }
+  EXPECT_STREQ(hemicube_back_faces_name(HemicubeBackFaces::kBlock), "block");
+  EXPECT_STREQ(hemicube_back_faces_name(HemicubeBackFaces::kPass), "pass");
+  EXPECT_EQ(HemicubeOptions{}.back_faces, HemicubeBackFaces::kBlock);
+}
+
+TEST(Hemicube, AShooterJustAboveALightsBackPassesOnNothingUnlessBackFacesPass) {
+  // The Cornell box's case in small: a ceiling (patch 0, 2 x 2 at y = 2, facing down), a
+  // light just under its centre (patch 1, 1 x 1 at y = 1.99, facing down: its back to the
+  // ceiling) and a floor (patch 2, 2 x 2 at y = 0, facing up). The ceiling's centre sees only
+  // the light's back: with block the floor gets no form factor to the ceiling; with pass it
+  // gets the unoccluded point-to-polygon factor, by reciprocity
+  // F(floor -> ceiling) = F(centre -> floor) A_ceiling / A_floor, F(centre -> floor) =
+  // 4 F(corner, 1 x 1 at 2) (Howell B-3).
+  const Vec3 X(1, 0, 0), Z(0, 0, 1);
+  Scene scene;
+  scene.patches = {hand_counted_patch({-1, 2, -1}, 2.0 * X, 2.0 * Z, 0.0, 1, 1),
+                   hand_counted_patch({-0.5, 1.99, -0.5}, X, Z, 1.0, 1, 1),
+                   hand_counted_patch({-1, 0, -1}, 2.0 * Z, 2.0 * X, 0.0, 1, 1)};
+  scene.build_elements();
+  ASSERT_LT(scene.patches[0].normal.y, 0.0);
+  ASSERT_LT(scene.patches[1].normal.y, 0.0);
+  ASSERT_GT(scene.patches[2].normal.y, 0.0);
+  const std::vector<HemicubePolygon> floor = {
+      hemicube_polygon(scene, 2, scene.patches[2].polygon, scene.patches[2].area)};
+  const std::vector<HemicubePolygon> light = {
+      hemicube_polygon(scene, 1, scene.patches[1].polygon, scene.patches[1].area)};
+  const double exact = 4 * corner_rectangle(1.0, 1.0, 2.0);
+  HemicubeOptions options;
+  options.resolution = 400;
+  WorkCounts counts;
+  EXPECT_EQ(hemicube_form_factors(scene, 0, floor, light, options, counts)[0], 0.0);
+  options.back_faces = HemicubeBackFaces::kPass;
+  const double passed = hemicube_form_factors(scene, 0, floor, light, options, counts)[0];
+  EXPECT_NEAR(passed, exact, 1e-4 * exact);  // A_ceiling = A_floor
+  EXPECT_EQ(passed, hemicube_form_factors(scene, 0, floor, {}, options, counts)[0]);
+  // The light as a receiver of the ceiling's light: seen from behind, nothing either way.
+  for (const HemicubeBackFaces back_faces : {HemicubeBackFaces::kBlock, HemicubeBackFaces::kPass}) {
+    options.back_faces = back_faces;
+    EXPECT_EQ(hemicube_form_factors(scene, 0, light, floor, options, counts)[0], 0.0);
+  }
+}
+
 TEST(Hemicube, TheShootersFormFactorsFollowByReciprocityAndPlacement) {
   // The hand-counted scene: the light (patch 0, 1 x 1 at y = 2, facing down), the floor's
   // 5 elements under it (patch 1) and the table top (patch 2).

@@ -91,7 +91,7 @@ const MethodRegistry<FormFactorMethod>& form_factor_methods() {
            [](const ProgressiveOptions&, const CostModel&) { return 0.0; }, true, "", ""},
           {"hemicube",
            "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
-           "--hemicube-placement); V = 0 only",
+           "--hemicube-placement, --hemicube-back-faces); V = 0 only",
            shoot_hemicube, hemicube_shot_form_factors,
            [](const ProgressiveOptions& options) { return hemicube_setup_work(options.hemicube); },
            [](const ProgressiveOptions& options, const CostModel& costs) {

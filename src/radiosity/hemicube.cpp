@@ -12,6 +12,10 @@ const char* hemicube_placement_name(HemicubePlacement placement) {
   return placement == HemicubePlacement::kCentre ? "centre" : "elements";
 }
 
+const char* hemicube_back_faces_name(HemicubeBackFaces back_faces) {
+  return back_faces == HemicubeBackFaces::kBlock ? "block" : "pass";
+}
+
 bool is_valid_hemicube_resolution(int resolution) {
   return resolution >= kMinHemicubeResolution && resolution <= kMaxHemicubeResolution &&
          resolution % 2 == 0;
@@ -70,6 +74,7 @@ struct FramePolygon {
   double extent;  // largest coordinate, for the near plane
   int item;       // receiver index, or -1: takes cells but is not read out
   int key;        // ties of depth go to the lower key
+  bool seen_from_behind;  // the eye behind (or in) its plane
 };
 
 constexpr int kMaxClipped = 12;  // 4 vertices + at most one per clip plane, with room
@@ -210,9 +215,10 @@ FramePolygon to_frame(const HemicubePolygon& drawn, int item, const Vec3& eye, c
   counts.hemicube_vertices_transformed += std::uint64_t(polygon.count);
   f.normal = {glm::dot(plane_normal, u), glm::dot(plane_normal, v), glm::dot(plane_normal, w)};
   f.offset = glm::dot(plane_normal, drawn.plane_point - eye);
-  // A receiver seen from behind (the eye behind its plane, offset >= 0) blocks but receives
-  // nothing: patches receive on their front only.
-  f.item = item >= 0 && f.offset < 0.0 ? item : -1;
+  // A receiver seen from behind (the eye behind its plane, offset >= 0) receives nothing:
+  // patches receive on their front only. Whether it blocks is HemicubeBackFaces' choice.
+  f.seen_from_behind = f.offset >= 0.0;
+  f.item = item >= 0 && !f.seen_from_behind ? item : -1;
   ++counts.hemicube_polygons_set_up;
   return f;
 }
@@ -231,14 +237,21 @@ HemicubePolygon hemicube_polygon(const Scene& scene, int patch, const Polygon& p
 void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
                      const std::vector<HemicubePolygon>& receivers,
                      const std::vector<HemicubePolygon>& occluders, const DeltaFormFactors& deltas,
-                     double weight, std::vector<double>& point_form_factors, WorkCounts& counts) {
+                     double weight, std::vector<double>& point_form_factors, WorkCounts& counts,
+                     HemicubeBackFaces back_faces) {
   const Vec3 v = glm::cross(normal, tangent);
   std::vector<FramePolygon> polygons;
   polygons.reserve(receivers.size() + occluders.size());
+  // kPass culls a polygon seen from behind after its facing test (counted in its set-up): it
+  // is neither clipped nor scanned.
+  const auto keep = [&](const FramePolygon& polygon) {
+    if (back_faces == HemicubeBackFaces::kBlock || !polygon.seen_from_behind)
+      polygons.push_back(polygon);
+  };
   for (std::size_t k = 0; k < receivers.size(); ++k)
-    polygons.push_back(to_frame(receivers[k], int(k), eye, tangent, v, normal, counts));
+    keep(to_frame(receivers[k], int(k), eye, tangent, v, normal, counts));
   for (const HemicubePolygon& occluder : occluders)
-    polygons.push_back(to_frame(occluder, -1, eye, tangent, v, normal, counts));
+    keep(to_frame(occluder, -1, eye, tangent, v, normal, counts));
   const int n = deltas.resolution;
   FaceBuffer buffer;
   for (int face = 0; face < 5; ++face) {
@@ -270,13 +283,13 @@ std::vector<double> hemicube_form_factors(const Scene& scene, int shooter_patch,
   std::vector<double> sums(receivers.size(), 0.0);
   if (options.placement == HemicubePlacement::kCentre) {
     render_hemicube(shooter.polygon.centroid(), shooter.normal, tangent, receivers, occluders,
-                    *deltas, shooter.area, sums, counts);
+                    *deltas, shooter.area, sums, counts, options.back_faces);
   } else {
     for (int j = 0; j < shooter.nv; ++j)
       for (int i = 0; i < shooter.nu; ++i) {
         const Polygon element = grid_cell(shooter.polygon, shooter.nu, shooter.nv, i, j);
         render_hemicube(element.centroid(), shooter.normal, tangent, receivers, occluders, *deltas,
-                        element.area(), sums, counts);
+                        element.area(), sums, counts, options.back_faces);
       }
   }
   // Reciprocity: F(k -> shooter) = F(shooter -> k) A_shooter / A_k.

@@ -17,8 +17,9 @@
 // The hemicube's known errors are kept, not corrected: aliasing (a polygon covers a cell or
 // not by its centre alone), the proximity error (the point-to-area form factor of the eye
 // stands for the whole shooter, or the whole element with --hemicube-placement elements), and
-// visibility judged from the eye only. Back-facing polygons (the eye behind their plane) block
-// light but receive none.
+// visibility judged from the eye only. A polygon seen from behind (the eye behind its plane)
+// receives nothing; whether it takes cells is a choice (--hemicube-back-faces): it blocks
+// (the default: what lies beyond it is hidden) or it is culled and passes the light on.
 //
 // The work is counted as the node program would do it (work_counts.h, the hemicube_*
 // counters; the flop figure of each unit in platforms/cost_model.json says where it comes
@@ -41,6 +42,14 @@ namespace ncube {
 enum class HemicubePlacement { kCentre, kElements };
 const char* hemicube_placement_name(HemicubePlacement placement);  // "centre", "elements"
 
+// What a polygon seen from behind does in the hemicube: it takes cells and hides what lies
+// beyond it (kBlock, the default: an opaque surface whose back is black), or it is culled
+// after its facing test and takes none (kPass: the back-face culling of a renderer, which a
+// surface seen from behind does not stop). It receives nothing either way: patches receive
+// on their front only.
+enum class HemicubeBackFaces { kBlock, kPass };
+const char* hemicube_back_faces_name(HemicubeBackFaces back_faces);  // "block", "pass"
+
 // N, top-face cells on a side: even (the side faces are N x N/2).
 constexpr int kMinHemicubeResolution = 2;
 constexpr int kMaxHemicubeResolution = 2000;
@@ -49,6 +58,7 @@ bool is_valid_hemicube_resolution(int resolution);
 struct HemicubeOptions {
   int resolution = 100;  // the era's public codes (Graphics Gems II, HELIOS)
   HemicubePlacement placement = HemicubePlacement::kCentre;
+  HemicubeBackFaces back_faces = HemicubeBackFaces::kBlock;
 };
 
 // The delta form factors of every cell: top[j * N + i] for the top face's cell (i, j), x and
@@ -84,11 +94,13 @@ HemicubePolygon hemicube_polygon(const Scene& scene, int patch, const Polygon& p
 // axis along the unit `tangent` (perpendicular to `normal`): adds `weight` x F(eye ->
 // receiver k) to point_form_factors[k] for every receiver (the vector has one entry per
 // receiver). `occluders` take cells too (nearer, they hide the receivers) but are not read
-// out. Counts the work.
+// out; with HemicubeBackFaces::kPass a polygon the eye sees from behind takes none. Counts
+// the work.
 void render_hemicube(const Vec3& eye, const Vec3& normal, const Vec3& tangent,
                      const std::vector<HemicubePolygon>& receivers,
                      const std::vector<HemicubePolygon>& occluders, const DeltaFormFactors& deltas,
-                     double weight, std::vector<double>& point_form_factors, WorkCounts& counts);
+                     double weight, std::vector<double>& point_form_factors, WorkCounts& counts,
+                     HemicubeBackFaces back_faces = HemicubeBackFaces::kBlock);
 
 // The form factors F(receiver k -> shooter) of the scene's patch `shooter_patch`, computed
 // by its hemicube(s) over `receivers` and `occluders` (neither should hold the shooter

@@ -47,6 +47,10 @@ void check_form_factor_options(const SimulationConfig& config) {
       throw InputError(std::string("--hemicube-placement ") +
                        hemicube_placement_name(o.hemicube.placement) +
                        " without --form-factors hemicube: it would have no effect");
+    if (o.hemicube.back_faces != defaults.hemicube.back_faces)
+      throw InputError(std::string("--hemicube-back-faces ") +
+                       hemicube_back_faces_name(o.hemicube.back_faces) +
+                       " without --form-factors hemicube: it would have no effect");
   }
 }
 

@@ -81,6 +81,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"form_factors", form_factor_methods().at(config.options.form_factors).name},
                  {"hemicube_resolution", config.options.hemicube.resolution},
                  {"hemicube_placement", hemicube_placement_name(config.options.hemicube.placement)},
+                 {"hemicube_back_faces", hemicube_back_faces_name(config.options.hemicube.back_faces)},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},
                  {"block_size", config.block_size},
@@ -105,6 +106,11 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   if (config.options.form_factors != "hemicube")
     for (const char* field : {"form_factors", "hemicube_resolution", "hemicube_placement"})
       j["config"].erase(field);
+  // The back faces only when they pass: a hemicube run's file without the field blocked, as
+  // every hemicube run did before the option (--hemicube-back-faces).
+  if (config.options.form_factors != "hemicube" ||
+      config.options.hemicube.back_faces == HemicubeBackFaces::kBlock)
+    j["config"].erase("hemicube_back_faces");
   if (parallelisations().at(config.parallelisation).name == parallelisations().paper_default().name)
     for (const char* field : {"parallelisation", "shooters_per_iteration"}) j["config"].erase(field);
   j["status"] = status_name(result.status);

@@ -74,6 +74,9 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
     std::fprintf(out, "visibility            %s\n", config.options.visibility.c_str());
   if (hemicube)
     std::fprintf(out, "form factors          %s\n", config.options.form_factors.c_str());
+  if (hemicube && config.options.hemicube.back_faces != ncube::HemicubeBackFaces::kBlock)
+    std::fprintf(out, "hemicube back faces   %s (seen from behind, a polygon is culled)\n",
+                 ncube::hemicube_back_faces_name(config.options.hemicube.back_faces));
   std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
   if (r.status == ncube::RunStatus::kOutOfMemory)
     std::fprintf(out, "                      node %d (%s processor) needs %.0f bytes, has %.0f\n",

@@ -99,6 +99,17 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   // their files); the sweep tool compares them likewise (analysis/ncube/options.py).
   for (const char* flag : {"--form-factors", "--hemicube-resolution", "--hemicube-placement"})
     table.annotate(flag, "recorded_when", {{"form_factors", "hemicube"}});
+  // The hemicube's back faces (issue 38 item 6): block, the default, as every run before the
+  // option; recorded for `pass` runs only, so that every earlier hemicube result file stays
+  // as it was (a hemicube result without the field blocked).
+  std::string hemicube_back_faces = hemicube_back_faces_name(config.options.hemicube.back_faces);
+  table.choice("--hemicube-back-faces", hemicube_back_faces, {"block", "pass"},
+               "hemicube: a polygon seen from behind takes cells and hides what lies beyond it "
+               "(block), or is culled and passes the light on (pass); it receives nothing "
+               "either way",
+               "hemicube_back_faces");
+  table.annotate("--hemicube-back-faces", "recorded_when",
+                 {{"form_factors", "hemicube"}, {"hemicube_back_faces", "pass"}});
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",
@@ -296,6 +307,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   options.quiet = quiet;
   config.options.hemicube.placement =
       hemicube_placement == "elements" ? HemicubePlacement::kElements : HemicubePlacement::kCentre;
+  config.options.hemicube.back_faces =
+      hemicube_back_faces == "pass" ? HemicubeBackFaces::kPass : HemicubeBackFaces::kBlock;
   config.render.enabled = render_parallel != "off";
   config.render.partition =
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;
