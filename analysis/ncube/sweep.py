@@ -425,8 +425,10 @@ def _cell(spec, label, sweep_name, base, where):
     # (src/simulation/configuration_check.cpp): a method's options only with that method,
     # the hemicube with V = 0 and the rays' options at their defaults.
     for name, option in opts.OPTIONS.items():
-        when = option.recorded_when or {}
-        if name not in when and any(options[k] != v for k, v in when.items()) \
+        # The conditions on the other options (--hemicube-back-faces is recorded when it is
+        # "pass", which is no condition on the cell).
+        when = {k: v for k, v in (option.recorded_when or {}).items() if k != name}
+        if when and any(options[k] != v for k, v in when.items()) \
                 and options[name] != option.default:
             fail(name, f"{options[name]!r} needs " + ", ".join(f"{k}: {v}" for k, v in when.items()))
     if options["form_factors"] == "hemicube":
