@@ -367,6 +367,8 @@ def main():
                         default=ROOT / "analysis" / "figures" / "claims_pictures.png")
     parser.add_argument("--no-schemes", action="store_true",
                         help="leave out the second claim's section (analysis/claims_schemes.py)")
+    parser.add_argument("--no-hemicube", action="store_true",   # the hemicube's section's one line here
+                        help="leave out the hemicube's section (analysis/claims_hemicube.py)")
     parser.add_argument("--out", type=Path, default=ROOT / "analysis" / "claims.md")
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
@@ -400,8 +402,16 @@ def main():
         return 4
     plot(rows, args.figure)
     schemes = None if args.no_schemes else schemes_section(args.results.resolve())
+    # --- the hemicube's section (analysis/claims_hemicube.py, issue 38 item 6): included whole
+    import claims_hemicube
+    try:
+        hemicube = "" if args.no_hemicube else claims_hemicube.section(args.results.resolve(), args.jobs)
+    except (claims_hemicube.CellFailed, accuracy.AccuracyError, sweep.SweepError) as e:
+        print(f"claims: {e}", file=sys.stderr)
+        return 4
+    # --- end of the hemicube's section
     output_file.write(args.out, markdown(rows, references, [s.file for s in sweeps], labels,
-                                         schemes) + "\n")
+                                         schemes) + "\n" + (hemicube.rstrip() + "\n" if hemicube else ""))
     written = [args.out, args.figure] + ([args.pictures_figure] if labels else [])
     print(f"claims: {len(rows)} cells; written: " + ", ".join(str(p) for p in written))
     return 0

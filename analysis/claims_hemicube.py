@@ -90,17 +90,22 @@ def run_cell(cell, folder):
 
 
 def method_of(cell):
+    """(method, placement or the rays' M, back faces, the hemicube's N)."""
     o = cell.options
     if o["form_factors"] == "hemicube":
-        return ("hemicube", o["hemicube_placement"], o["hemicube_back_faces"])
-    return ("ray-traced", f"M={o['samples']}", "")
+        return ("hemicube", o["hemicube_placement"], o["hemicube_back_faces"], o["hemicube_resolution"])
+    return ("ray-traced", f"M={o['samples']}", "", 0)
 
 
 def method_label(method):
-    name, placement, back_faces = method
+    name, placement, back_faces, resolution = method
     if name == "hemicube":
-        return f"hemicube N=100 ({placement}, back faces {back_faces})"
+        return f"hemicube N={resolution} ({placement}, back faces {back_faces})"
     return f"rays ({placement})"
+
+
+def hemicube_row(rows, scene, placement, back_faces):
+    return next((r for r in rows if r["scene"] == scene and r["method"][:3] == ("hemicube", placement, back_faces)), None)
 
 
 def luminance(rgb):
@@ -330,16 +335,12 @@ def overlap(a, a_half, b, b_half):
     return abs(a - b) <= a_half + b_half
 
 
-def pick(rows, scene, method):
-    return next((r for r in rows if r["scene"] == scene and r["method"] == method), None)
-
-
 def back_faces_sentences(rows):
     out = []
     for scene in sorted({r["scene"] for r in rows}):
         for placement in ("centre", "elements"):
-            block = pick(rows, scene, ("hemicube", placement, "block"))
-            passing = pick(rows, scene, ("hemicube", placement, "pass"))
+            block = hemicube_row(rows, scene, placement, "block")
+            passing = hemicube_row(rows, scene, placement, "pass")
             if not block or not passing:
                 continue
             resolved = ("the two intervals do not overlap" if not overlap(
@@ -363,8 +364,8 @@ def ceiling_sentences(rows, reference_y, cycles_y, cycles_half):
     rays = next((r for r in mine if r["method"][0] == "ray-traced"), None)
     out = []
     for placement in ("centre", "elements"):
-        block = next((r for r in mine if r["method"] == ("hemicube", placement, "block")), None)
-        passing = next((r for r in mine if r["method"] == ("hemicube", placement, "pass")), None)
+        block = hemicube_row(mine, CEILING_SCENE, placement, "block")
+        passing = hemicube_row(mine, CEILING_SCENE, placement, "pass")
         if not block or not passing:
             continue
         c = block["ceiling"]
@@ -394,7 +395,7 @@ def markdown(rows, references, cycles, scenes, claims_files, claims_choices, swe
     out = ["## The hemicube's choices: back faces, and the light below the ceiling", "",
            f"Written by `analysis/claims_hemicube.py` from `{shown(sweep_file)}` (docs/model.md, "
            "\"The hemicube\"): every cell R = 1, V = 0, to convergence (largest unshot power "
-           "below 1e-4 of the emitted), the hemicube at N = 100. A polygon the hemicube's eye "
+           "below 1e-4 of the emitted). A polygon the hemicube's eye "
            "sees from behind receives nothing; with `--hemicube-back-faces block` (the default) "
            "it takes cells and hides what lies beyond it, with `pass` it is culled.", ""]
     counts = ", ".join(f"{n} with `{choice}`" for choice, n in sorted(claims_choices.items()))
