@@ -4,7 +4,8 @@
 # elements as occluders, as the paper's program at R = 1 does. With one node and one shooter
 # an iteration the two give every element's raw radiosity in the --mesh PLY byte for byte and
 # the same hemicube counts; the hemicube's buffers count in a node's memory (exit 3 where
-# they do not fit beside the scene).
+# they do not fit beside the scene); one hemicube per shot at R = 4, both placements, either
+# back-face choice (below).
 # Called by ctest as: shooters_hemicube_test.sh SIMULATE REPO_ROOT
 set -u
 simulate="$1"
@@ -33,6 +34,41 @@ assert hemicube and hemicube["hemicube_depth_tests"] > 0, r["counts"]
 for k, v in hemicube.items():
     assert s["counts"][k] == v, (k, v, s["counts"][k])
 PY
+
+# The hemicube's natural parallel form (issue 38 item 6): under the shooters each shot's
+# hemicube(s) are rendered once, by the node that shoots, at both placements and with either
+# back-face choice. (a) R = 4 with one shooter an iteration gives the paper's program at R = 1
+# byte for byte (the exchange adds zeros to the one node's increments); (b) R = 4 with four
+# shooters an iteration reads 3 N^2 cells per hemicube, one hemicube per shot at the centre
+# and nu x nv (the shooter's elements, from the scene file) at the elements; only pass runs
+# record hemicube_back_faces.
+cornell="$root/scenes/cornell-box.json"
+for placement in centre elements; do
+  for back_faces in block pass; do
+    name="$placement-$back_faces"
+    hemicube=(--form-factors hemicube --hemicube-resolution 50 --hemicube-placement "$placement"
+              --hemicube-back-faces "$back_faces" --quiet --threads 1)
+    "$simulate" "$cornell" --R 1 --iterations 12 "${hemicube[@]}" --mesh "$work/r1-$name.ply" ||
+      fail "$name: receivers R=1: exit $?"
+    "$simulate" "$cornell" --parallelisation shooters --R 4 --shooters-per-iteration 1 --iterations 12 \
+      "${hemicube[@]}" --mesh "$work/s4-$name.ply" || fail "$name: shooters R=4 S=1: exit $?"
+    cmp -s "$work/r1-$name.ply" "$work/s4-$name.ply" ||
+      fail "$name: shooters at R=4, one shooter an iteration, differ from receivers at R=1"
+    "$simulate" "$cornell" --parallelisation shooters --R 4 --iterations 3 "${hemicube[@]}" \
+      --json "$work/s4-$name.json" || fail "$name: shooters R=4: exit $?"
+    /usr/bin/python3 - "$cornell" "$work/s4-$name.json" "$placement" "$back_faces" <<'PY' || fail "$name: one hemicube per shot"
+import json, sys
+scene, result = (json.load(open(p)) for p in sys.argv[1:3])
+placement, back_faces = sys.argv[3:5]
+shots = result["shooters"]
+assert result["status"] == "ok" and len(shots) > 3, (result["status"], shots)
+per_shot = [1 if placement == "centre" else
+            scene["patches"][s]["elements"][0] * scene["patches"][s]["elements"][1] for s in shots]
+assert result["counts"]["hemicube_cells_read"] == 3 * 50 * 50 * sum(per_shot), result["counts"]
+assert result["config"].get("hemicube_back_faces") == (back_faces if back_faces == "pass" else None)
+PY
+  done
+done
 
 # Memory: the scheme's node as with rays plus the hemicube's table and buffers (scene2 at
 # R = 64 needs 4825136 bytes with rays, tests/shooters_test.sh; N = 100: a table of
