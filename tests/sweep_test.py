@@ -60,6 +60,7 @@ def test_validation(work):
                                     "'hemicube_resolution'"),
         "hemicube option without hemicube": ({"hemicube_placement": "elements"},
                                              "'hemicube_placement'"),
+        "back faces without hemicube": ({"hemicube_back_faces": "pass"}, "'hemicube_back_faces'"),
         "shooters with V > 0": ({"parallelisation": "shooters"}, "'V'"),
         "shooters with subdivision": ({"parallelisation": "shooters", "V": 0, "subdivide": True},
                                       "'subdivide'"),
