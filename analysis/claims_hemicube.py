@@ -270,7 +270,9 @@ def measure(results_root, jobs=2, sweep_file=SWEEP):
             error = accuracy.compare(element_solution(mesh), reference, str(mesh), str(reference_path))
             patch_y = [luminance(rgb) for rgb in result["patch_radiosity"]]
             rms, half, per_patch = against_cycles(patch_y, cycles[cell.scene][1])
-            row = {"scene": cell.scene, "method": method_of(cell), "iterations": result["iterations"],
+            row = {"scene": cell.scene, "method": method_of(cell), "R": cell.R, "V": cell.V,
+                   "convergence": cell.options["convergence"],
+                   "iterations": result["iterations"],
                    "converged": result["converged"], "status": result["status"],
                    "simulated_seconds": result["simulated_seconds"],
                    "element_rms": error["element_rms"], "patch_rms": error["patch_rms"],
@@ -392,10 +394,12 @@ def cycles_difference(y, y_cycles, cycles_half):
 
 
 def markdown(rows, references, cycles, scenes, claims_files, claims_choices, sweep_file=SWEEP):
+    machines = ", ".join(f"R = {R}, V = {V}" for R, V in sorted({(r["R"], r["V"]) for r in rows}))
+    stops = ", ".join(f"{f:g}" for f in sorted({r["convergence"] for r in rows}))
     out = ["## The hemicube's choices: back faces, and the light below the ceiling", "",
            f"Written by `analysis/claims_hemicube.py` from `{shown(sweep_file)}` (docs/model.md, "
-           "\"The hemicube\"): every cell R = 1, V = 0, to convergence (largest unshot power "
-           "below 1e-4 of the emitted). A polygon the hemicube's eye "
+           f"\"The hemicube\"): the cells at {machines}, run until the largest unshot power is "
+           f"below {stops} of the emitted power. A polygon the hemicube's eye "
            "sees from behind receives nothing; with `--hemicube-back-faces block` (the default) "
            "it takes cells and hides what lies beyond it, with `pass` it is culled.", ""]
     counts = ", ".join(f"{n} with `{choice}`" for choice, n in sorted(claims_choices.items()))
