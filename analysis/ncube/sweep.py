@@ -426,7 +426,7 @@ def _cell(spec, label, sweep_name, base, where):
     # the hemicube with V = 0 and the rays' options at their defaults.
     for name, option in opts.OPTIONS.items():
         when = option.recorded_when or {}
-        if name not in when and any(options[k] != v for k, v in when.items()) \
+        if name not in when and not option.recorded(options) \
                 and options[name] != option.default:
             fail(name, f"{options[name]!r} needs " + ", ".join(f"{k}: {v}" for k, v in when.items()))
     if options["form_factors"] == "hemicube":
@@ -439,16 +439,19 @@ def _cell(spec, label, sweep_name, base, where):
                      f"{name} at {opts.OPTIONS[name].default!r}")
     # The shooter-centred scheme's rules, as its registration has them
     # (src/simulation/parallelisations.cpp, check_shooters).
-    if options["parallelisation"] == "shooters":
+    # (and check_circulation: the same rules).
+    scheme = options["parallelisation"]
+    if scheme in ("shooters", "circulation"):
         if V > 0:
             fail("V" if "V" in spec else "parallelisation",
-                 f"V={V}: parallelisation shooters runs on R nodes with V = 0 (every node holds "
-                 f"the whole scene and traces its own rays; docs/model.md, 'The shooter-centred scheme')")
+                 f"V={V}: parallelisation {scheme} runs on R nodes with V = 0 (every node "
+                 f"computes its shooter's form factors to the whole scene; docs/model.md, "
+                 f"'The shooter-centred scheme')")
         for name in ("subdivide", "balance"):
             if options[name]:
-                fail(name, f"{options[name]!r}: parallelisation shooters does not run it")
+                fail(name, f"{options[name]!r}: parallelisation {scheme} does not run it")
         if options["render_parallel"] != opts.OPTIONS["render_parallel"].default:
-            fail("render_parallel", f"{options['render_parallel']!r}: parallelisation shooters does not run it")
+            fail("render_parallel", f"{options['render_parallel']!r}: parallelisation {scheme} does not run it")
         if options["shooters_per_iteration"] > R:
             fail("shooters_per_iteration", f"{options['shooters_per_iteration']}: at most one shooter per "
                  f"node, and R={R}")
