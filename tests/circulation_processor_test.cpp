@@ -143,8 +143,9 @@ TEST(CirculationScheme, ShootsEveryNodesBestPatch) {
 // that ends the run, each node passes R - 1 = 3 candidates of 88 + 8 bytes; every iteration
 // each node passes R - 1 = 3 blocks, those of the other owners, 12 E_j + 8 bytes each. So a
 // node sends 3 (k + 1) + 3 k = 15 messages and receives as many; over the machine
-// (k + 1) R (R - 1) 96 + k (R - 1) (12 E + 8 R) = 3456 + 2 x 3 x 12968 = 81264 bytes; a node
-// adds k (E - E_own) received increments.
+// (k + 1) R (R - 1) 96 + k (R - 1) (12 E + 8 R) = 3456 + 2 x 3 x 12968 = 81264 bytes. A node
+// adds its increments to every block it receives, every owner's but its ring predecessor's
+// (that block starts at it, taken from its own vector): k (E - E_predecessor) adds.
 TEST(CirculationScheme, RingMessagesInClosedForm) {
   const Scene scene = load_scene(repo("scenes/cornell-box.json"));
   ASSERT_EQ(scene.element_total(), 1078);
@@ -154,15 +155,22 @@ TEST(CirculationScheme, RingMessagesInClosedForm) {
   ASSERT_EQ(r.status, RunStatus::kOk);
   ASSERT_EQ(r.nodes.size(), std::size_t(R));
   double total = 0.0;
+  const auto elements_of = [&](int rank) {
+    double count = 0.0;
+    for (int p : shares[std::size_t(rank)]) count += scene.patches[std::size_t(p)].element_count();
+    return count;
+  };
   for (int rank = 0; rank < R; ++rank) {
-    double own = 0.0;
-    for (int p : shares[std::size_t(rank)]) own += scene.patches[std::size_t(p)].element_count();
+    const double own = elements_of(rank);
+    const int predecessor =
+        RingCirculation::rank_at((RingCirculation::position_of(rank, R) + R - 1) % R, R);
     const NodeStats& n = r.nodes[std::size_t(rank)];
     EXPECT_EQ(n.messages_sent, 15) << "rank " << rank;
     EXPECT_EQ(n.messages_received, 15) << "rank " << rank;
     EXPECT_DOUBLE_EQ(n.bytes_sent, (k + 1) * 3 * 96.0 + k * (12.0 * (1078 - own) + 3 * 8.0))
         << "rank " << rank;
-    EXPECT_DOUBLE_EQ(double(n.counts.increments_combined), k * (1078 - own)) << "rank " << rank;
+    EXPECT_DOUBLE_EQ(double(n.counts.increments_combined), k * (1078 - elements_of(predecessor)))
+        << "rank " << rank;
     EXPECT_DOUBLE_EQ(double(n.counts.increments_applied), k * own) << "rank " << rank;
     total += n.bytes_sent;
   }

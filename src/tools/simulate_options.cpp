@@ -226,7 +226,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                 "platform's");
   table.setting("--log", log, "SETTING",
                 "a SimGrid log setting, e.g. ncube_messages.thresh:debug (categories: "
-                "ncube_radiosity, ncube_visibility, ncube_shooters, ncube_render, ncube_messages)");
+                "ncube_radiosity, ncube_visibility, ncube_shooters, ncube_circulation, "
+                "ncube_render, ncube_messages)");
   // At most 64: libgomp reserves a stack of several MB per thread and ends the process
   // (exit 1, no message of ours) when it cannot create one, e.g. 128 threads under a 1 GB
   // address-space limit; more threads than cores gains nothing anyway.
