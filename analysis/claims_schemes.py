@@ -625,7 +625,8 @@ def markdown(rows, levels, host=None):
             "data that circulate are assumed (docs/model.md). A different reading, for example "
             "geometry circulated instead of replicated, changes its memory and bytes, not its "
             "shots.",
-            "- The sources used hemicubes; all schemes here use the paper's ray-traced form "
+            "- Feda & Purgathofer and Recker et al. used hemicubes (Çapın et al.'s abstracts "
+            "do not say which form factors); all schemes here use the paper's ray-traced form "
             "factors, so claim 2 is measured on the parallelisation alone, not on the form "
             "factors' cost.",
             "- The fixed error is relative to the paper's own converged error (1.1 x): a level "
