@@ -22,8 +22,15 @@ class Option:
     check: object = None  # value -> error text or None
     doc: str = ""
     # {option: value}: the result file records the field only when those options have those
-    # values (the hemicube's options: hemicube runs only, so the paper's runs keep their files)
+    # values (the hemicube's options: hemicube runs only, so the paper's runs keep their files);
+    # a list of values: any of them (the shooter-centred parallelisations)
     recorded_when: object = None
+
+    def recorded(self, options):
+        """Whether the result file records this option's field for these (complete) options."""
+        return not self.recorded_when or all(
+            options[k] in (v if isinstance(v, list) else [v])
+            for k, v in self.recorded_when.items())
 
 
 def _show(value):
@@ -121,7 +128,7 @@ def config_fields(options):
     fields = {}
     for name, option in OPTIONS.items():
         value = full[name]
-        if option.recorded_when and any(full[k] != v for k, v in option.recorded_when.items()):
+        if not option.recorded(full):
             continue
         # --unlimited-memory is recorded inverted, as memory_cap.
         fields[option.config_field] = (not value) if name == "unlimited_memory" else value

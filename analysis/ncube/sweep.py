@@ -426,9 +426,10 @@ def _cell(spec, label, sweep_name, base, where):
     # the hemicube with V = 0 and the rays' options at their defaults.
     for name, option in opts.OPTIONS.items():
         # The conditions on the other options (--hemicube-back-faces is recorded when it is
-        # "pass", which is no condition on the cell).
+        # "pass", which is no condition on the cell); a condition may list several values.
         when = {k: v for k, v in (option.recorded_when or {}).items() if k != name}
-        if when and any(options[k] != v for k, v in when.items()) \
+        if when and any(options[k] not in (v if isinstance(v, list) else [v])
+                        for k, v in when.items()) \
                 and options[name] != option.default:
             fail(name, f"{options[name]!r} needs " + ", ".join(f"{k}: {v}" for k, v in when.items()))
     if options["form_factors"] == "hemicube":
@@ -441,16 +442,19 @@ def _cell(spec, label, sweep_name, base, where):
                      f"{name} at {opts.OPTIONS[name].default!r}")
     # The shooter-centred scheme's rules, as its registration has them
     # (src/simulation/parallelisations.cpp, check_shooters).
-    if options["parallelisation"] == "shooters":
+    # (and check_circulation: the same rules).
+    scheme = options["parallelisation"]
+    if scheme in ("shooters", "circulation"):
         if V > 0:
             fail("V" if "V" in spec else "parallelisation",
-                 f"V={V}: parallelisation shooters runs on R nodes with V = 0 (every node holds "
-                 f"the whole scene and traces its own rays; docs/model.md, 'The shooter-centred scheme')")
+                 f"V={V}: parallelisation {scheme} runs on R nodes with V = 0 (every node "
+                 f"computes its shooter's form factors to the whole scene; docs/model.md, "
+                 f"'The shooter-centred scheme')")
         for name in ("subdivide", "balance"):
             if options[name]:
-                fail(name, f"{options[name]!r}: parallelisation shooters does not run it")
+                fail(name, f"{options[name]!r}: parallelisation {scheme} does not run it")
         if options["render_parallel"] != opts.OPTIONS["render_parallel"].default:
-            fail("render_parallel", f"{options['render_parallel']!r}: parallelisation shooters does not run it")
+            fail("render_parallel", f"{options['render_parallel']!r}: parallelisation {scheme} does not run it")
         if options["shooters_per_iteration"] > R:
             fail("shooters_per_iteration", f"{options['shooters_per_iteration']}: at most one shooter per "
                  f"node, and R={R}")

@@ -1,5 +1,7 @@
 #include "nodes/memory_plan.h"
 
+#include <algorithm>
+
 #include "nodes/messages.h"
 #include "radiosity/form_factor_methods.h"
 #include "visibility/visibility_methods.h"
@@ -80,6 +82,33 @@ std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const Cos
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < setup.placement.radiosity_processors; ++rank)
     nodes.push_back({setup.placement.radiosity_node(rank), NodeRole::kRadiosity, rank, bytes});
+  return nodes;
+}
+
+std::vector<NodeMemory> plan_circulation_memory(const ProgramSetup& setup,
+                                                const std::vector<std::vector<int>>& owned_patches,
+                                                const CostModel& costs) {
+  const int R = setup.placement.radiosity_processors;
+  const double elements = double(setup.scene.element_total());
+  double largest_block = 0.0;
+  std::vector<double> owned_elements;
+  for (const std::vector<int>& patches : owned_patches) {
+    double count = 0.0;
+    for (int patch : patches) count += setup.scene.patches[std::size_t(patch)].element_count();
+    owned_elements.push_back(count);
+    largest_block = std::max(largest_block, count);
+  }
+  const double shared = costs.node_reserve_bytes + (R + 1.0) * costs.shooter_record_bytes +
+                        double(setup.scene.patches.size()) * costs.patch_geometry_bytes +
+                        search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs) +
+                        form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs) +
+                        elements * costs.radiosity_increment_bytes +
+                        2.0 * largest_block * costs.radiosity_increment_bytes;
+  std::vector<NodeMemory> nodes;
+  for (int rank = 0; rank < R; ++rank)
+    nodes.push_back({setup.placement.radiosity_node(rank), NodeRole::kRadiosity, rank,
+                     shared + double(owned_patches[std::size_t(rank)].size()) * costs.patch_radiosity_bytes +
+                         owned_elements[std::size_t(rank)] * costs.element_bytes});
   return nodes;
 }
 

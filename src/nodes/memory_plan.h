@@ -37,4 +37,14 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
 // being received).
 std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const CostModel& costs);
 
+// Çapın, Aykanat & Özgüç's circulation scheme (--parallelisation circulation, V = 0): node
+// rank holds the whole scene's geometry and search structure (for its shooter's form factors
+// to every element), its owned patches' radiosity data and elements, the R candidates of a
+// gathering round and the one being passed on, its shot's increments for every element of the
+// scene, and two blocks of the light distribution (the one it adds to and the one arriving):
+// the largest block, at most.
+std::vector<NodeMemory> plan_circulation_memory(const ProgramSetup& setup,
+                                                const std::vector<std::vector<int>>& owned_patches,
+                                                const CostModel& costs);
+
 }  // namespace ncube

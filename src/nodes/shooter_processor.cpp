@@ -51,7 +51,8 @@ void ShooterProcessor::run() {
     std::vector<Rgb> increments(elements, Rgb(0.0));
     if (std::size_t(rank_) < chosen.size())
       runtime_.set_trace_context(iteration + 1, chosen[std::size_t(rank_)].patch);
-    if (std::size_t(rank_) < chosen.size()) shoot(chosen[std::size_t(rank_)], increments);
+    if (std::size_t(rank_) < chosen.size())
+      shoot_to_scene(setup_, engine_, occluders_, chosen[std::size_t(rank_)], increments, runtime_);
     exchange_.sum(increments, iteration);
     apply(chosen, increments);
     for (const ShooterChoice& c : chosen) shooters_.push_back(c.patch);
@@ -76,25 +77,26 @@ std::vector<ShooterChoice> ShooterProcessor::choose_shooters(WorkCounts& counts)
   return best;
 }
 
-void ShooterProcessor::shoot(const ShooterChoice& choice, std::vector<Rgb>& increments) {
-  const Shooter shooter = make_shooter(setup_.scene, choice.patch, choice.unshot, setup_.options.samples);
+void shoot_to_scene(const ProgramSetup& setup, RadiosityEngine& engine, const OccluderSet& occluders,
+                    const ShooterChoice& choice, std::vector<Rgb>& increments, NodeRuntime& runtime) {
+  const Shooter shooter = make_shooter(setup.scene, choice.patch, choice.unshot, setup.options.samples);
   WorkCounts work;
   const std::vector<ElementRef> receivers =
-      engine_.receivers(shooter, setup_.options.skip_facing_away, work);
+      engine.receivers(shooter, setup.options.skip_facing_away, work);
   // The form-factor step: the shooter's form factor to every receiving element, by the
-  // run's method over the whole scene (every node holds it; the hemicube draws every other
-  // patch's elements as occluders, as the paper's program at R = 1 does).
-  const std::vector<double> form_factors = form_factor_methods().at(setup_.options.form_factors)
-      .form_factors(engine_, occluders_, shooter, receivers, setup_.options, work);
-  const std::vector<StoredPatch>& patches = engine_.store().patches();
+  // run's method over the whole scene (the hemicube draws every other patch's elements as
+  // occluders, as the paper's program at R = 1 does).
+  const std::vector<double> form_factors = form_factor_methods().at(setup.options.form_factors)
+      .form_factors(engine, occluders, shooter, receivers, setup.options, work);
+  const std::vector<StoredPatch>& patches = engine.store().patches();
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    const Patch& patch = setup_.scene.patches[std::size_t(patches[std::size_t(receivers[k].slot)].patch)];
+    const Patch& patch = setup.scene.patches[std::size_t(patches[std::size_t(receivers[k].slot)].patch)];
     // Reciprocity, as the paper's gather (RadiosityEngine::add_light): rho_e F(e -> s) unshot.
     increments[std::size_t(patch.first_element + receivers[k].index)] =
         patch.reflectance * shooter.unshot * form_factors[k];
     ++work.element_updates;
   }
-  runtime_.charge(work);
+  runtime.charge(work);
 }
 
 void ShooterProcessor::apply(const std::vector<ShooterChoice>& shot,

@@ -19,6 +19,14 @@
 
 namespace ncube {
 
+// One shooter's light to every element `engine` holds, shot by the run's form-factor method
+// over the whole scene, as increments by scene element (increments[e] = rho_e F(e -> s) x
+// unshot; the elements it does not reach keep theirs); the work is charged to `runtime`.
+// Both shooter-centred schemes shoot with it (this one and nodes/circulation_processor.h),
+// so that their physics is the same to the last bit.
+void shoot_to_scene(const ProgramSetup& setup, RadiosityEngine& engine, const OccluderSet& occluders,
+                    const ShooterChoice& choice, std::vector<Rgb>& increments, NodeRuntime& runtime);
+
 class ShooterProcessor {
  public:
   // `engine` holds every patch of the scene; `occluders` is the whole scene.
@@ -43,8 +51,6 @@ class ShooterProcessor {
   // The S held patches with the most unshot power, best first (ShooterChoice::better_than),
   // only those with some; one pass over the patches.
   std::vector<ShooterChoice> choose_shooters(WorkCounts& counts) const;
-  // This node's shooter's light to every element it reaches, as increments (by scene element).
-  void shoot(const ShooterChoice& choice, std::vector<Rgb>& increments);
   // The iteration's summed increments added to every element and its patch's unshot
   // radiosity, after the shot patches' unshot radiosity is cleared.
   void apply(const std::vector<ShooterChoice>& shot, const std::vector<Rgb>& increments);

@@ -17,6 +17,7 @@
 #include "nodes/memory_plan.h"
 #include "nodes/node_runtime.h"
 #include "nodes/program_setup.h"
+#include "nodes/circulation_processor.h"
 #include "nodes/radiosity_processor.h"
 #include "nodes/shooter_processor.h"
 #include "nodes/visibility_processor.h"
@@ -37,6 +38,7 @@ struct NodePrograms {
   std::deque<RadiosityProcessor> radiosity;  // in rank order; the master first
   std::deque<VisibilityProcessor> visibility;
   std::deque<ShooterProcessor> shooters;  // --parallelisation shooters: in rank order
+  std::deque<CirculationProcessor> circulation;  // --parallelisation circulation: in rank order
   // An exception a node program threw (the host out of memory), rethrown after the run.
   ActorExceptions exceptions;
   // The occluder sets and the engines' host help (host_machinery.h); last, so that the

@@ -1,5 +1,6 @@
 #include "simulation/parallelisations.h"
 
+#include <algorithm>
 #include <numeric>
 
 #include <simgrid/s4u/Actor.hpp>
@@ -130,6 +131,75 @@ void collect_shooters(const Scene& scene, const NodePrograms& programs, const Pl
   }
 }
 
+// Çapın, Aykanat & Özgüç's scheme (nodes/circulation_processor.h): R nodes on a ring, each
+// owning the paper's share of the patches.
+void check_circulation(const Scene&, const SimulationConfig& config) {
+  const std::string what = "--parallelisation circulation: ";
+  if (config.visibility_processors != 0)
+    throw InputError(what + "V=" + std::to_string(config.visibility_processors) +
+                     ", but every node of the circulation scheme computes its shooter's form "
+                     "factors to the whole scene itself (use --V 0)");
+  if (config.options.subdivision.enabled)
+    throw InputError(what + "--subdivide is not modelled (the blocks of the light distribution "
+                            "would change size)");
+  if (config.balancing.enabled)
+    throw InputError(what + "--balance does not apply (the source's task assignment is static)");
+  if (config.render.enabled)
+    throw InputError(what + "--render-parallel is not modelled for this scheme");
+  if (config.shooters_per_iteration > config.radiosity_processors)
+    throw InputError("--shooters-per-iteration " + std::to_string(config.shooters_per_iteration) +
+                     ": at most one shooter per node, and R=" +
+                     std::to_string(config.radiosity_processors));
+}
+
+void launch_circulation(NodePrograms& programs, const ProgramSetup& setup,
+                        const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
+  const Scene& scene = setup.scene;
+  const int R = setup.placement.radiosity_processors;
+  std::vector<int> all(scene.patches.size());
+  std::iota(all.begin(), all.end(), 0);
+  build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
+  const OccluderSet& occluders = *programs.host.occluders.front();
+  const std::vector<std::vector<int>> owned = owned_patches(setup);
+  ActorExceptions::check_stacks(std::size_t(R));
+  for (int rank = 0; rank < R; ++rank) {
+    RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
+    engine.use_host_assist(programs.host.assist.get(), rank);
+    CirculationProcessor& node = programs.circulation.emplace_back(
+        setup, rank, owned, programs.runtimes[std::size_t(rank)], engine, occluders);
+    simgrid::s4u::Actor::create("circulation-" + std::to_string(rank),
+                                hosts[setup.placement.radiosity_node(rank)],
+                                programs.exceptions.guard([&node] { node.run(); }));
+  }
+  report_iterations(programs.circulation.front(), config, setup.emitted_power);
+}
+
+void collect_circulation(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
+                         SimulationResult& result) {
+  const CirculationProcessor& first = programs.circulation.front();
+  result.converged = first.converged();
+  result.shooters = first.shooters();
+  result.iterations = int(first.iteration_ends().size());
+  double previous = 0.0;
+  for (double end : first.iteration_ends()) {
+    result.iteration_seconds.push_back(end - previous);
+    previous = end;
+  }
+  // Each patch as its owner holds it (the other nodes' copies of it are never updated).
+  result.solution.assign(scene.patches.size(), PatchSolution{});
+  result.patch_radiosity.assign(scene.patches.size(), Rgb(0.0));
+  for (std::size_t rank = 0; rank < programs.circulation.size(); ++rank) {
+    const RadiosityEngine& engine = programs.engines[rank];
+    const std::vector<int>& owned = programs.circulation[rank].owned();
+    result.held_patches.push_back(owned);
+    for (const PatchSolution& p : engine.store().solution())
+      if (std::find(owned.begin(), owned.end(), p.patch) != owned.end()) {
+        result.solution[std::size_t(p.patch)] = p;
+        result.patch_radiosity[std::size_t(p.patch)] = engine.patch_radiosity(p.patch);
+      }
+  }
+}
+
 }  // namespace
 
 const MethodRegistry<Parallelisation>& parallelisations() {
@@ -150,15 +220,30 @@ const MethodRegistry<Parallelisation>& parallelisations() {
            "all nodes each iteration; V = 0",
            check_shooters, plan_shooter_memory, launch_shooters, collect_shooters,
            "increments_"},
+          {"circulation",
+           "Capin, Aykanat & Ozguc's published shooter-centred scheme (Parallel Rendering "
+           "Symposium 1993): static shares of the patches, every node's best patch shot at "
+           "once, the light distributed by circulating each node's increments round a ring; "
+           "V = 0",
+           check_circulation,
+           [](const ProgramSetup& setup, const CostModel& costs) {
+             return plan_circulation_memory(setup, owned_patches(setup), costs);
+           },
+           launch_circulation, collect_circulation, "increments_"},
       });
   return registry;
 }
 
 bool parallelisation_writes_counter(const std::string& parallelisation, const std::string& counter) {
+  // A counter some parallelisation claims by its prefix is written for the runs of the
+  // parallelisations that claim it only.
+  bool claimed = false;
   for (const Parallelisation& p : parallelisations().all())
-    if (!p.counter_prefix.empty() && counter.rfind(p.counter_prefix, 0) == 0)
-      return p.name == parallelisation;
-  return true;
+    if (!p.counter_prefix.empty() && counter.rfind(p.counter_prefix, 0) == 0) {
+      if (p.name == parallelisation) return true;
+      claimed = true;
+    }
+  return !claimed;
 }
 
 }  // namespace ncube

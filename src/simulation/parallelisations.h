@@ -4,7 +4,8 @@
 // configurations it refuses, each node's memory before the run, the node programs it places
 // on the simulated machine, and what the run reports of them. The paper's program first
 // (receivers: each radiosity processor holds a share of the patches and gathers at them),
-// then the shooter-centred scheme it replaced (nodes/shooter_processor.h).
+// then the shooter-centred scheme it replaced (nodes/shooter_processor.h), then the published
+// shooter-centred scheme of Çapın, Aykanat & Özgüç (nodes/circulation_processor.h).
 #pragma once
 
 #include <functional>
@@ -44,7 +45,7 @@ struct Parallelisation {
   std::string counter_prefix;
 };
 
-// The paper's receivers first (the default), then shooters.
+// The paper's receivers first (the default), then shooters, then circulation.
 const MethodRegistry<Parallelisation>& parallelisations();
 
 // Whether the result file of a run with parallelisation `parallelisation` writes `counter`.

@@ -58,13 +58,17 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "how the work is shared over the nodes: " + parallelisations().described(),
                "parallelisation");
   table.integer("--shooters-per-iteration", config.shooters_per_iteration, 0, kMaxInt,
-                "--parallelisation shooters: patches shot at once per iteration, at most one "
-                "per node (0: one per node)",
+                "--parallelisation shooters or circulation: patches shot at once per iteration, "
+                "at most one per node (0: one per node)",
                 "shooters_per_iteration");
   // The result file records them for shooter-centred runs only (so that the paper's runs
-  // keep their files); the sweep tool compares them likewise (analysis/ncube/options.py).
+  // keep their files); the sweep tool compares them likewise (analysis/ncube/options.py):
+  // recorded when the parallelisation is one of the listed.
+  nlohmann::json shooter_centred = nlohmann::json::array();
+  for (const std::string& name : parallelisations().names())
+    if (name != parallelisations().paper_default().name) shooter_centred.push_back(name);
   for (const char* flag : {"--parallelisation", "--shooters-per-iteration"})
-    table.annotate(flag, "recorded_when", {{"parallelisation", "shooters"}});
+    table.annotate(flag, "recorded_when", {{"parallelisation", shooter_centred}});
   table.square("--samples", config.options.samples, 1, 64,
                "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
   table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
@@ -233,7 +237,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                 "platform's");
   table.setting("--log", log, "SETTING",
                 "a SimGrid log setting, e.g. ncube_messages.thresh:debug (categories: "
-                "ncube_radiosity, ncube_visibility, ncube_shooters, ncube_render, ncube_messages)");
+                "ncube_radiosity, ncube_visibility, ncube_shooters, ncube_circulation, "
+                "ncube_render, ncube_messages)");
   // At most 64: libgomp reserves a stack of several MB per thread and ends the process
   // (exit 1, no message of ours) when it cannot create one, e.g. 128 threads under a 1 GB
   // address-space limit; more threads than cores gains nothing anyway.

@@ -496,7 +496,8 @@ def number_cases(simulate, work):
             iterations = [] if option["flag"] == "--iterations" else QUICK
             # An option of one method only (the hemicube's) is tried with that method chosen.
             method = [a for key, value in option.get("recorded_when", {}).items()
-                      for a in ("--" + key.replace("_", "-"), value)]
+                      for a in ("--" + key.replace("_", "-"),
+                                value[0] if isinstance(value, list) else value)]
             cases.append({"group": "numbers", "name": f"{option['flag']} {text!r}",
                           "args": [str(model_scene if model else scene), *iterations, *method,
                                    option["flag"], text, "--json", str(out)],
