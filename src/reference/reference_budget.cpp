@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -14,6 +13,8 @@
 #include <glm/geometric.hpp>
 
 #include "reference/area_form_factors.h"
+#include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube::reference {
 
@@ -60,20 +61,24 @@ ReferenceBudget reference_budget(const Scene& fine, int side) {
 
 double host_memory_available() {
   double available = std::numeric_limits<double>::max();
-  std::ifstream meminfo("/proc/meminfo");
-  std::string line;
-  while (std::getline(meminfo, line))
-    if (line.rfind("MemAvailable:", 0) == 0) {
-      std::istringstream fields(line.substr(13));
-      double kib = 0.0;
-      if (fields >> kib) available = kib * 1024.0;
+  try {
+    std::istringstream meminfo(read_input_file("/proc/meminfo", kKernelFile));
+    std::string line;
+    while (std::getline(meminfo, line))
+      if (line.rfind("MemAvailable:", 0) == 0) {
+        std::istringstream fields(line.substr(13));
+        double kib = 0.0;
+        if (fields >> kib) available = kib * 1024.0;
+      }
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+      std::istringstream statm(read_input_file("/proc/self/statm", kKernelFile));
+      double mapped = 0.0;
+      if (statm >> mapped) mapped *= double(sysconf(_SC_PAGESIZE));
+      available = std::min(available, std::max(0.0, double(limit.rlim_cur) - mapped));
     }
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    double mapped = 0.0;
-    std::ifstream statm("/proc/self/statm");
-    if (statm >> mapped) mapped *= double(sysconf(_SC_PAGESIZE));
-    available = std::min(available, std::max(0.0, double(limit.rlim_cur) - mapped));
+  } catch (const InputError&) {
+    // No /proc: nothing known, the run tries (and a bad_alloc is exit 6).
   }
   return available;
 }
