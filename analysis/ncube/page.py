@@ -111,7 +111,9 @@ def refusing_outputs(script):
             try:
                 return main(*args, **kwargs)
             except output_file.OutputIsInputError as e:
-                refuse(script, f"an output {e}")
+                # The check comes as each file is written: those written before it stay.
+                print(f"{script}: an output {e}; not written", file=sys.stderr, flush=True)
+                sys.exit(REFUSED)
             except PageWriteError as e:
                 print(f"{script}: {e}", file=sys.stderr, flush=True)
                 sys.exit(e.code)
