@@ -54,6 +54,21 @@ PY
     || fail "$path: not one line holding '$holds': $(cat err.txt)"
 done
 [ "$(cat result.json)" = '{"status": "ok"}' ] || fail "the result file was replaced"
+
+# Every page script is listed in the threat model, and each listed "held" runs under the rule.
+/usr/bin/python3 - "$root" <<'PY' || fail "the page scripts' listing"
+import sys
+from pathlib import Path
+root = Path(sys.argv[1])
+sys.path.insert(0, str(root / "tests" / "robustness"))
+import threat_model
+scripts = {p.name: p for p in (root / "analysis").glob("*.py") if "\ndef main(" in p.read_text()}
+unlisted = sorted(set(scripts) - set(threat_model.PAGE_SCRIPTS))
+assert not unlisted, f"page scripts not in threat_model.PAGE_SCRIPTS: {unlisted}"
+for name, state in threat_model.PAGE_SCRIPTS.items():
+    if state == "held":
+        assert "@page.refusing_outputs(" in scripts[name].read_text(), f"{name} is not held"
+PY
 [ "$failures" = 0 ] && echo "page_outputs_test: all checks passed" && exit 0
 echo "page_outputs_test: $failures check(s) failed"
 exit 1
