@@ -102,6 +102,7 @@ def plot_figure(rows, path):
     return path
 
 
+@page.refusing_outputs("adaptive.py")
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--simulate", default=os.path.join(ROOT, "build", "simulate"))
@@ -218,8 +219,7 @@ def main():
                       "fewer patches per processor (large R) the element counts are more uneven "
                       "to start with, and the patches left to move are too few to even them out "
                       "fully (see the imbalance with balancing)."]
-    with open(args.output, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    page.write(args.output, "\n".join(lines) + "\n")
     print("wrote", args.output, file=sys.stderr)
 
 

@@ -68,6 +68,7 @@ def simulate(cell, values, document, workdir, changes):
     return result["seconds_per_iteration"]   # the one definition (docs/reproduce.md)
 
 
+@page.refusing_outputs("calibrate.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dry-run", action="store_true", help="fit, but write nothing")
@@ -122,7 +123,7 @@ def main():
     fit = {"parameters": {n: float(f"{v:.6g}") for n, v in zip(names, x)},
            "cells": [dict(c, paper=paper_value(tables, c), simulated=float(f"{t:.6g}"))
                      for c, t in zip(cells, y)]}
-    (ANALYSIS / "calibration-fit.json").write_text(json.dumps(fit, indent=1) + "\n")
+    page.write(ANALYSIS / "calibration-fit.json", json.dumps(fit, indent=1) + "\n")
     return 0
 
 

@@ -157,6 +157,7 @@ def figure(cells, models, base_values, capacity, path):
     plt.close(fig)
 
 
+@page.refusing_outputs("memory_sensitivity.py")
 def main():
     argparse.ArgumentParser(description=__doc__.splitlines()[0]).parse_args()
     page.will_run("memory_sensitivity.py", "its memory-plan-only runs (--iterations 0) itself",
@@ -235,8 +236,8 @@ def main():
               "conclusion of the report should be read as holding outside them."]
     (ANALYSIS / "figures").mkdir(exist_ok=True)
     figure(cells, models, base_values, capacity, ANALYSIS / "figures" / "memory_sensitivity.png")
-    (ANALYSIS / "memory-sensitivity.md").write_text("\n".join(lines) + "\n")
-    (ANALYSIS / "memory-sensitivity.json").write_text(json.dumps(summary, indent=1) + "\n")
+    page.write(ANALYSIS / "memory-sensitivity.md", "\n".join(lines) + "\n")
+    page.write(ANALYSIS / "memory-sensitivity.json", json.dumps(summary, indent=1) + "\n")
     print("wrote analysis/memory-sensitivity.md: " +
           ", ".join(f"{k} {v[0]:.0f}..{v[1] if v[1] is None else round(v[1])}"
                     for k, v in summary["intervals"].items()))

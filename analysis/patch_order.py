@@ -160,6 +160,7 @@ def judge(results_dir):
     return stats, verdicts
 
 
+@page.refusing_outputs("patch_order.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3, 4])
@@ -224,8 +225,8 @@ def main():
         values = [r["parameters"][name] for r in shuffled]
         lines.append(f"`{name}`: {min(values):.2f} to {max(values):.2f} over the random "
                      f"orders (committed {fitted_now[name]:.2f}).")
-    (ANALYSIS / "patch-order.md").write_text("\n".join(lines) + "\n")
-    (ANALYSIS / "patch-order.json").write_text(json.dumps(rows, indent=1, sort_keys=True) + "\n")
+    page.write(ANALYSIS / "patch-order.md", "\n".join(lines) + "\n")
+    page.write(ANALYSIS / "patch-order.json", json.dumps(rows, indent=1, sort_keys=True) + "\n")
     print("wrote analysis/patch-order.md")
     return 0
 

@@ -222,6 +222,7 @@ def render_section(sweep, loaded):
     return lines + [""]
 
 
+@page.refusing_outputs("predictions.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / RESULTS,
@@ -243,7 +244,7 @@ def main():
     for sweep in sweeps:
         _, loaded = summary.rows(sweep, results_dir)
         lines += sections[sweep.name](sweep, loaded)
-    OUTPUT.write_text("\n".join(lines).rstrip() + "\n")
+    page.write(OUTPUT, "\n".join(lines).rstrip() + "\n")
     print(f"wrote {rel(OUTPUT)}")
 
 

@@ -33,6 +33,7 @@ from ncube import page  # noqa: E402
 REPORT = ANALYSIS / "report.md"
 
 
+@page.refusing_outputs("report.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results",
@@ -53,7 +54,7 @@ def main():
     findings_lines, findings = findings_section(inputs)
     lines = (header_section(inputs) + tables_section(inputs) + summary_section(inputs) +
              findings_lines + figures.figures_section(inputs))
-    REPORT.write_text("\n".join(lines).rstrip() + "\n")
+    page.write(REPORT, "\n".join(lines).rstrip() + "\n")
     print(f"wrote {relative(REPORT)}: " + ", ".join(f"{f.name} {f.status}" for f in findings))
 
 

@@ -8,7 +8,7 @@
 # 60 MB below it is tried: each ends in exit 0 or 6, one of them in 6, and none leaves a file.
 # Lower limits fail where SimGrid allocates the actors' stacks, which SimGrid itself turns into
 # an abort: the stacks' memory is asked for first (ActorExceptions::check_stacks), so these
-# too are exit 6. SimGrid's own allocations (xbt_malloc, in the maestro) end the process
+# too are exit 6 (naming the stacks). SimGrid's own allocations (xbt_malloc, in the maestro) end the process
 # with xbt's "Memory (c)allocation of N bytes failed" and an abort that no code of ours sees:
 # a limit where one of those fails first is exit 134 with that message, counted and allowed
 # (docs/cli.md, exit 6), but it must leave no file either, and most limits must still be 6.
@@ -48,7 +48,7 @@ for ((limit = high - 3000; limit > high - 60000; limit -= 3000)); do
     sixes=$((sixes + 1))
     [ "$(grep -cv 'tcmalloc: allocation failed' "$work/err")" = 1 ] ||
       fail "under $limit KiB: not one line: $(head -5 "$work/err")"
-    grep -q "^simulate: the host ran out of memory" "$work/err" || fail "under $limit KiB: $(head -3 "$work/err")"
+    grep -q "^simulate: the host ran out of memory\|^simulate: the stacks of the simulation's" "$work/err" || fail "under $limit KiB: $(head -3 "$work/err")"
   elif [ $code = 134 ] && grep -q "\[root/CRITICAL\] Memory c\{0,1\}allocation of [0-9]* bytes failed" "$work/err"; then
     simgrid_aborts=$((simgrid_aborts + 1))
   elif [ $code != 0 ]; then

@@ -56,6 +56,11 @@ def read_input_bytes(path, what, max_bytes):
             raise InputFileError(f"{path}: {what} is {_KINDS.get(stat.S_IFMT(mode), 'not a file')}, "
                                  "not a regular file")
         _READ.setdefault((status.st_dev, status.st_ino), str(path))
+        # Refused by the size it has, not read up to the limit first (a file of a few hundred
+        # MiB over accuracy.py's limit took as much memory); what it gives is still counted
+        # below (a kernel file claims a size of 0).
+        if status.st_size > max_bytes:
+            raise InputFileError(f"{path}: {what} is larger than {max_bytes} bytes (the limit)")
         pieces, size = [], 0
         while size <= max_bytes:
             piece = os.read(descriptor, min(MIB, max_bytes + 1 - size))

@@ -11,11 +11,12 @@ overwritten by an empty or partial one (README.md, "Reproducing the paper's tabl
 
 tests/page_scripts_test.sh runs every page script in a clean clone and checks that the tree
 is unchanged."""
+import functools
 import os
 import sys
 from pathlib import Path
 
-from . import paths
+from . import output_file, paths
 
 REFUSED = 2   # as a missing input file: ./simulate's and experiments/sweep's "bad input"
 
@@ -66,3 +67,55 @@ def will_run(script, what, binary=None, announce=True):
     if announce:
         print(f"{script}: runs {what} (a cell with a finished result is not run again)",
               file=sys.stderr, flush=True)
+
+
+CANNOT_WRITE = 5   # as ./simulate's: an output that cannot be written
+
+
+class PageWriteError(OSError):
+    """A page or figure that could not be written; `code` the exit it ends in (docs/cli.md,
+    "Output files": a loop of links or a missing folder 2, anything else 5)."""
+
+    def __init__(self, message, code):
+        super().__init__(message)
+        self.code = code
+
+
+def write(path, data):
+    """Writes a page or figure under the output rule (ncube.output_file): never onto a file
+    this script read (its results, its sweep files: ncube.results and ncube.sweep read them
+    through the gate), whatever link leads there. Under refusing_outputs, a refusal is one
+    line and exit 2 (onto an input, a loop of links, a missing folder) or 5."""
+    try:
+        return output_file.write(path, data)
+    except output_file.OutputIsInputError:
+        raise
+    except output_file.OutputPathError as e:
+        raise PageWriteError(str(e), REFUSED if "symbolic links" in str(e) else CANNOT_WRITE) \
+            from None
+    except FileNotFoundError:
+        raise PageWriteError(f"{path}: its folder does not exist", REFUSED) from None
+    except OSError as e:
+        raise PageWriteError(f"{path}: cannot be written: {e.strerror or e}", CANNOT_WRITE) \
+            from None
+
+
+def refusing_outputs(script):
+    """Decorates a page script's main(): an output onto one of its inputs ends it with one line
+    and exit 2 (nothing replaced), a page that cannot be written (page.write) with one line and
+    its code, as ./simulate's (docs/cli.md, "Output files"), instead of a traceback or a
+    replaced input."""
+    def decorate(main):
+        @functools.wraps(main)
+        def guarded(*args, **kwargs):
+            try:
+                return main(*args, **kwargs)
+            except output_file.OutputIsInputError as e:
+                # The check comes as each file is written: those written before it stay.
+                print(f"{script}: an output {e}; not written", file=sys.stderr, flush=True)
+                sys.exit(REFUSED)
+            except PageWriteError as e:
+                print(f"{script}: {e}", file=sys.stderr, flush=True)
+                sys.exit(e.code)
+        return guarded
+    return decorate

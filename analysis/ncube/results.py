@@ -3,6 +3,8 @@ whether a result file is a finished result of a given cell."""
 import json
 from pathlib import Path
 
+from . import input_file
+
 SCHEMA_VERSION = 2
 FINISHED = ("ok", "out_of_memory")   # out of memory is a finished cell too
 
@@ -16,11 +18,14 @@ MEASURES = {
 
 
 def read(path):
-    """The result file as a dict, None when it is missing or not JSON."""
+    """The result file as a dict, None when it is missing or not JSON. A file read counts as an
+    input of this process (ncube.input_file.protect): no page is written onto it."""
     try:
-        return json.loads(Path(path).read_text())
+        result = json.loads(Path(path).read_text())
     except (OSError, ValueError):
         return None
+    input_file.protect([path])
+    return result
 
 
 def measure(result, name):

@@ -66,4 +66,15 @@ std::string obj_material_problem(const std::string& path, const MtlNames& names)
   return "";
 }
 
+long obj_library_line(const std::string& path, long n) {
+  InputStream in(path, kModelFile);
+  std::string line, keyword, rest;
+  for (long number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || (line[0] != 'm' && line[0] != ' ' && line[0] != '\t')) continue;
+    split_line(line, keyword, rest);
+    if (keyword == "mtllib" && --n == 0) return number;
+  }
+  return 0;
+}
+
 }  // namespace ncube::models

@@ -24,4 +24,9 @@ MtlNames mtl_names(const std::vector<std::string>& files);
 // gives it a default).
 std::string obj_material_problem(const std::string& path, const MtlNames& names);
 
+// The line of the OBJ at `path` that holds its `n`th mtllib (1 for the first), 0 when it has
+// fewer: which line a message names when the model's material libraries are read too often
+// (recording_io.h, kBytesNamedAgain).
+long obj_library_line(const std::string& path, long n);
+
 }  // namespace ncube::models

@@ -7,18 +7,21 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
 #include "models/solution_mesh.h"
 #include "reference/area_form_factors.h"
 #include "reference/radiosity_solve.h"
+#include "reference/reference_budget.h"
 #include "reference/reference_file.h"
 #include "reference/solution_error.h"
 #include "render/rasterizer.h"
 #include "scene/patch_mesh.h"
 #include "scene/scene_loader.h"
 #include "tools/output_files.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
 
@@ -35,6 +38,35 @@ std::string resolve_scene(const std::string& name) {
     if (fs::exists(in_scenes, error)) return in_scenes.string();
   }
   return name;
+}
+
+// The memory and the rays of the run, worked out before anything is taken (issue 37, item 4;
+// docs/accuracy.md, "The command"): more memory than the host has is exit 6, more rays than
+// --max-rays exit 2, each in one line; else the estimate is printed first.
+void check_budget(const Scene& fine, int side, int threads, double max_rays, bool quiet) {
+  const long long pairs = reference::pairs_of(fine);
+  const double bytes = double(pairs) * reference::kBytesPerPair +
+                       double(fine.elements.size()) * side * side * reference::kBytesPerPoint;
+  const double available = reference::host_memory_available();
+  if (bytes > available)
+    throw HostMemoryError("the form factors of " + std::to_string(fine.elements.size()) +
+                          " parts (" + std::to_string(pairs) + " pairs) need about " +
+                          reference::budget_bytes(bytes) + ", the host has " +
+                          reference::budget_bytes(available) +
+                          " available: a smaller --refine or scene");
+  const reference::ReferenceBudget budget = reference::reference_budget(fine, side);
+  const int cores = threads > 0 ? threads : std::max(1, int(std::thread::hardware_concurrency()));
+  const std::string estimate =
+      std::to_string(budget.parts) + " parts, " + std::to_string(budget.pairs) + " pairs (" +
+      std::to_string(budget.near_pairs) + " near): at most " + reference::budget_rays(budget.rays) +
+      " rays over K and K/4, about " + reference::budget_bytes(budget.bytes) + " of memory and " +
+      reference::budget_time(budget.host_seconds / cores) + " on " + std::to_string(cores) +
+      (cores == 1 ? " thread" : " threads");
+  if (budget.rays > max_rays)
+    throw InputError("--max-rays " + reference::budget_rays(max_rays) + ": the run would take " +
+                     estimate + "; a smaller --samples or --refine, or a larger --max-rays");
+  if (!quiet) std::printf("estimate: %s\n", estimate.c_str());
+  std::fflush(stdout);
 }
 
 int run(int argc, char** argv) {
@@ -62,6 +94,12 @@ int run(int argc, char** argv) {
   app.add_option("--threads", threads, "host threads (0: every core); the result does not depend on it")
       ->capture_default_str();
   app.add_flag("--quiet", quiet, "print nothing but errors");
+  // The run's budget (issue 37, item 4; reference_budget.h): stated before it starts.
+  double max_rays = reference::kDefaultMaxRays;
+  app.add_option("--max-rays", max_rays,
+                 "refuse (exit 2) a run whose rays, at most, exceed this (1 to 1e15; the "
+                 "default 1e11 is about 4.5 hours of one thread)")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -86,17 +124,11 @@ int run(int argc, char** argv) {
     throw InputError("--mesh " + mesh_path + ": only PLY is written (name it .ply)");
   if (refine < 1 || refine > 4)
     throw InputError("--refine " + std::to_string(refine) + ": must be 1, 2, 3 or 4");
+  if (!(max_rays >= 1 && max_rays <= reference::kLargestMaxRays))
+    throw InputError("--max-rays " + reference::budget_rays(max_rays) +
+                     ": must be from 1 to 1e15");
   const std::string scene_file = resolve_scene(scene_name);
   const Scene scene = load_scene(scene_file);
-  OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
-
-  const auto start = std::chrono::steady_clock::now();
-  reference::ReferenceRun result;
-  result.scene_file = fs::path(scene_file).filename().string();
-  result.scene_sha256 = input_sha256(scene_file, kSceneFile);
-  result.samples = samples;
-  result.check_samples = samples / 4;
-  result.refine = refine;
   // The scene solved: every patch's grid `refine` times finer. Its parts tile each element
   // exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's element
   // order: part (a, b) of element (i, j) is element (refine i + a, refine j + b) of the fine grid.
@@ -106,6 +138,16 @@ int run(int argc, char** argv) {
     patch.nv *= refine;
   }
   fine.build_elements();
+  check_budget(fine, side, threads, max_rays, quiet);
+  OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
+
+  const auto start = std::chrono::steady_clock::now();
+  reference::ReferenceRun result;
+  result.scene_file = fs::path(scene_file).filename().string();
+  result.scene_sha256 = input_sha256(scene_file, kSceneFile);
+  result.samples = samples;
+  result.check_samples = samples / 4;
+  result.refine = refine;
   const auto solve = [&](int point_side, reference::FormFactorStats& stats,
                          reference::SolveReport* report) {
     reference::FormFactorOptions options;
@@ -172,19 +214,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const ncube::InputError& e) {
-    std::cerr << "reference_solution: " << e.what() << "\n";
-    return ncube::kExitBadInput;
-  } catch (const ncube::OutputError& e) {
-    std::cerr << "reference_solution: " << e.what() << " (no output file was written)\n";
-    return ncube::kExitCannotWrite;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "reference_solution: the host ran out of memory (no output file was written)\n";
-    return ncube::kExitHostOutOfMemory;
-  } catch (const std::exception& e) {
-    std::cerr << "reference_solution: internal error: " << e.what() << "\n";
-    return ncube::kExitInternalError;
-  }
+  return ncube::run_tool("reference_solution", [&] { return run(argc, argv); });
 }

@@ -35,6 +35,7 @@
 #include "scene/scene.h"
 #include "tools/output_files.h"
 #include "tools/simulate_options.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
 #include "util/version.h"
@@ -312,19 +313,5 @@ int machine_probe(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return machine_probe(argc, argv);
-  } catch (const ncube::InputError& e) {
-    std::cerr << "machine_probe: " << e.what() << "\n";
-    return ncube::kExitBadInput;
-  } catch (const ncube::OutputError& e) {
-    std::cerr << "machine_probe: " << e.what() << " (no output file was written)\n";
-    return ncube::kExitCannotWrite;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "machine_probe: the host ran out of memory (no output file was written)\n";
-    return ncube::kExitHostOutOfMemory;
-  } catch (const std::exception& e) {
-    std::cerr << "machine_probe: internal error: " << e.what() << "\n";
-    return ncube::kExitInternalError;
-  }
+  return ncube::run_tool("machine_probe", [&] { return machine_probe(argc, argv); });
 }

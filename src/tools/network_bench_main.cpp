@@ -21,6 +21,7 @@
 #include "tools/network_routes.h"
 #include "tools/output_files.h"
 #include "tools/simulate_options.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 #include "util/version.h"
 
@@ -129,22 +130,6 @@ int network_bench(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return network_bench(argc, argv);
-  } catch (const ncube::InputError& e) {
-    std::cerr << "network_bench: " << e.what() << "\n";
-    return ncube::kExitBadInput;
-  } catch (const ncube::OutputError& e) {
-    std::cerr << "network_bench: " << e.what() << " (no output file was written)\n";
-    return ncube::kExitCannotWrite;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "network_bench: the host ran out of memory (no output file was written)\n";
-    return ncube::kExitHostOutOfMemory;
-  } catch (const std::runtime_error& e) {
-    std::cerr << "network_bench: the simulation failed: " << e.what() << "\n";
-    return ncube::kExitSimulationFailed;
-  } catch (const std::exception& e) {
-    std::cerr << "network_bench: internal error: " << e.what() << "\n";
-    return ncube::kExitInternalError;
-  }
+  return ncube::run_tool("network_bench", [&] { return network_bench(argc, argv); },
+                         ncube::OtherRuntimeErrors::kSimulationFailed);
 }

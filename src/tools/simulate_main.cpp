@@ -31,6 +31,7 @@
 #include "tools/output_files.h"
 #include "tools/progress.h"
 #include "tools/simulate_options.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 
 namespace {
@@ -334,22 +335,5 @@ int simulate(int argc, char** argv) {
 int main(int argc, char** argv) {
   // Every exception ends in one message and its own exit code (docs/cli.md); the output
   // files are removed as the stack unwinds.
-  try {
-    return simulate(argc, argv);
-  } catch (const ncube::InputError& e) {
-    std::cerr << "simulate: " << e.what() << "\n";
-    return ncube::kExitBadInput;
-  } catch (const ncube::OutputError& e) {
-    std::cerr << "simulate: " << e.what() << " (no output file was written)\n";
-    return ncube::kExitCannotWrite;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "simulate: the host ran out of memory (no output file was written)\n";
-    return ncube::kExitHostOutOfMemory;
-  } catch (const std::exception& e) {
-    std::cerr << "simulate: internal error: " << e.what() << "\n";
-    return ncube::kExitInternalError;
-  } catch (...) {
-    std::cerr << "simulate: internal error: an unknown exception\n";
-    return ncube::kExitInternalError;
-  }
+  return ncube::run_tool("simulate", [&] { return simulate(argc, argv); });
 }

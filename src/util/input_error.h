@@ -20,6 +20,13 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The host running the tool has not the memory a run needs, known before it is taken (an
+// estimate against what the host has): exit code 6 with this message, as std::bad_alloc.
+class HostMemoryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Exit codes of the command-line tools (documented in docs/cli.md).
 constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;

@@ -30,6 +30,8 @@ inline constexpr InputKind kPlatformFile{"platform file", 1 * kMiB};
 inline constexpr InputKind kSimgridPlatformFile{"SimGrid platform file", 64 * kMiB};
 inline constexpr InputKind kCostModelFile{"cost model", 1 * kMiB};
 inline constexpr InputKind kActivityRecord{"activity record", std::size_t(16) << 30};
+// A file of the kernel's (/proc/meminfo): what the host has, for a tool's estimate.
+inline constexpr InputKind kKernelFile{"kernel file", 1 * kMiB};
 // A result file read back by a bench tool (build/embree_floor).
 inline constexpr InputKind kResultFile{"result file", 256 * kMiB};
 

@@ -100,7 +100,33 @@ SECRETS = {
 }
 
 
+# The files accuracy.py reads, made once per run of the suite (prepare_tool_files): the room's
+# solution as ./simulate --mesh writes it and its reference from build/reference_solution.
+_TOOL_FILES = {}
+_TOOL_FILES_LOCK = threading.Lock()
+
+
+def prepare_tool_files(simulate, root):
+    with _TOOL_FILES_LOCK:
+        if _TOOL_FILES:
+            return
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            folder = Path(folder)
+            (folder / "scene.json").write_bytes(json.dumps(ROOM_SCENE).encode())
+            subprocess.run([str(simulate), "scene.json", "--quiet", "--mesh", "solution.ply"],
+                           cwd=folder, check=True, capture_output=True)
+            subprocess.run([str(Path(simulate).parent / "reference_solution"), "scene.json",
+                            "--samples", "4", "--refine", "1", "--threads", "1", "--quiet",
+                            "--out", "reference.json"], cwd=folder, check=True,
+                           capture_output=True)
+            _TOOL_FILES["solution"] = (folder / "solution.ply").read_bytes()
+            _TOOL_FILES["reference"] = (folder / "reference.json").read_bytes()
+
+
 def good_content(fmt, root):
+    if fmt in _TOOL_FILES:
+        return _TOOL_FILES[fmt]
     return {
         "scene": json.dumps(ROOM_SCENE).encode(),
         "obj": OBJ.format(mtl="lamp.mtl").encode(),
@@ -136,6 +162,8 @@ def base_run(name, folder, root, simulate, refs=None, outputs=True):
     `refs` changes how a model names its files ({"mtl": ..., "buffer": ..., "image": ...});
     `outputs` adds the result file, and for a model the exported scene, so that
     a run that read what it must not is seen in what it wrote."""
+    if name in TOOL_RUNS:
+        return tool_run(name, folder, root, simulate, outputs)
     refs = {"mtl": "lamp.mtl", "buffer": "mesh.bin", "image": "tex.png", **(refs or {})}
     files = {"platform.json": good_content("platform", root),
              "cost.json": good_content("cost", root)}
@@ -183,6 +211,54 @@ def base_run(name, folder, root, simulate, refs=None, outputs=True):
         argv += ["--json", "out.json"]
         if model.startswith("model."):
             argv += ["--export-scene", "out.scene.json"]
+    return argv, env
+
+
+TOOL_RUNS = {"bench", "bench-xml", "reference", "probe", "accuracy", "sweep-slurm"}
+
+
+def tool_run(name, folder, root, simulate, outputs):
+    """The base run `name` of another tool (threat_model.TOOL_INPUTS, TOOL_OUTPUTS): its files
+    written into `folder`; returns (argv, env additions). `outputs` adds its usual output."""
+    build = Path(simulate).parent
+    files, env = {}, {}
+    if name in ("bench", "bench-xml"):
+        platform = "platform.json" if name == "bench" else "platform.xml"
+        files = {platform: good_content("platform" if name == "bench" else "xml", root),
+                 "cost.json": good_content("cost", root)}
+        argv = [str(build / "network_bench"), "--platform", platform, "--cost-model", "cost.json",
+                "--max-bytes", "64", "--round-trips", "1", "--stream-messages", "1", "--quiet"]
+        argv += ["--json", "out.json"] if outputs else []
+    elif name == "reference":
+        files = {"scene.json": good_content("scene", root)}
+        argv = [str(build / "reference_solution"), "scene.json", "--samples", "4", "--refine", "1",
+                "--threads", "1", "--quiet"]
+        argv += ["--out", "out.json"] if outputs else []
+    elif name == "probe":
+        files = {"platform.xml": (root / "platforms" / "machines" / "cluster-2024.xml").read_bytes(),
+                 "cost.json": good_content("cost", root)}
+        argv = [str(build / "machine_probe"), "--network", "platform.xml", "--cost-model",
+                "cost.json", "--repeats", "3"]
+        argv += ["--out", "out.xml"] if outputs else []
+    elif name == "accuracy":
+        prepare_tool_files(simulate, root)
+        files = {"solution.ply": good_content("solution", root),
+                 "reference.json": good_content("reference", root)}
+        argv = ["/usr/bin/python3", str(root / "analysis" / "ncube" / "accuracy.py"),
+                "solution.ply", "reference.json"]
+        argv += ["--json", "out.json"] if outputs else []
+    elif name == "sweep-slurm":
+        files = {"scene.json": good_content("scene", root),
+                 "platform.json": good_content("platform", root),
+                 "cost.json": good_content("cost", root),
+                 "sweep.json": good_content("sweep", root)}
+        env.update(NCUBE_SIMULATE=str(simulate), NCUBE_ROOT=str(root))
+        argv = ["/usr/bin/python3", str(root / "experiments" / "sweep"), "sweep.json", "--check",
+                "--slurm"]
+    else:
+        raise ValueError(name)
+    for path, content in files.items():
+        (folder / path).write_bytes(content)
     return argv, env
 
 
@@ -260,7 +336,7 @@ def make_input(cell, folder, outside, root, simulate):
     elif kind == "huge":
         with open(target, "wb") as f:
             f.write(good)
-            f.truncate(tm.HUGE_BYTES)
+            f.truncate(tm.HUGE_BYTES_OF.get(surface.fmt, tm.HUGE_BYTES))
     else:
         raise ValueError(kind)
     return argv, env, names
@@ -270,6 +346,9 @@ def make_output(cell, folder, root, simulate):
     """The case folder of an output cell; returns (argv, env, the path named, what it must be
     afterwards, the file that must hold the output) or None (devices without root)."""
     output, kind = cell.surface, cell.kind
+    if output.run:   # another tool's output (threat_model.TOOL_OUTPUTS)
+        argv, env = base_run(output.run, folder, root, simulate, outputs=False)
+        return _output_path(cell, folder, argv, env)
     base = "scene"
     if output.model_only or kind in ("is model.obj", "is lamp.mtl"):
         base = "obj"
@@ -284,6 +363,12 @@ def make_output(cell, folder, root, simulate):
         (folder / "platform.xml").write_bytes(good_content("xml", root))
         if base == "obj":
             argv[argv.index("platform.json")] = "platform.xml"
+    return _output_path(cell, folder, argv, env)
+
+
+def _output_path(cell, folder, argv, env):
+    """Makes the output path of `cell` in `folder`; adds it to the base run's argv and env."""
+    output, kind = cell.surface, cell.kind
     name = "out" + output.suffix
     path, after, holder = folder / name, tm.OUTPUT_KINDS.get(kind, (None, None, False))[1], None
     if kind.startswith("is "):

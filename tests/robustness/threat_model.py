@@ -31,6 +31,8 @@ from dataclasses import dataclass, field
 # Larger than every per-kind size limit (scene and model files: 256 MiB, platform and cost
 # model: 1 MiB); made sparse, so it costs no disk.
 HUGE_BYTES = (256 << 20) + 4096
+# Formats whose limit is larger: over it (analysis/ncube/accuracy.py's MESH_BYTES, REFERENCE_BYTES).
+HUGE_BYTES_OF = {"solution": (1 << 30) + 4096, "reference": (512 << 20) + 4096}
 # Peak memory of a run that reads an input (the tiny room: about 50 MiB as a scene, 70 MiB as
 # a model; the sweep tool less): reading a huge or endless input whole goes far past it.
 MAX_RSS_MB = 200
@@ -82,6 +84,29 @@ INPUTS = [
           read=False),
 ]
 
+# The other programs and scripts (issue 37, item 6), each with the files it reads; a new tool
+# or input joins by being listed here and given its base run in threat_cases.base_run. Their
+# path kinds are a representative subset (TOOL_INPUT_KINDS): every tool opens through the one
+# gate (src/util/input_file.h, analysis/ncube/input_file.py), which the full set above holds
+# for ./simulate and the sweep tool.
+TOOL_INPUTS = [
+    Input("network_bench --platform JSON", "platform.json", "platform", "bench"),
+    Input("network_bench --platform XML", "platform.xml", "xml", "bench-xml"),
+    Input("network_bench --cost-model", "cost.json", "cost", "bench"),
+    Input("reference_solution scene", "scene.json", "scene", "reference"),
+    Input("machine_probe --network", "platform.xml", "xml", "probe"),
+    Input("machine_probe --cost-model", "cost.json", "cost", "probe"),
+    Input("accuracy.py solution", "solution.ply", "solution", "accuracy"),
+    Input("accuracy.py reference", "reference.json", "reference", "accuracy"),
+    Input("sweep --slurm sweep file", "sweep.json", "sweep", "sweep-slurm"),
+]
+TOOL_INPUT_KINDS = ["regular", "link", "dangling link", "link loop", "fifo", "folder",
+                    "endless via link", "huge"]
+# machine_probe times its kernels (about 2 s a run that gets that far): fewer kinds, so that
+# robustness_test stays under about 90 s on the loaded machine.
+PROBE_INPUT_KINDS = ["regular", "dangling link", "fifo", "huge"]
+PROBE_OUTPUT_KINDS = ["new", "link", "fifo", "folder", "missing folder"]
+
 # Every kind of path an input can be. Each is made in the case folder (devices with mknod
 # there, never the machine's /dev). "reference" kinds change how the model names the file.
 INPUT_KINDS = [
@@ -95,6 +120,8 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
 
 
 def input_kinds(surface):
+    if surface in TOOL_INPUTS:
+        return PROBE_INPUT_KINDS if surface.run == "probe" else TOOL_INPUT_KINDS
     kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
     if surface.absolute:   # only where the model's own path matters
         kinds = ["regular", "link", *MODEL_ONLY_KINDS]
@@ -135,6 +162,7 @@ NESTING = {
     "platform": lambda good: _nested_json(100000),
     "cost": lambda good: _nested_json(100000),
     "sweep": lambda good: _nested_json(100000),
+    "reference": lambda good: _nested_json(100000),
     # A glTF that is valid but for 100,000 levels of `extras` (Assimp recurses on them).
     "gltf": lambda good: good.replace(b'"asset":{', b'"asset":{"extras":' + b'{"a":' * 100000 +
                                       b'1' + b'}' * 100000 + b',', 1),
@@ -157,6 +185,8 @@ CONTENT_CLASSES = {
     "xml": ["empty", "garbage", "truncated", "deep nesting"],
     "cost": ["empty", "garbage", "truncated", "deep nesting"],
     "sweep": ["empty", "garbage", "truncated", "deep nesting"],
+    "solution": ["empty", "garbage", "truncated"],    # a solution mesh (PLY) for accuracy.py
+    "reference": ["empty", "garbage", "truncated", "deep nesting"],   # reference_solution's file
 }
 
 
@@ -172,6 +202,8 @@ class Output:
     args: tuple = ()        # the command-line words, PATH standing for the path
     env: tuple = ()         # (variable, value) pairs, PATH standing for the path
     content: bool = True    # a run always writes bytes to it (a log may stay empty)
+    run: str = ""           # the base run (threat_cases.base_run) of another tool; "": ./simulate
+    inputs: tuple = ()      # another tool's inputs an output may not be (OUTPUT_IS_INPUT's)
 
 
 SUFFIXES = {"--mesh": ".ply", "--image": ".png"}
@@ -183,6 +215,38 @@ EXTRA_OUTPUTS = [
     Output("--cfg tracing/filename", ".paje", False,
            args=("--cfg=tracing:yes", "--cfg=tracing/filename:PATH")),
 ]
+
+
+# The other tools' outputs (issue 37, item 6), under the same rule: args with PATH for the
+# path, `inputs` the files of its base run it must refuse to write onto.
+TOOL_OUTPUTS = [
+    Output("network_bench --json", ".json", False, ("--json", "PATH"), run="bench",
+           inputs=("platform.json", "cost.json")),
+    Output("reference_solution --out", ".json", False, ("--out", "PATH"), run="reference",
+           inputs=("scene.json",)),
+    Output("reference_solution --mesh", ".ply", False, ("--out", "out.json", "--mesh", "PATH"),
+           run="reference", inputs=("scene.json",)),
+    Output("machine_probe --out", ".xml", False, ("--out", "PATH"), run="probe",
+           inputs=("platform.xml", "cost.json")),
+    Output("accuracy.py --json", ".json", False, ("--json", "PATH"), run="accuracy",
+           inputs=("solution.ply", "reference.json")),
+]
+# The page scripts (analysis/*.py with a main): each either runs under ncube.page's output rule
+# (page.refusing_outputs: an output onto an input is one line and exit 2), which
+# tests/page_outputs_test.sh holds for report.py end to end and checks every script listed
+# "held" declares, or is listed open with why. They run simulations or need finished results,
+# so they get no cells here; a new page script joins by being listed (the test fails on one
+# that is not).
+PAGE_SCRIPTS = {
+    "report.py": "held", "predictions.py": "held", "adaptive.py": "held",
+    "patch_order.py": "held", "memory_sensitivity.py": "held", "calibrate.py": "held",
+    # Written through output_file (a page onto an input raises OutputIsInputError: refused,
+    # but as a traceback, exit 1); not h37's files (issue 37, item 5 left to their owners).
+    "claims.py": "open", "claims_schemes.py": "open", "machines.py": "open", "unknowns.py": "open",
+}
+
+TOOL_OUTPUT_KINDS = ["new", "regular", "link", "dangling link", "link loop", "fifo",
+                     "full device", "folder", "socket", "missing folder"]
 
 
 def outputs(simulate):
@@ -246,12 +310,20 @@ class Cell:
 
 def cells(simulate):
     found = []
-    for surface in INPUTS:
+    for surface in INPUTS + TOOL_INPUTS:
         for kind in input_kinds(surface):
             found.append(Cell(f"read {surface.id} / {kind}", "read", surface, kind,
                               input_expect(surface, kind)))
-        for content in CONTENT_CLASSES[surface.fmt] if not surface.absolute else []:
+        contents = CONTENT_CLASSES[surface.fmt] if not surface.absolute else []
+        for content in contents if surface.run != "probe" else ["garbage", "deep nesting"]:
             found.append(Cell(f"content {surface.id} / {content}", "content", surface, content,
+                              {"error"}))
+    for output in TOOL_OUTPUTS:
+        for kind in PROBE_OUTPUT_KINDS if output.run == "probe" else TOOL_OUTPUT_KINDS:
+            found.append(Cell(f"write {output.id} / {kind}", "write", output, kind,
+                              {OUTPUT_KINDS[kind][0]}))
+        for name in output.inputs:
+            found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
     for output in outputs(simulate):
         for kind, (outcome, _, _) in OUTPUT_KINDS.items():
