@@ -85,6 +85,7 @@ int run_structure(const Scene& scene, const std::string& scene_file, reference::
   run.self_patch_rms = agreement.patch_rms;
   run.self_patch_max = agreement.patch_max;
   run.self_worst_patch = agreement.worst_patch;
+  run.check_radiosity = check.radiosity;
   run.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outputs.write("--out", reference::structure_text(scene, run));
   if (!mesh_path.empty()) outputs.write("--mesh", mesh_text(scene, run.solve.radiosity));

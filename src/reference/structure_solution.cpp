@@ -20,6 +20,8 @@ namespace ncube::reference {
 namespace {
 
 constexpr int kPointsPerCellSide = 2;  // 2 x 2 jittered visibility points per cell
+constexpr double kCoplanar = 1e-9;     // of the scene's diagonal: a point this close to a
+                                       // parallel shooter's plane lies in it
 
 // cos_x cos_y / r^2 times the point's weight: the kernel's relative weight of a point y of the
 // shooter (normal ny) seen from x (normal nx); 0 where either faces away.
@@ -71,6 +73,7 @@ StructureRows structure_form_factors(const Scene& shooters, const StructureOptio
   const int n = int(shooters.elements.size());
   const int patches = int(shooters.patches.size());
   const RayVisibility rays(shooters);
+  const double diagonal = scene_bounds(shooters).diagonal();
   std::vector<std::vector<Polygon>> cell_polygons(static_cast<std::size_t>(patches));
   for (int p = 0; p < patches; ++p)
     for (int j = 0; j < cells; ++j)
@@ -90,7 +93,11 @@ StructureRows structure_form_factors(const Scene& shooters, const StructureOptio
       const Patch& shooter = shooters.patches[std::size_t(p)];
       // One-sided: the shooter emits from its front only; and something of it must lie in
       // front of the receiver's tangent plane.
-      if (glm::dot(shooter.normal, x - shooter.polygon[0]) <= 0.0) continue;
+      const double height = glm::dot(shooter.normal, x - shooter.polygon[0]);
+      if (height <= 0.0) continue;
+      // In the shooter's plane (an element's neighbour on its patch when every element is a
+      // patch, a decal on a wall): F = 0; rounding must not make it a pair.
+      if (height <= kCoplanar * diagonal && glm::dot(shooter.normal, nx) > 1.0 - 1e-12) continue;
       if (!some_corner_in_front(shooter.polygon, x, nx)) continue;
       ++pair_total;
       double factor = 0.0;
@@ -195,6 +202,11 @@ std::string structure_text(const Scene& scene, const StructureRun& run) {
   text.erase(text.rfind('}'));
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
   text += ",\n \"patch_luminance\": " + nlohmann::json(patch_luminances(scene, run.solve.radiosity)).dump();
+  // The K/4 solution's element luminances: its self-agreement under any measure
+  // (analysis/ncube/error_parts.py).
+  std::vector<double> check(run.check_radiosity.size());
+  for (std::size_t e = 0; e < check.size(); ++e) check[e] = luminance(run.check_radiosity[e]);
+  text += ",\n \"check_luminance\": " + nlohmann::json(check).dump();
   text += ",\n \"elements\": [";
   for (std::size_t e = 0; e < scene.elements.size(); ++e) {
     const Rgb& b = run.solve.radiosity[e];

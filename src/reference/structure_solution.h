@@ -88,6 +88,7 @@ struct StructureRun {
   StructureSolve solve;
   double self_element_rms = 0.0, self_patch_rms = 0.0, self_patch_max = 0.0;
   int self_worst_patch = -1;
+  std::vector<Rgb> check_radiosity;  // the K/4 solution, each element's luminance in the file
   double host_seconds = 0.0;
 };
 
