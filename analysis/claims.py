@@ -109,11 +109,12 @@ class SceneTruths:
         self.reference = error_parts.reference_solution(reference) if reference else None
         self.cycles = load("cycles", folder / "cycles" / f"{scene}.json")
         e = self.emission
-        # (b): against the exact structure, widened by its own self-agreement.
+        # (b): against the exact structure, widened by its own error (error_parts.own_error).
         own_element, own_patch = error_parts.self_agreement(self.structure_data, e)
-        self.b_element = error_parts.element_truth(self.structure, e, widen=own_element)
+        self.b_element = error_parts.element_truth(self.structure, e,
+                                                   widen=error_parts.own_error(own_element))
         self.b_patch = error_parts.patch_truth(self.structure.patch_y, self.structure.patch_area, e,
-                                               widen=own_patch)
+                                               widen=error_parts.own_error(own_patch))
         self.structure_self = (own_element, own_patch)
         # (a) per patch: Cycles, its standard error drawn in every bootstrap draw.
         self.a_patch = None
@@ -125,7 +126,7 @@ class SceneTruths:
         self.a_element = None
         self.reference_patch_error = None
         if self.reference is not None:
-            widen = reference["self_agreement"]["element_rms"]
+            widen = error_parts.own_error(reference["self_agreement"]["element_rms"])
             if self.a_patch is not None:
                 self.reference_patch_error = error_parts.interval(self.reference.patch_y, self.a_patch)
                 widen += self.reference_patch_error[0]

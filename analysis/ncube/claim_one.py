@@ -37,10 +37,13 @@ def direction(low, high):
 
 def figure(value, low, high, percent=False):
     """A value with its interval, as every table and sentence writes it."""
+    top = "∞" if high == float("inf") else (f"{100 * high:.2f}" if percent else f"{high:.2f}")
     if percent:
-        return f"{100 * value:.2f} % [{100 * low:.2f}, {100 * high:.2f}]"
-    return f"{value:.2f} [{low:.2f}, {high:.2f}]"
+        return f"{100 * value:.2f} % [{100 * low:.2f}, {top}]"
+    return f"{value:.2f} [{low:.2f}, {top}]"
 
+
+SAYS = {"holds": "holds", "undecided": "is undecided", "does not hold": "does not hold"}
 
 PLACEMENTS = {"centre": "one hemicube at the shooter's centre",
               "elements": "one hemicube at each shooter element's centre"}
@@ -79,10 +82,11 @@ def claim_sentence(decisions, threshold=THRESHOLD):
                                            if d["scene"] == scene and d["measure"] == measure))
                 for scene in scenes for measure in ("element", "patch")
                 if any(d["scene"] == scene and d["measure"] == measure for d in these))
-            groups.append(f"{word} on {where} (intervals' low ends "
+            highs = [d["high"] for d in these]
+            top = "∞" if max(highs) == float("inf") else f"{max(highs):.2f}"
+            groups.append(f"{SAYS[word]} on {where} (intervals' low ends "
                           f"{min(d['low'] for d in these):.2f} to {max(d['low'] for d in these):.2f}, "
-                          f"high ends {min(d['high'] for d in these):.2f} to "
-                          f"{max(d['high'] for d in these):.2f})")
+                          f"high ends {min(highs):.2f} to {top})")
         parts.append(f"against {PLACEMENTS[placement]}, it " + "; it ".join(groups))
     return (f"{head} (\"much\": the hemicube's form-factor error at least {threshold:g} times "
             f"the paper's method's, the ratio and its 95 % interval's low end both at least "
