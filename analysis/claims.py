@@ -438,8 +438,9 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
             "give the same ratio?), not over repeated runs: both methods are deterministic. With "
             "17 patches (the Cornell box) the intervals are wide; a patch that dominates the "
             "error (a small face near a large shooter) moves the ratio most.",
-            "* (b) is measured against an exact structure computed with finite samples (its "
-            "self-agreement, K/4 against K, widens every interval); the structure's element "
+            "* (b) is measured against an exact structure computed with finite samples (half its "
+            "self-agreement, K/4 against K, widens every interval: an estimate of its error, not "
+            "a bound); the structure's element "
             "centres and the hemicube's and rays' visibility tests share the scene's geometry, "
             "not code.",
             "* The hemicube here blocks with back faces and evaluates the shooter's hemicube "
@@ -455,11 +456,17 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
             "* The paper's method is measured at its largest M only (M = 64 where run); its "
             "error at smaller M is in the tables below, not in the verdict.",
             "* The total error (a) per element rests on the reference, whose own error is "
-            "estimated (its self-agreement plus its patch error against Cycles), not bounded; "
+            "estimated (half its self-agreement plus its patch error against Cycles), not bounded; "
             "per patch it rests on Cycles, whose one measured bias (−0.2 % at a concave edge, "
             "docs/accuracy.md) is below these errors.",
-            "* Three scenes (cornell-box, scene0, scene1 where its cells ran): interiors with "
-            "axis-aligned quads; scene2 and larger are not measured (docs/accuracy.md).", ""]
+            "* The paper's method runs under the paper's program (receivers), the hemicube under "
+            "shooters: both to the same convergence rule (largest unshot power below 1e-4 of the "
+            "emitted), which leaves each a little unshot power, not the same.",
+            "* Scenes: " + ", ".join(f"{scene} ({len(t.structure.patch_y)} patches, "
+                                      f"{len(t.structure.y)} elements)" for scene, t in sorted(truths.items()))
+            + "; the total error per element only where a reference is committed ("
+            + ", ".join(scene for scene, t in sorted(truths.items()) if t.reference is not None)
+            + "); scene2 and larger are not measured (docs/accuracy.md).", ""]
     out += parts_section(rows)
     out += structure_section(truths)
     out += ["## Error against simulated time to convergence", "",
