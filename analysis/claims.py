@@ -260,6 +260,13 @@ def schemes_section(results):
     return claims_schemes.section(results)
 
 
+def series_colour(row):
+    """One colour per kind of series on every scene's plots."""
+    if row["form_factors"] == "hemicube":
+        return "C0" if row["placement"] == "centre" else "C1"
+    return "C3" if row["V"] > 0 else "C2"
+
+
 def plot(rows, path):
     import matplotlib.pyplot as plt
     scenes = sorted({r["scene"] for r in rows})
@@ -281,7 +288,8 @@ def plot(rows, path):
                 ys = [r[measure][0] for r in points]
                 errors = [[r[measure][0] - r[measure][1] for r in points],
                           [r[measure][2] - r[measure][0] for r in points]]
-                ax.errorbar(xs, ys, yerr=errors, marker="o", capsize=3, label=points[0]["label"])
+                ax.errorbar(xs, ys, yerr=errors, marker="o", capsize=3, label=points[0]["label"],
+                            color=series_colour(points[0]))
                 for r in points:
                     short = "M" if r["knob"] == "samples" else "N"
                     ax.annotate(f"{short}={r['value']}", (r["simulated_seconds"], r[measure][0]),
