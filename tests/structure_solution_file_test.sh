@@ -33,6 +33,10 @@ rc=$?
 "$solver" cornell-box --structure patches --samples 64 --threads 1 --quiet --out "$scratch/one.json" &&
   "$solver" cornell-box --structure patches --samples 64 --threads 2 --quiet --out "$scratch/two.json" &&
   same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
+# --mesh is the same solution in ./simulate's mesh layout: no error against the file.
+"$solver" cornell-box --structure patches --samples 16 --quiet --out "$scratch/m.json" --mesh "$scratch/m.ply" &&
+  measured=$(/usr/bin/python3 "$root/analysis/ncube/accuracy.py" "$scratch/m.ply" "$scratch/m.json")
+[[ ${measured:-} == "element RMS 0  patch RMS 0  largest patch error 0 "* ]] || fail "--mesh: ${measured:-none}"
 
 /usr/bin/python3 - "$scratch/furnace.json" <<'PY'
 import json, sys
