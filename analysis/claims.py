@@ -429,8 +429,9 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
     out += ["## The first claim: ray tracing against the hemicube", "",
             "*Ray-traced form factors are much more accurate than the hemicube method* "
             "(section 6). **Quantity**: the form-factor error (b), each method's error against "
-            "the exact solution of the same structure, so that what both share (receivers at "
-            "element centres, a patch shooting its elements' mean) is not counted; the ratio "
+            "the exact solution of the same structure, so that the structure's own error "
+            "(receivers at element centres, a patch shooting its elements' mean) is not counted "
+            "(for the hemicube in part: see the threats); the ratio "
             "hemicube / paper's method (at its largest M) per element and per patch, with its "
             "paired 95 % interval. **Threshold** (fixed in `docs/accuracy.md` before the runs): "
             f"\"much\" is a ratio of at least {claim_one.THRESHOLD:g} with the interval's low "
