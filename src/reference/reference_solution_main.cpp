@@ -17,6 +17,7 @@
 #include "reference/reference_budget.h"
 #include "reference/reference_file.h"
 #include "reference/solution_error.h"
+#include "reference/structure_solution.h"
 #include "render/rasterizer.h"
 #include "scene/patch_mesh.h"
 #include "scene/scene_loader.h"
@@ -69,6 +70,69 @@ void check_budget(const Scene& fine, int side, int threads, double max_rays, boo
   std::fflush(stdout);
 }
 
+
+// The solution as ./simulate's --mesh writes one: the scene's own grid, patch by patch in
+// scene order (Scene::build_elements: row j, then column i), as a run without --subdivide
+// hands its solution to the mesh.
+std::string mesh_text(const Scene& scene, const std::vector<Rgb>& radiosity) {
+  std::vector<PatchSolution> solution;
+  for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+    const Patch& patch = scene.patches[p];
+    PatchSolution& s = solution.emplace_back();
+    s.patch = int(p);
+    for (int j = 0; j < patch.nv; ++j)
+      for (int i = 0; i < patch.nu; ++i) {
+        s.cells.push_back({0, i, j});
+        s.radiosity.push_back(radiosity[std::size_t(patch.first_element + j * patch.nu + i)]);
+      }
+  }
+  return solution_mesh_ply(scene, solution, solution_exposure(scene, scene.camera, solution, 800, 600));
+}
+
+// ---- The exact structure (issue 38 item 3; docs/accuracy.md, "The error taken apart"):
+// --structure patches|elements solves ./simulate's own structure with exact form factors
+// (structure_solution.h) instead of the reference. Its own block: the options above are
+// shared, --refine has no meaning here (the structure is the scene's own mesh).
+int run_structure(const Scene& scene, const std::string& scene_file, reference::Structure structure,
+                  int samples, int threads, bool quiet, const std::string& mesh_path,
+                  OutputFiles& outputs) {
+  const auto start = std::chrono::steady_clock::now();
+  reference::StructureRun run;
+  run.scene_file = fs::path(scene_file).filename().string();
+  run.scene_sha256 = input_sha256(scene_file, kSceneFile);
+  run.structure = structure;
+  run.samples = samples;
+  run.check_samples = samples / 4;
+  const Scene shooters = reference::shooter_scene(scene, structure);
+  const auto solve = [&](int points, reference::StructureStats& stats) {
+    reference::StructureOptions options;
+    options.side = int(std::lround(std::sqrt(double(points))));
+    options.threads = threads;
+    return reference::solve_structure(shooters, reference::structure_form_factors(shooters, options, &stats));
+  };
+  const reference::StructureSolve check = solve(run.check_samples, run.check_stats);
+  run.solve = solve(samples, run.stats);
+  const reference::SolutionError agreement =
+      reference::solution_error(scene, check.radiosity, run.solve.radiosity);
+  run.self_element_rms = agreement.element_rms;
+  run.self_patch_rms = agreement.patch_rms;
+  run.self_patch_max = agreement.patch_max;
+  run.self_worst_patch = agreement.worst_patch;
+  run.check_radiosity = check.radiosity;
+  run.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outputs.write("--out", reference::structure_text(scene, run));
+  if (!mesh_path.empty()) outputs.write("--mesh", mesh_text(scene, run.solve.radiosity));
+  outputs.commit();
+  if (!quiet)
+    std::printf("%s: the exact structure (%s): %zu elements, K = %d points a shooter (%lld rays), "
+                "K/4 against K: element RMS %.3g, patch RMS %.3g; %d sweeps; %.1f s\n",
+                scene.name.c_str(), reference::structure_name(structure).c_str(),
+                scene.elements.size(), samples, run.stats.rays, run.self_element_rms,
+                run.self_patch_rms, run.solve.sweeps, run.host_seconds);
+  return kExitOk;
+}
+// ---- end of the exact structure's block
+
 int run(int argc, char** argv) {
   CLI::App app{"The accuracy reference (docs/accuracy.md): element-to-element form factors "
                "integrated over both elements, solved to convergence.",
@@ -100,6 +164,15 @@ int run(int argc, char** argv) {
                  "refuse (exit 2) a run whose rays, at most, exceed this (1 to 1e15; the "
                  "default 1e11 is about 4.5 hours of one thread)")
       ->capture_default_str();
+  // ---- The exact structure's option (run_structure above)
+  std::string structure_choice;
+  app.add_option("--structure", structure_choice,
+                 "instead of the reference, the exact solution of ./simulate's own structure "
+                 "(receivers at element centres, shooters sending their elements' mean) with "
+                 "exact form factors: patches (the paper's two levels) or elements (every "
+                 "element its own patch); --samples is then K visibility points a shooter")
+      ->check(CLI::IsMember({"patches", "elements"}));
+  // ---- end
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -129,6 +202,13 @@ int run(int argc, char** argv) {
                      ": must be from 1 to 1e15");
   const std::string scene_file = resolve_scene(scene_name);
   const Scene scene = load_scene(scene_file);
+  if (!structure_choice.empty()) {  // the exact structure's block (run_structure above)
+    OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
+    return run_structure(scene, scene_file,
+                         structure_choice == "patches" ? reference::Structure::kPatches
+                                                       : reference::Structure::kElements,
+                         samples, threads, quiet, mesh_path, outputs);
+  }
   // The scene solved: every patch's grid `refine` times finer. Its parts tile each element
   // exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's element
   // order: part (a, b) of element (i, j) is element (refine i + a, refine j + b) of the fine grid.
@@ -180,24 +260,7 @@ int run(int argc, char** argv) {
   result.host_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outputs.write("--out", reference::reference_text(scene, result));
-  if (!mesh_path.empty()) {
-    // The scene's own grid, patch by patch in scene order (Scene::build_elements: row j,
-    // then column i), as a run without --subdivide hands its solution to the mesh.
-    std::vector<PatchSolution> solution;
-    for (std::size_t p = 0; p < scene.patches.size(); ++p) {
-      const Patch& patch = scene.patches[p];
-      PatchSolution& s = solution.emplace_back();
-      s.patch = int(p);
-      for (int j = 0; j < patch.nv; ++j)
-        for (int i = 0; i < patch.nu; ++i) {
-          s.cells.push_back({0, i, j});
-          s.radiosity.push_back(result.radiosity[std::size_t(patch.first_element + j * patch.nu + i)]);
-        }
-    }
-    outputs.write("--mesh", solution_mesh_ply(scene, solution,
-                                              solution_exposure(scene, scene.camera, solution,
-                                                                800, 600)));
-  }
+  if (!mesh_path.empty()) outputs.write("--mesh", mesh_text(scene, result.radiosity));
   outputs.commit();
   if (!quiet)
     std::printf("%s: %zu elements, solved as %zu parts (--refine %d), K = %d points per part "
