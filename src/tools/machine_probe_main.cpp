@@ -112,13 +112,13 @@ ncube::Scene probe_room(int cut, int boxes) {
 
 // The rooms the loop and the gather are timed on, (cut, boxes): 19, 49, 103, 241, 505 and 985
 // patches, so that a ray meets from 17 to 983 patches (the range of the rooms a radiosity
-// program is run on, from a box with two blocks in it to the paper's largest scenes), fixed
-// before any prediction was measured with them (docs/machines/probe.md). The fit needs the
+// program is run on, from a box with two blocks in it to the paper's largest scenes); how they
+// were chosen, and what else was tried: docs/machines/probe.md. The fit needs the
 // spread: a ray's own cost and its tests' are told apart only by rooms whose rays meet
 // different numbers of patches. Every room has boxes: in an empty convex room no ray ever
 // crosses a patch's plane, every test's branch goes the same way, and its tests run faster
-// than in any room with something in it (a room of 7 bare walls: about 4 ns a test against
-// 5.3-6.1 here) — not the work a visibility computation does.
+// than in any room with something in it (bare rooms: 3.1-4.0 ns a test against 5.2-6.2 in
+// these) — not the work a visibility computation does.
 struct Room {
   int cut, boxes;
 };
@@ -307,8 +307,9 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
     rays += double(shots.receivers[s].size()) * shots.shooters[s].part_count;
   const double estimate = rays * double(loop.patches - 2) *
                           (costs.flops_per_ray_patch_test + 0.25 * costs.flops_per_plane_crossing);
+  std::size_t stride = 1;
   if (estimate > kLoopFlopsARepeat) {
-    const std::size_t stride = std::size_t(std::ceil(estimate / kLoopFlopsARepeat));
+    stride = std::size_t(std::ceil(estimate / kLoopFlopsARepeat));
     for (auto& receivers : shots.receivers) {
       std::vector<ncube::ElementRef> kept;
       for (std::size_t k = 0; k < receivers.size(); k += stride) kept.push_back(receivers[k]);
@@ -319,8 +320,9 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   pass(once);
   loop.passes = std::max(1, int(std::lround(kLoopFlopsARepeat / loop_flops(costs, once))));
   loop.what = std::to_string(loop.patches) + " patches (cut " + std::to_string(room.cut) + ", " +
-              std::to_string(room.boxes) + " boxes), the shots " + std::to_string(loop.passes) +
-              " times";
+              std::to_string(room.boxes) + " boxes), the shots " +
+              (stride > 1 ? "to 1 receiver in " + std::to_string(stride) + ", " : "") +
+              std::to_string(loop.passes) + (loop.passes == 1 ? " time" : " times");
   for (int r = 0; r < repeats; ++r) {
     ncube::WorkCounts counts;
     const double start = thread_seconds();
