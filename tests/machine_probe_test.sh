@@ -2,8 +2,9 @@
 # build/machine_probe (src/tools/machine_probe_main.cpp, docs/machines/probe.md):
 #  - its errors: no --out (exit 2), --out a folder (exit 5), a --network that is not a platform
 #    of platforms/machines/ (exit 2, no file left);
-#  - the file it writes loads and runs, with the two measured rates read back into the result's
-#    provenance and each rate's measurement (median of the repeats, spread) in the file;
+#  - the file it writes loads and runs, with the three measured rates read back into the
+#    result's provenance and each rate's measurement in the file: the fit's rooms (median of the
+#    repeats, spread, residual) and its root mean square residual;
 #  - the prediction on a small case: scene1, one node, iteration 2 alone (the difference of a
 #    1- and a 2-iteration run), simulated seconds on the probed platform against the host's CPU
 #    seconds of the same iteration with the readable definitions on one thread. The tolerance,
@@ -34,12 +35,16 @@ set -e
 
 # 2. The file.
 "$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said"
-for rate in test_speed arithmetic_speed; do
+for rate in test_speed ray_speed arithmetic_speed; do
   grep -q "<prop id=\"$rate\" value=\"" "$tmp/probed.xml" || fail "no $rate <prop>"
-  grep -q "$rate = .* flop/s: " "$tmp/probed.xml" || fail "no measurement of $rate in the file"
+  grep -q "$rate = [0-9.e+]* flop/s" "$tmp/probed.xml" || fail "no measurement of $rate in the file"
 done
 grep -q "median of 3 repeats" "$tmp/probed.xml" || fail "the file does not give the repeats"
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
+[[ $(grep -c "boxes), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 6 ]] ||
+  fail "the file does not give the loop's 6 rooms with their residuals"
+[[ $(grep -c "root mean square residual" "$tmp/probed.xml") == 2 ]] ||
+  fail "the file does not give the two fits' residuals"
 grep -q 'topo_parameters="2;16,4;1,4;1,4"' "$tmp/probed.xml" || fail "not the 2024 cluster's network"
 
 # 3. The prediction: least of 2 CPU times for 1 and for 2 iterations.
@@ -59,7 +64,7 @@ def run(iterations):
         least = cpu if least is None else min(least, cpu)
     result = json.load(open(f"{tmp}/r.json"))
     values = result["provenance"]["platform"]["values"]
-    assert "test_speed" in values and "arithmetic_speed" in values, values
+    assert all(rate in values for rate in ("test_speed", "ray_speed", "arithmetic_speed")), values
     return result["simulated_seconds"], least
 s1, c1 = run(1)
 s2, c2 = run(2)

@@ -35,7 +35,8 @@ TEST(WorkKinds, EveryCounterHasAKindWhoseRateIsAnOptionalMachineParameter) {
 #undef NCUBE_KIND_LISTED
   EXPECT_EQ(kinds, listed);
   ASSERT_EQ(work_rate_names(),
-            (std::vector<std::string>{"test_speed", "arithmetic_speed", "memory_speed"}));
+            (std::vector<std::string>{"test_speed", "ray_speed", "arithmetic_speed",
+                                      "memory_speed"}));
   for (const std::string& rate : work_rate_names()) {
     const MachineParameter* p = parameter_named(rate);
     ASSERT_NE(p, nullptr) << rate;
@@ -101,6 +102,42 @@ TEST(WorkKinds, EachKindRunsAtItsOwnRate) {
   r.pixels_resolved = 3;
   r.histogram_buckets = 512;
   EXPECT_NEAR(compute_seconds(hand_costs(), p, r), 2600 / 4e8 + 540 / 2e8 + 512 / 1e6, 1e-15);
+}
+
+TEST(WorkKinds, RaysRunAtRaySpeedAndWithoutItAtTestSpeedToTheLastBit) {
+  EXPECT_EQ(work_rate_of("flops_per_ray"), "ray_speed");
+  EXPECT_EQ(fallback_rate_of("ray_speed"), "test_speed");
+  EXPECT_EQ(fallback_rate_of("test_speed"), "");
+  PlatformConfig p;
+  p.node_speed = 1e6;
+  p.test_speed = 4e8;
+  p.arithmetic_speed = 2e8;
+  // No ray_speed: rays at test_speed, the sum in the counters' order with each counter's flops
+  // over its rate, as compute_seconds summed it before ray_speed existed (written out here).
+  const CostModel c = hand_costs();
+  const WorkCounts w = hand_counts();
+  double before = 0.0;
+  before += c.flops_per_ray * double(w.rays) / 4e8;
+  before += c.flops_per_ray_patch_test * double(w.ray_patch_tests) / 4e8;
+  before += c.flops_per_plane_crossing * double(w.plane_crossings) / 4e8;
+  before += c.flops_per_form_factor * double(w.form_factors) / 2e8;
+  before += c.flops_per_element_update * double(w.element_updates) / 2e8;
+  before += c.flops_per_increment_combined * double(w.increments_combined) / 1e6;
+  EXPECT_EQ(compute_seconds(c, p, w), before);
+  // With ray_speed, by hand: rays 7 x 9 / 1e8, the rest as before.
+  p.ray_speed = 1e8;
+  const double expected = 63 / 1e8 + (17354.7 + 3537.859) / 4e8 + 960 / 2e8 + 33 / 1e6;
+  EXPECT_NEAR(compute_seconds(c, p, w), expected, expected * 1e-12);
+  EXPECT_EQ(kind_flops(c, w, "ray_speed"), 63);
+  EXPECT_NEAR(kind_flops(c, w, "test_speed"), 17354.7 + 3537.859, 1e-9);
+  // ray_speed alone: rays at it, every other kind at node_speed (test_speed left out).
+  p.test_speed = 0;
+  p.arithmetic_speed = 0;
+  EXPECT_NEAR(compute_seconds(c, p, w), 63 / 1e8 + (17354.7 + 3537.859 + 960 + 33) / 1e6,
+              1e-15);
+  // Neither: rays at node_speed.
+  p.ray_speed = 0;
+  EXPECT_FALSE(gives_work_rates(p));
 }
 
 }  // namespace

@@ -113,9 +113,10 @@ def main():
             cpu = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
         load = os.getloadavg()[0]
         heading = ("Measured on %s (load average %.1f on %d cores at the end) by "
-                   "`/usr/bin/python3 docs/machines/prediction_table.py`%s."
-                   % (cpu, load, os.cpu_count(), "" if not args.platform else
-                      " --platform " + os.path.relpath(args.platform, ROOT)))
+                   "`/usr/bin/python3 docs/machines/prediction_table.py%s`."
+                   % (cpu, load, os.cpu_count(), ("" if not args.platform else
+                      " --platform " + os.path.relpath(args.platform, ROOT)) +
+                      ("" if args.repeats == 3 else " --repeats %d" % args.repeats)))
         lines = table(rows, platform, heading)
     text = "\n".join(lines) + "\n"
     if args.print:

@@ -30,7 +30,8 @@ enum class XmlForm {
 // typo, and simulated times could leave the range SimGrid computes in). A platform file's
 // "unit", when it gives one, must be the unit here. An optional parameter (the rates per kind
 // of work) may be left out of a platform file: it is then 0 in PlatformConfig, the kind of
-// work runs at node_speed, and the result file's provenance does not list it (so a machine
+// work runs at node_speed (ray_speed's at test_speed: NCUBE_RATE_FALLBACKS in
+// src/machine/work_kinds.h), and the result file's provenance does not list it (so a machine
 // that gives only node_speed has the results, and the result files, it had before the rates
 // existed). docs/platform_tables.py parses these entries: keep each field a plain literal.
 #define NCUBE_MACHINE_PARAMETERS(X)                                                             \
@@ -53,9 +54,9 @@ enum class XmlForm {
     "CPU time the receiving node spends per message when its program takes it")                 \
   X(test_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                            \
     "speed of one node on floating-point tests: the compare-and-branch loops of the visibility " \
-    "search (rays, ray-patch tests and their plane crossings, octree slab tests, the shooter "  \
-    "search, hemicube clip and depth tests, the renderer's sample tests), flops of "            \
-    "cost_model.json per second; left out: node_speed")                                         \
+    "search (ray-patch tests and their plane crossings, octree slab tests, the shooter "       \
+    "search, hemicube clip and depth tests, the renderer's sample tests; rays too when "        \
+    "ray_speed is left out), flops of cost_model.json per second; left out: node_speed")       \
   X(arithmetic_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                      \
     "speed of one node on straight-line floating-point arithmetic: form factors (arctangents, " \
     "square roots, divisions), radiosity updates, subdivision, hemicube transforms and "        \
@@ -63,7 +64,12 @@ enum class XmlForm {
   X(memory_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                          \
     "speed of one node on work that moves or accumulates data with one operation an item: "     \
     "radiosity increments combined and applied, hemicube cells read out, histogram buckets "    \
-    "added; left out: node_speed")
+    "added; left out: node_speed")                                                              \
+  X(ray_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                             \
+    "speed of one node on a ray's own work besides its tests (flops_per_ray of "                \
+    "cost_model.json per second): setting the ray up, starting and leaving its loop over the "  \
+    "patches, the patches it skips (its own and the shooter's); left out: test_speed, as "      \
+    "before this rate existed (node_speed when that too is left out)")
 
 // The network model a JSON platform file gets when it has no "simgrid_config" (the nCube2's,
 // docs/model.md): X(SimGrid setting, value, why). Defaults that --cfg overrides. The one

@@ -12,6 +12,23 @@ struct KindEntry {
   double PlatformConfig::*field;
 };
 
+struct Fallback {
+  const char* rate;
+  const char* fallback;
+  double PlatformConfig::*field;
+  double PlatformConfig::*fallback_field;
+};
+
+const std::vector<Fallback>& fallbacks() {
+  static const std::vector<Fallback> entries = {
+#define NCUBE_FALLBACK_ENTRY(rate, fallback) \
+  {#rate, #fallback, &PlatformConfig::rate, &PlatformConfig::fallback},
+      NCUBE_RATE_FALLBACKS(NCUBE_FALLBACK_ENTRY)
+#undef NCUBE_FALLBACK_ENTRY
+  };
+  return entries;
+}
+
 const std::vector<KindEntry>& kind_entries() {
   static const std::vector<KindEntry> entries = {
 #define NCUBE_KIND_ENTRY(cost, rate) {#cost, #rate, &PlatformConfig::rate},
@@ -46,8 +63,14 @@ const std::vector<double PlatformConfig::*>& render_fields() {
   return fields;
 }
 
+// The rate a kind runs at: its own, else its fallback's (NCUBE_RATE_FALLBACKS), else
+// node_speed. The same double as the rate it falls back to, so that a machine leaving a rate
+// out is charged to the last bit as before the rate existed.
 double rate(const PlatformConfig& platform, double PlatformConfig::*field) {
-  return platform.*field > 0 ? platform.*field : platform.node_speed;
+  if (platform.*field > 0) return platform.*field;
+  for (const Fallback& f : fallbacks())
+    if (f.field == field) return rate(platform, f.fallback_field);
+  return platform.node_speed;
 }
 
 }  // namespace
@@ -60,6 +83,12 @@ const std::vector<std::string>& work_rate_names() {
     return out;
   }();
   return names;
+}
+
+std::string fallback_rate_of(const std::string& rate) {
+  for (const Fallback& f : fallbacks())
+    if (rate == f.rate) return f.fallback;
+  return "";
 }
 
 std::string work_rate_of(const std::string& cost_parameter) {

@@ -1,7 +1,7 @@
 // Which kind of work each counted operation is, and so which of a machine's rates runs it
-// (src/machine/machine_parameters.h: test_speed, arithmetic_speed, memory_speed). A machine is
-// a cost per kind of work: the cost model (platforms/cost_model.json) says how many flops an
-// operation is, the machine how fast it runs flops of each kind. Why these kinds and why each
+// (src/machine/machine_parameters.h: test_speed, ray_speed, arithmetic_speed, memory_speed).
+// A machine is a cost per kind of work: the cost model (platforms/cost_model.json) says how
+// many flops an operation is, the machine how fast it runs flops of each kind. Why these kinds and why each
 // counter is where it is: docs/machines/README.md, "Rates per kind of work".
 #pragma once
 
@@ -18,7 +18,7 @@ namespace ncube {
 #define NCUBE_WORK_KINDS(X)                                                                     \
   X(flops_per_shooter_candidate, test_speed)                                                    \
   X(flops_per_receiver, test_speed)                                                             \
-  X(flops_per_ray, test_speed)                                                                  \
+  X(flops_per_ray, ray_speed)                                                                   \
   X(flops_per_ray_patch_test, test_speed)                                                       \
   X(flops_per_plane_crossing, test_speed)                                                       \
   X(flops_per_form_factor, arithmetic_speed)                                                    \
@@ -51,8 +51,19 @@ namespace ncube {
   X(flops_per_histogram_bucket, memory_speed)                                                   \
   X(flops_per_pixel_resolved, arithmetic_speed)
 
+// X(rate, the rate that runs its kind when a machine leaves it out). A rate not listed here
+// falls back to node_speed; one listed falls back to its fallback's rate, and that to
+// node_speed. ray_speed splits a ray's own cost (its set-up, its loop's start and exit, the
+// patches it skips) from test_speed, which ran it before the per-ray kind existed: a machine
+// that does not give ray_speed runs rays at its test_speed, as before, to the last bit
+// (docs/machines/README.md, "Rates per kind of work").
+#define NCUBE_RATE_FALLBACKS(X) X(ray_speed, test_speed)
+
 // The rates' names (machine parameters), in the order they first appear above.
 const std::vector<std::string>& work_rate_names();
+
+// The rate that runs `rate`'s kind when a machine leaves `rate` out ("" for node_speed).
+std::string fallback_rate_of(const std::string& rate);
 
 // The rate that runs a cost-model parameter's flops ("" for one the list lacks).
 std::string work_rate_of(const std::string& cost_parameter);

@@ -6,14 +6,20 @@
 //
 // The kernels are the very code the simulated node programs charge for (the readable
 // definitions, not the host's fast machinery): the paper's brute-force visibility loop
-// (BruteForceOccluders through visible_parts: rays, ray-patch tests, plane crossings, kind
-// test_speed) and the engine's gather (point-to-part form factors and radiosity updates, kind
-// arithmetic_speed), on a scene of the probe's own (a room of boxes drawn from a fixed seed,
-// never one of the scenes the simulator is held against). Each kernel is timed `repeats` times
-// in the thread's CPU time (a shared host's other processes do not count); a rate is its
-// counted flops (platforms/cost_model.json) over the median time. memory_speed has no kernel
-// reachable outside a node program (the increments' sum is the increment exchange's own): it
-// is left out, so that kind runs at node_speed, which is the measured test_speed.
+// (BruteForceOccluders through visible_parts) and the engine's gather (point-to-part form
+// factors and radiosity updates, kind arithmetic_speed), on scenes of the probe's own (rooms
+// of boxes drawn from a fixed seed, never one of the scenes the simulator is held against).
+// The loop does two kinds of work: a ray's own (ray_speed: its set-up, its loop's start and
+// exit, the patches it skips) and its tests (test_speed: ray-patch tests, plane crossings). It
+// is timed on rooms of 19 to 985 patches, so 17 to 983 tests a ray, and the two rates are the
+// relative least squares fit of time = ray flops / ray_speed + test flops / test_speed over the
+// rooms (src/machine/rate_fit.h), each room's residual written with it. The gather is timed in
+// the same rooms on the masks the loop found, and arithmetic_speed is the same fit with one
+// kind. Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
+// processes do not count), the median kept; flops are counted with platforms/cost_model.json.
+// memory_speed has no kernel reachable outside a node program (the increments' sum is the
+// increment exchange's own): it is left out, so that kind runs at node_speed, which is the
+// measured test_speed.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -25,10 +31,13 @@
 #include <new>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "machine/cost_model.h"
+#include "machine/rate_fit.h"
 #include "machine/work_kinds.h"
 #include "radiosity/radiosity_engine.h"
 #include "radiosity/shooter.h"
@@ -47,11 +56,13 @@ using ncube::Polygon;
 using ncube::Rgb;
 using ncube::Vec3;
 
-// The probe's own scene: a room 4 x 3 x 4 (walls, floor and ceiling each 4 x 4 patches of
-// 2 x 2 elements), a light in the ceiling, and 24 boxes of random size and place (seed 1994;
-// five faces each, the top as two triangles), about 240 patches: rays meet a few hundred
-// patches each, as in the paper's scenes, with quads and triangles both.
-ncube::Scene probe_scene() {
+// A room of the probe's own: a room 4 x 3 x 4 (walls, floor and ceiling each cut x cut patches
+// of 2 x 2 elements), a light in the ceiling, and `boxes` boxes of random size and place (seed
+// 1994, the same first boxes in every room; five faces each, the top as two triangles, a third
+// of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both.
+// ROOMS below are the rooms timed; the room of cut 4 and 24 boxes (241 patches) is the one the
+// gather is timed on.
+ncube::Scene probe_room(int cut, int boxes) {
   ncube::Scene scene;
   scene.name = "machine probe room";
   auto add = [&](const Polygon& polygon, const Rgb& emission, int n) {
@@ -63,7 +74,6 @@ ncube::Scene probe_scene() {
     scene.patches.push_back(p);
   };
   const double X = 4, Y = 3, Z = 4;
-  const int cut = 4;
   // Each wall as cut x cut quads facing into the room: corner o, edges u and v (u x v inward).
   auto wall = [&](Vec3 o, Vec3 u, Vec3 v) {
     for (int i = 0; i < cut; ++i)
@@ -83,7 +93,7 @@ ncube::Scene probe_scene() {
       Rgb(10.0), 2);
   std::mt19937 random(1994);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int b = 0; b < 24; ++b) {
+  for (int b = 0; b < boxes; ++b) {
     const double w = 0.2 + 0.6 * unit(random), d = 0.2 + 0.6 * unit(random),
                  h = 0.2 + 1.2 * unit(random);
     const double x = 0.1 + (X - 0.2 - w) * unit(random), z = 0.1 + (Z - 0.2 - d) * unit(random);
@@ -101,28 +111,56 @@ ncube::Scene probe_scene() {
   return scene;
 }
 
+// The rooms the loop and the gather are timed on, (cut, boxes): 19, 49, 103, 241, 505 and 985
+// patches, so that a ray meets from 17 to 983 patches (the range of the rooms a radiosity
+// program is run on, from a box with two blocks in it to the paper's largest scenes); how they
+// were chosen, and what else was tried: docs/machines/probe.md. The fit needs the
+// spread: a ray's own cost and its tests' are told apart only by rooms whose rays meet
+// different numbers of patches. Every room has boxes: in an empty convex room no ray ever
+// crosses a patch's plane, every test's branch goes the same way, and its tests run faster
+// than in any room with something in it (bare rooms: 3.1-4.0 ns a test against 5.2-6.2 in
+// these) — not the work a visibility computation does.
+struct Room {
+  int cut, boxes;
+};
+const std::vector<Room> kRooms = {{1, 2}, {2, 4}, {3, 8}, {4, 24}, {6, 48}, {8, 100}};
+// Counted flops of one timed repeat of the loop in each room (about 0.1 s on a core of 2024):
+// a small room's shots are run several times over to reach it.
+constexpr double kLoopFlopsARepeat = 4e8;
+// The same for the gather (arithmetic flops; about 0.02 s).
+constexpr double kGatherFlopsARepeat = 2e8;
+
 double thread_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-struct Measurement {
-  std::string rate;          // the machine parameter
-  std::string kernel;        // what was timed
-  double flops = 0;          // counted flops of one repeat
-  std::vector<double> seconds;  // each repeat's thread CPU time
-  ncube::WorkCounts counts;  // of one repeat
+double median(std::vector<double> s) {
+  std::sort(s.begin(), s.end());
+  const std::size_t n = s.size();
+  return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+}
 
-  double median() const {
-    std::vector<double> s = seconds;
-    std::sort(s.begin(), s.end());
-    const std::size_t n = s.size();
-    return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
-  }
-  double value() const { return flops / median(); }
-  double fastest() const { return flops / *std::min_element(seconds.begin(), seconds.end()); }
-  double slowest() const { return flops / *std::max_element(seconds.begin(), seconds.end()); }
+// (fastest - slowest) / median of a kernel's repeats, as a share.
+double spread(const std::vector<double>& seconds) {
+  const auto [least, most] = std::minmax_element(seconds.begin(), seconds.end());
+  return (1.0 / *least - 1.0 / *most) * median(seconds);
+}
+
+// What a fit can leave: a rate of no time or less, when the rooms' times do not grow with
+// the work as the two kinds say (a host disturbed beyond what the median removes).
+struct MeasurementFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One kernel timed: the counts and the thread CPU time of each repeat.
+struct Timing {
+  std::string what;              // the kernel and its input
+  ncube::WorkCounts counts;      // of one repeat
+  std::vector<double> seconds;   // each repeat's thread CPU time
+  std::size_t patches = 0;
+  int passes = 1;                // times the shots are run in one repeat
 };
 
 std::string number(double v, int digits = 4) {
@@ -155,8 +193,10 @@ std::string cpu_model() {
 
 // The network file with the probe's node figures: every node's speed the measured
 // test_speed, the rates as <prop>s beside node_memory, and the measurements in a comment.
+// `rates`: (machine parameter, flop/s), node_speed's first.
 std::string probed_platform(const std::string& network_file, const std::string& network,
-                            const std::vector<Measurement>& measured, const std::string& about) {
+                            const std::vector<std::pair<std::string, double>>& rates,
+                            const std::string& about) {
   std::string text = network;
   // Rates the network file gives already (platforms/machines/cluster-2024.xml does), with
   // their comment, make way for the measured ones.
@@ -171,7 +211,7 @@ std::string probed_platform(const std::string& network_file, const std::string& 
   for (const std::string& rate : ncube::work_rate_names())
     while (erase_line_with("<prop id=\"" + rate + "\"", "/>")) {
     }
-  const double node_speed = measured[0].value();
+  const double node_speed = rates.at(0).second;
   std::size_t changed = 0;
   for (std::size_t at = text.find(" speed=\""); at != std::string::npos;
        at = text.find(" speed=\"", at + 1)) {
@@ -186,8 +226,8 @@ std::string probed_platform(const std::string& network_file, const std::string& 
   const std::size_t line_start = text.rfind('\n', memory) + 1;
   const std::string indent = text.substr(line_start, memory - line_start);
   std::string props;
-  for (const Measurement& m : measured)
-    props += "<prop id=\"" + m.rate + "\" value=\"" + number(m.value(), 6) + "\"/>\n" + indent;
+  for (const auto& [rate, value] : rates)
+    props += "<prop id=\"" + rate + "\" value=\"" + number(value, 6) + "\"/>\n" + indent;
   text.insert(memory, props);
   // The header comment (the first after the DOCTYPE) becomes the probe's.
   const std::size_t open = text.find("<!--"), close = text.find("-->", open);
@@ -195,6 +235,125 @@ std::string probed_platform(const std::string& network_file, const std::string& 
     throw ncube::InputError(network_file + ": no header comment to replace");
   text.replace(open, close + 3 - open, "<!--" + about + "-->");
   return text;
+}
+
+// The kinds of work of the visibility loop, each a rate the fit gives: a ray's own, and its
+// tests (ray-patch tests and their plane crossings, in the cost model's proportion of flops:
+// src/machine/work_kinds.h).
+const std::vector<std::string> kLoopKinds = {"ray_speed", "test_speed"};
+
+double loop_flops(const ncube::CostModel& costs, const ncube::WorkCounts& counts) {
+  double flops = 0;
+  for (const std::string& kind : kLoopKinds) flops += ncube::kind_flops(costs, counts, kind);
+  return flops;
+}
+
+// A room's shots: kShooters shooters of 64 parts (M = 64), the light and patches spread
+// evenly through the room's list, with the elements that receive from each.
+constexpr int kShooters = 4;
+struct Shots {
+  ncube::Scene scene;
+  std::vector<int> all;
+  std::vector<ncube::Shooter> shooters;
+  std::vector<std::vector<ncube::ElementRef>> receivers;
+  std::vector<std::vector<ncube::PartMask>> masks;
+};
+
+void aim(Shots& shots, const ncube::RadiosityEngine& engine, const Room& room) {
+  const int patches = int(shots.scene.patches.size()), light = 6 * room.cut * room.cut;
+  std::vector<int> chosen = {light};
+  const int spread_over = std::min(kShooters - 1, patches - 1);
+  for (int k = 0; k < spread_over; ++k) {
+    int patch = int(std::lround((k + 0.5) * patches / spread_over - 0.5));
+    while (std::find(chosen.begin(), chosen.end(), patch) != chosen.end()) patch = (patch + 1) % patches;
+    chosen.push_back(patch);
+  }
+  for (int patch : chosen) {
+    shots.shooters.push_back(ncube::make_shooter(shots.scene, patch, Rgb(1.0), 64));
+    ncube::WorkCounts ignored;
+    shots.receivers.push_back(engine.receivers(shots.shooters.back(), false, ignored));
+  }
+  shots.masks.resize(shots.shooters.size());
+}
+
+// The brute-force visibility loop in one room, then the engine's gather for the masks it
+// found, each `repeats` times after one run that warms the caches and counts a pass.
+struct RoomTimings {
+  Timing loop, gather;
+};
+
+RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& costs) {
+  Shots shots;
+  shots.scene = probe_room(room.cut, room.boxes);
+  shots.all.resize(shots.scene.patches.size());
+  for (std::size_t k = 0; k < shots.all.size(); ++k) shots.all[k] = int(k);
+  ncube::RadiosityEngine engine(shots.scene, shots.all);
+  const ncube::BruteForceOccluders occluders(shots.scene, shots.all,
+                                             ncube::RayTestPolicy::kTestAllPatches);
+  aim(shots, engine, room);
+  const auto pass = [&](ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      shots.masks[s] = ncube::visible_parts(engine, occluders, shots.receivers[s],
+                                            shots.shooters[s], counts);
+  };
+  RoomTimings t;
+  Timing& loop = t.loop;
+  loop.patches = shots.scene.patches.size();
+  // A large room's shots are more than a repeat: every k-th receiver of each shot, in store
+  // order (the rays still cross the whole room), k from the shots' size before they are run
+  // (a ray tests every patch but its two, each test the counted flops of a test and, a
+  // guess for this estimate only, a quarter of a crossing's).
+  double rays = 0;
+  for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+    rays += double(shots.receivers[s].size()) * shots.shooters[s].part_count;
+  const double estimate = rays * double(loop.patches - 2) *
+                          (costs.flops_per_ray_patch_test + 0.25 * costs.flops_per_plane_crossing);
+  std::size_t stride = 1;
+  if (estimate > kLoopFlopsARepeat) {
+    stride = std::size_t(std::ceil(estimate / kLoopFlopsARepeat));
+    for (auto& receivers : shots.receivers) {
+      std::vector<ncube::ElementRef> kept;
+      for (std::size_t k = 0; k < receivers.size(); k += stride) kept.push_back(receivers[k]);
+      receivers = kept;
+    }
+  }
+  ncube::WorkCounts once;
+  pass(once);
+  loop.passes = std::max(1, int(std::lround(kLoopFlopsARepeat / loop_flops(costs, once))));
+  loop.what = std::to_string(loop.patches) + " patches (cut " + std::to_string(room.cut) + ", " +
+              std::to_string(room.boxes) + " boxes), the shots " +
+              (stride > 1 ? "to 1 receiver in " + std::to_string(stride) + ", " : "") +
+              std::to_string(loop.passes) + (loop.passes == 1 ? " time" : " times");
+  for (int r = 0; r < repeats; ++r) {
+    ncube::WorkCounts counts;
+    const double start = thread_seconds();
+    for (int p = 0; p < loop.passes; ++p) pass(counts);
+    loop.seconds.push_back(thread_seconds() - start);
+    loop.counts = counts;
+  }
+  // The gather of the masks found: its cost a counted form factor depends on which parts are
+  // visible (the host sums a visible region's contour, not each part: docs/machines/probe.md),
+  // so it is timed in every room, as the loop is.
+  Timing& gather = t.gather;
+  gather.patches = loop.patches;
+  const auto gather_pass = [&](ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      engine.gather(shots.shooters[s], shots.receivers[s], shots.masks[s], counts);
+  };
+  ncube::WorkCounts gathered_once;
+  gather_pass(gathered_once);
+  gather.passes = std::max(1, int(std::lround(
+      kGatherFlopsARepeat / ncube::kind_flops(costs, gathered_once, "arithmetic_speed"))));
+  gather.what = std::to_string(gather.patches) + " patches, the shots' gather " +
+                std::to_string(gather.passes) + " times";
+  for (int r = 0; r < repeats; ++r) {
+    ncube::WorkCounts counts;
+    const double start = thread_seconds();
+    for (int p = 0; p < gather.passes; ++p) gather_pass(counts);
+    gather.seconds.push_back(thread_seconds() - start);
+    gather.counts = counts;
+  }
+  return t;
 }
 
 int machine_probe(int argc, char** argv) {
@@ -230,51 +389,47 @@ int machine_probe(int argc, char** argv) {
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const std::string network = ncube::read_input_file(network_file, ncube::kSimgridPlatformFile);
 
-  const ncube::Scene scene = probe_scene();
-  std::vector<int> all(scene.patches.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = int(k);
-  ncube::RadiosityEngine engine(scene, all);
-  const ncube::BruteForceOccluders occluders(scene, all, ncube::RayTestPolicy::kTestAllPatches);
-  // Shooters: the light, a ceiling patch, a wall patch and a box's side (64 parts, M = 64).
-  const int light = 6 * 16;
-  std::vector<ncube::Shooter> shooters;
-  for (int patch : {light, 16 + 5, 32 + 6, light + 1 + 6 * 7 + 3})
-    shooters.push_back(ncube::make_shooter(scene, patch, Rgb(1.0), 64));
-  std::vector<std::vector<ncube::ElementRef>> receivers;
-  for (const ncube::Shooter& s : shooters) {
-    ncube::WorkCounts ignored;
-    receivers.push_back(engine.receivers(s, false, ignored));
+  // The loop and the gather in every room; the loop's three rates fitted, the gather's one.
+  std::vector<Timing> loops, gathers;
+  std::vector<ncube::TimedRun> runs, gather_runs;
+  for (const Room& room : kRooms) {
+    RoomTimings timed = time_room(room, repeats, costs);
+    loops.push_back(timed.loop);
+    gathers.push_back(timed.gather);
+    const Timing& t = loops.back();
+    ncube::TimedRun run{{}, median(t.seconds)};
+    for (const std::string& kind : kLoopKinds)
+      run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
+    runs.push_back(run);
+    gather_runs.push_back({{ncube::kind_flops(costs, timed.gather.counts, "arithmetic_speed")},
+                           median(timed.gather.seconds)});
   }
-
-  Measurement tests, arithmetic;
-  tests.rate = "test_speed";
-  tests.kernel = "the brute-force visibility loop (visible_parts over BruteForceOccluders) for 4 "
-                 "shooters of 64 parts";
-  arithmetic.rate = "arithmetic_speed";
-  arithmetic.kernel = "the engine's gather (point-to-part form factors, radiosity updates) for "
-                      "the same shots, 32 times";
-  std::vector<std::vector<ncube::PartMask>> masks(shooters.size());
-  for (int r = 0; r < repeats + 1; ++r) {  // the first repeat warms the caches, not counted
-    ncube::WorkCounts counts;
-    double start = thread_seconds();
-    for (std::size_t s = 0; s < shooters.size(); ++s)
-      masks[s] = ncube::visible_parts(engine, occluders, receivers[s], shooters[s], counts);
-    const double test_seconds = thread_seconds() - start;
-    ncube::WorkCounts gathered;
-    start = thread_seconds();
-    for (int again = 0; again < 32; ++again)
-      for (std::size_t s = 0; s < shooters.size(); ++s)
-        engine.gather(shooters[s], receivers[s], masks[s], gathered);
-    const double gather_seconds = thread_seconds() - start;
-    if (r == 0) continue;
-    tests.seconds.push_back(test_seconds);
-    tests.counts = counts;
-    arithmetic.seconds.push_back(gather_seconds);
-    arithmetic.counts = gathered;
+  const ncube::RateFit fit = ncube::fit_seconds_per_flop(runs);
+  for (std::size_t k = 0; k < loops.size(); ++k)
+    std::cout << "room of " << loops[k].patches << " patches: "
+              << number(double(loops[k].counts.ray_patch_tests) / double(loops[k].counts.rays), 4)
+              << " tests a ray, "
+              << number(100.0 * double(loops[k].counts.plane_crossings) /
+                        double(loops[k].counts.ray_patch_tests), 3)
+              << " % crossing, " << number(median(loops[k].seconds), 4) << " s, "
+              << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.ray_patch_tests), 4)
+              << " ns a test, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(100 * fit.relative_residuals[k], 2) << " %\n";
+  std::vector<std::pair<std::string, double>> rates;
+  for (std::size_t k = 0; k < kLoopKinds.size(); ++k) {
+    if (!(fit.seconds_per_flop[k] > 0))
+      throw MeasurementFailed("the fit of the visibility loop's times gave " + kLoopKinds[k] +
+                              " no time or less (" + number(fit.seconds_per_flop[k], 4) +
+                              " s a flop): the host was too disturbed; probe again, or with "
+                              "more --repeats");
+    rates.push_back({kLoopKinds[k], 1 / fit.seconds_per_flop[k]});
   }
-  tests.flops = ncube::kind_flops(costs, tests.counts, tests.rate);
-  arithmetic.flops = ncube::kind_flops(costs, arithmetic.counts, arithmetic.rate);
-  const std::vector<Measurement> measured = {tests, arithmetic};
+  // node_speed (and so memory_speed's kind) is the test rate: the first of the file's rates.
+  std::swap(rates[0], rates[1]);
+  const double test_speed = rates[0].second, ray_speed = rates[1].second;
+  const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
+  const double arithmetic_speed = 1 / gather_fit.seconds_per_flop[0];
+  rates.push_back({"arithmetic_speed", arithmetic_speed});
 
   const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
@@ -287,31 +442,69 @@ int machine_probe(int argc, char** argv) {
         << ".\n     Written by build/machine_probe (" << ncube::code_version() << ") on " << date
         << "; docs/machines/probe.md.\n"
         << "     Node rates measured on one thread, in the thread's CPU time, on the probe's own\n"
-        << "     scene (" << scene.patches.size() << " patches, " << scene.elements.size()
-        << " elements; not a scene of scenes/), flops counted with platforms/cost_model.json.\n"
+        << "     rooms (not scenes of scenes/), flops counted with platforms/cost_model.json.\n"
         << "     node_speed is test_speed; memory_speed is not measured (no counted kernel of\n"
-        << "     that kind outside a node program) and so runs at node_speed.\n";
-  for (const Measurement& m : measured) {
-    about << "     " << m.rate << " = " << number(m.value(), 6) << " flop/s: " << m.kernel
-          << ";\n       " << number(m.flops, 6) << " flops a repeat (" << counts_text(m.counts)
-          << ");\n       median of " << m.seconds.size() << " repeats " << number(m.median(), 4)
-          << " s; fastest " << number(m.fastest(), 4) << " flop/s, slowest "
-          << number(m.slowest(), 4) << " flop/s (spread "
-          << number(100.0 * (m.fastest() - m.slowest()) / m.value(), 3) << " % of the median).\n";
+        << "     that kind outside a node program) and so runs at node_speed.\n"
+        << "     test_speed = " << number(test_speed, 6) << " flop/s ("
+        << number(1e9 * costs.flops_per_ray_patch_test / test_speed, 3)
+        << " ns a ray-patch test) and ray_speed = " << number(ray_speed, 6) << " flop/s\n       ("
+        << number(1e9 * costs.flops_per_ray / ray_speed, 3) << " ns a ray's own work besides "
+        << "its tests): the brute-force visibility loop\n       (visible_parts over "
+        << "BruteForceOccluders, " << kShooters << " shooters of 64 parts) in " << loops.size()
+        << " rooms, the relative\n       least squares fit of the median time = ray flops / "
+        << "ray_speed + test flops / test_speed\n       (src/machine/rate_fit.h; test flops: "
+        << "the ray-patch tests' and their plane crossings'),\n       root mean square residual "
+        << number(100 * fit.rms_relative_residual, 2) << " %. Each room: its counts a repeat, "
+        << "median of " << repeats << " repeats,\n       spread (fastest - slowest over the "
+        << "median), fitted - measured:\n";
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    const Timing& t = loops[k];
+    about << "       " << t.what << ": "
+          << number(double(t.counts.ray_patch_tests) / double(t.counts.rays), 4)
+          << " tests a ray, " << number(100.0 * double(t.counts.plane_crossings) /
+                                        double(t.counts.ray_patch_tests), 3)
+          << " % of them crossing; " << counts_text(t.counts) << "; " << number(median(t.seconds), 4)
+          << " s, spread " << number(100 * spread(t.seconds), 2) << " %, residual "
+          << (fit.relative_residuals[k] >= 0 ? "+" : "")
+          << number(100 * fit.relative_residuals[k], 2) << " %.\n";
+  }
+  about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s: the engine's "
+        << "gather (point-to-part form factors,\n       radiosity updates) of the same shots in "
+        << "the same rooms, the relative least squares fit of\n       the median time = "
+        << "arithmetic flops / arithmetic_speed, root mean square residual "
+        << number(100 * gather_fit.rms_relative_residual, 2) << " %:\n";
+  for (std::size_t k = 0; k < gathers.size(); ++k) {
+    const Timing& t = gathers[k];
+    about << "       " << t.what << ": " << counts_text(t.counts) << "; "
+          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << " %, residual " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
+          << number(100 * gather_fit.relative_residuals[k], 2) << " %.\n";
   }
   about << "     ";
-  const std::string text = probed_platform(network_file, network, measured, about.str());
+  const std::string text = probed_platform(network_file, network, rates, about.str());
   outputs.write("--out", text);
   outputs.commit();
-  for (const Measurement& m : measured)
-    std::cout << m.rate << " " << number(m.value(), 6) << " flop/s (median of " << m.seconds.size()
-              << "; fastest " << number(m.fastest(), 4) << ", slowest " << number(m.slowest(), 4)
-              << ")\n";
+  for (const auto& [rate, value] : rates) std::cout << rate << " " << number(value, 6) << " flop/s\n";
+  std::cout << "visibility loop fit over " << loops.size() << " rooms: root mean square residual "
+            << number(100 * fit.rms_relative_residual, 2) << " %\n";
+  for (std::size_t k = 0; k < gathers.size(); ++k)
+    std::cout << "room of " << gathers[k].patches << " patches: gather "
+              << number(1e9 * median(gathers[k].seconds) / double(gathers[k].counts.form_factors), 4)
+              << " ns a form factor, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(100 * gather_fit.relative_residuals[k], 2) << " %\n";
   return ncube::kExitOk;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ncube::run_tool("machine_probe", [&] { return machine_probe(argc, argv); });
+  // The one catch ladder (tool_exits.h); a fit that gives no rate is a failed measurement (4).
+  return ncube::run_tool("machine_probe", [&] {
+    try {
+      return machine_probe(argc, argv);
+    } catch (const MeasurementFailed& e) {
+      std::cerr << "machine_probe: " << e.what() << " (no output file was written)\n";
+      return ncube::kExitSimulationFailed;
+    }
+  });
 }
