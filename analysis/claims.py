@@ -492,6 +492,7 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
     return "\n".join(out)
 
 
+@page.refusing_outputs("claims.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results")

@@ -723,6 +723,7 @@ def section(results_root, jobs=2, sweep_file=SWEEP, figure=FIGURE):
     return markdown(rows, levels, host)
 
 
+@page.refusing_outputs("claims_schemes.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results")

@@ -859,6 +859,7 @@ def run_sweep(sweep_file, results_dir):
             sys.exit(code)
 
 
+@page.refusing_outputs("machines.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--run", action="store_true",

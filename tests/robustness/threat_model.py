@@ -240,9 +240,7 @@ TOOL_OUTPUTS = [
 PAGE_SCRIPTS = {
     "report.py": "held", "predictions.py": "held", "adaptive.py": "held",
     "patch_order.py": "held", "memory_sensitivity.py": "held", "calibrate.py": "held",
-    # Written through output_file (a page onto an input raises OutputIsInputError: refused,
-    # but as a traceback, exit 1); not h37's files (issue 37, item 5 left to their owners).
-    "claims.py": "open", "claims_schemes.py": "open", "machines.py": "open", "unknowns.py": "open",
+    "claims.py": "held", "claims_schemes.py": "held", "machines.py": "held", "unknowns.py": "held",
 }
 
 TOOL_OUTPUT_KINDS = ["new", "regular", "link", "dangling link", "link loop", "fifo",
