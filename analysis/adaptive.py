@@ -19,13 +19,16 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import argparse
 import concurrent.futures
+import io
 import json
 import os
 import subprocess
 import sys
 import tempfile
 
-from ncube import page  # noqa: E402
+from ncube import input_file, page  # noqa: E402
+
+SCENE_BYTES = 256 << 20  # the scene files' size limit of ./simulate's read gate
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CONFIGS = [(4, 0), (8, 0), (16, 0), (64, 0), (8, 7)]
@@ -97,8 +100,10 @@ def plot_figure(rows, path):
     left.legend(fontsize=8)
     right.legend(fontsize=7, ncol=2)
     fig.tight_layout()
-    fig.savefig(path, dpi=90, metadata={"Software": None})
+    picture = io.BytesIO()
+    fig.savefig(picture, format="png", dpi=90, metadata={"Software": None})
     plt.close(fig)
+    page.write(path, picture.getvalue())  # the output rule, as the page
     return path
 
 
@@ -114,8 +119,9 @@ def main():
                   "--balance) itself", args.simulate)
     jobs = []
     for scene in SCENES:
-        with open(os.path.join(ROOT, "scenes", scene)) as f:
-            patches = len(json.load(f)["patches"])
+        # Through the read gate: the scene is an input, so no page is written onto it.
+        patches = len(json.loads(input_file.read_input_text(
+            os.path.join(ROOT, "scenes", scene), "scene file", SCENE_BYTES))["patches"])
         for R, V in CONFIGS:
             if R > patches:  # a radiosity processor needs a patch
                 print(scene, R, V, "skipped:", patches, "patches", file=sys.stderr)

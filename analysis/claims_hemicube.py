@@ -477,6 +477,7 @@ def section(results_root, jobs=2, sweep_file=SWEEP):
     return markdown(rows, references, cycles, scenes, files, choices, sweep_file)
 
 
+@page.refusing_outputs("claims_hemicube.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results")

@@ -20,6 +20,7 @@ from ncube.interpreter import use_project_python  # noqa: E402
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import argparse
+import io
 import json
 import subprocess
 import sys
@@ -153,8 +154,10 @@ def figure(cells, models, base_values, capacity, path):
     ax.set_title("Where every memory observation of the paper holds (green)")
     ax.legend(loc="upper right")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    picture = io.BytesIO()
+    fig.savefig(picture, format="png", dpi=110)
     plt.close(fig)
+    page.write(path, picture.getvalue())  # the output rule, as the page
 
 
 @page.refusing_outputs("memory_sensitivity.py")

@@ -26,7 +26,8 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import numpy as np  # noqa: E402
 
-from ncube import output_file, page  # noqa: E402
+from ncube import output_file  # noqa: E402
+from ncube import page as page_rule  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, ROOT  # noqa: E402
 
 STUDY = EXPERIMENTS / "unknowns" / "study.json"
@@ -527,7 +528,7 @@ def figure(summary, path):
     save(fig, path)
 
 
-@page.refusing_outputs("unknowns.py")
+@page_rule.refusing_outputs("unknowns.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     study_defaults = json.loads(STUDY.read_text())

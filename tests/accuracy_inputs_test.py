@@ -114,8 +114,9 @@ with tempfile.TemporaryDirectory() as folder:
     for target in (mesh, ref, w / "link.json"):
         refused(f"--json onto {target.name}", mesh, ref, "--json", target, says="is the input file")
     check((mesh.read_bytes(), ref.read_bytes()) == before, "the inputs are unchanged")
+    # docs/cli.md, "Output files": a missing folder is exit 2 (as ./simulate), a folder 5.
     refused("--json into a folder that does not exist", mesh, ref, "--json", w / "no" / "out.json",
-            code=5, says="cannot be written")
+            code=2, says="does not exist")
 
 if failures:
     print(f"{len(failures)} check(s) failed")

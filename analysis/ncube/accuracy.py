@@ -45,7 +45,7 @@ import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file, output_file, page  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -269,15 +269,16 @@ def main(argv=None):
         for k, e in enumerate(result["per_element"]):
             print(f"element {k} " + ("undefined" if e is None else f"{e:+.4g}"))
     if args.json:
+        # page.write: the output rule with docs/cli.md's exits (onto an input, a loop of links
+        # or a missing folder 2; anything else 5).
         try:
-            output_file.write(args.json, json.dumps(result, indent=1, allow_nan=False) + "\n")
+            page.write(args.json, json.dumps(result, indent=1, allow_nan=False) + "\n")
         except output_file.OutputIsInputError as e:
             print(f"accuracy: --json {e}", file=sys.stderr)
             return 2
-        except OSError as e:
-            print(f"accuracy: --json {args.json}: cannot be written: {e.strerror or e}",
-                  file=sys.stderr)
-            return 5
+        except page.PageWriteError as e:
+            print(f"accuracy: --json {e}", file=sys.stderr)
+            return e.code
     return 0
 
 

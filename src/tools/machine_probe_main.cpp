@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "machine/cost_model.h"
+#include "machine/platform_shape.h"
 #include "machine/rate_fit.h"
 #include "machine/work_kinds.h"
 #include "radiosity/radiosity_engine.h"
@@ -388,6 +389,9 @@ int machine_probe(int argc, char** argv) {
   ncube::OutputFiles outputs({{"--out", out_file}}, {network_file, cost_model_file});
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const std::string network = ncube::read_input_file(network_file, ncube::kSimgridPlatformFile);
+  // The network file is kept in the platform it writes: held to the limits ./simulate holds a
+  // platform to (depth, hosts, topology strings; platform_shape.h) before any time is spent.
+  ncube::check_platform_shape(network_file, network);
 
   // The loop and the gather in every room; the loop's three rates fitted, the gather's one.
   std::vector<Timing> loops, gathers;

@@ -240,7 +240,7 @@ TOOL_OUTPUTS = [
 PAGE_SCRIPTS = {
     "report.py": "held", "predictions.py": "held", "adaptive.py": "held",
     "patch_order.py": "held", "memory_sensitivity.py": "held", "calibrate.py": "held",
-    "claims.py": "held", "claims_schemes.py": "held", "machines.py": "held", "unknowns.py": "held",
+    "claims.py": "held", "claims_schemes.py": "held", "claims_hemicube.py": "held", "machines.py": "held", "unknowns.py": "held",
 }
 
 TOOL_OUTPUT_KINDS = ["new", "regular", "link", "dangling link", "link loop", "fifo",
