@@ -58,24 +58,37 @@ void collect_receivers(const Scene& scene, const NodePrograms& programs,
   }
 }
 
-// The shooter-centred scheme (nodes/shooter_processor.h): R nodes, each the whole scene.
-void check_shooters(const Scene&, const SimulationConfig& config) {
-  const std::string what = "--parallelisation shooters: ";
+// What a shooter-centred scheme refuses, each option with the scheme's own reason (the words
+// after "--parallelisation NAME: "); the same four rules for every such scheme.
+struct ShooterCentredReasons {
+  std::string visibility, subdivide, balance;
+};
+
+void check_shooter_centred(const SimulationConfig& config, const std::string& scheme,
+                           const ShooterCentredReasons& why) {
+  const std::string what = "--parallelisation " + scheme + ": ";
   if (config.visibility_processors != 0)
-    throw InputError(what + "V=" + std::to_string(config.visibility_processors) +
-                     ", but every node of the shooter-centred scheme holds the whole scene and "
-                     "traces its own rays (use --V 0)");
+    throw InputError(what + "V=" + std::to_string(config.visibility_processors) + ", but " +
+                     why.visibility + " (use --V 0)");
   if (config.options.subdivision.enabled)
-    throw InputError(what + "--subdivide is not modelled (every node would have to cut the "
-                            "same elements)");
+    throw InputError(what + "--subdivide is not modelled (" + why.subdivide + ")");
   if (config.balancing.enabled)
-    throw InputError(what + "--balance does not apply (every node holds every patch)");
+    throw InputError(what + "--balance does not apply (" + why.balance + ")");
   if (config.render.enabled)
     throw InputError(what + "--render-parallel is not modelled for this scheme");
   if (config.shooters_per_iteration > config.radiosity_processors)
     throw InputError("--shooters-per-iteration " + std::to_string(config.shooters_per_iteration) +
                      ": at most one shooter per node, and R=" +
                      std::to_string(config.radiosity_processors));
+}
+
+// The shooter-centred scheme (nodes/shooter_processor.h): R nodes, each the whole scene.
+void check_shooters(const Scene&, const SimulationConfig& config) {
+  check_shooter_centred(config, "shooters",
+                        {"every node of the shooter-centred scheme holds the whole scene and "
+                         "traces its own rays",
+                         "every node would have to cut the same elements",
+                         "every node holds every patch"});
 }
 
 void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
@@ -134,22 +147,11 @@ void collect_shooters(const Scene& scene, const NodePrograms& programs, const Pl
 // Çapın, Aykanat & Özgüç's scheme (nodes/circulation_processor.h): R nodes on a ring, each
 // owning the paper's share of the patches.
 void check_circulation(const Scene&, const SimulationConfig& config) {
-  const std::string what = "--parallelisation circulation: ";
-  if (config.visibility_processors != 0)
-    throw InputError(what + "V=" + std::to_string(config.visibility_processors) +
-                     ", but every node of the circulation scheme computes its shooter's form "
-                     "factors to the whole scene itself (use --V 0)");
-  if (config.options.subdivision.enabled)
-    throw InputError(what + "--subdivide is not modelled (the blocks of the light distribution "
-                            "would change size)");
-  if (config.balancing.enabled)
-    throw InputError(what + "--balance does not apply (the source's task assignment is static)");
-  if (config.render.enabled)
-    throw InputError(what + "--render-parallel is not modelled for this scheme");
-  if (config.shooters_per_iteration > config.radiosity_processors)
-    throw InputError("--shooters-per-iteration " + std::to_string(config.shooters_per_iteration) +
-                     ": at most one shooter per node, and R=" +
-                     std::to_string(config.radiosity_processors));
+  check_shooter_centred(config, "circulation",
+                        {"every node of the circulation scheme computes its shooter's form "
+                         "factors to the whole scene itself",
+                         "the blocks of the light distribution would change size",
+                         "the source's task assignment is static"});
 }
 
 void launch_circulation(NodePrograms& programs, const ProgramSetup& setup,
