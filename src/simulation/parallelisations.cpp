@@ -58,6 +58,20 @@ void collect_receivers(const Scene& scene, const NodePrograms& programs,
   }
 }
 
+// What a shooter-centred scheme reports from its node 0: convergence, the shots, and the
+// iterations' simulated seconds (each iteration's end less the previous one's).
+template <typename ShooterCentredNode>
+void take_iterations(const ShooterCentredNode& first, SimulationResult& result) {
+  result.converged = first.converged();
+  result.shooters = first.shooters();
+  result.iterations = int(first.iteration_ends().size());
+  double previous = 0.0;
+  for (double end : first.iteration_ends()) {
+    result.iteration_seconds.push_back(end - previous);
+    previous = end;
+  }
+}
+
 // What a shooter-centred scheme refuses, each option with the scheme's own reason (the words
 // after "--parallelisation NAME: "); the same four rules for every such scheme.
 struct ShooterCentredReasons {
@@ -117,14 +131,7 @@ void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
 void collect_shooters(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
                       SimulationResult& result) {
   const ShooterProcessor& first = programs.shooters.front();
-  result.converged = first.converged();
-  result.shooters = first.shooters();
-  result.iterations = int(first.iteration_ends().size());
-  double previous = 0.0;
-  for (double end : first.iteration_ends()) {
-    result.iteration_seconds.push_back(end - previous);
-    previous = end;
-  }
+  take_iterations(first, result);
   // Every node holds the same solution; node 0's is reported. A node whose radiosities
   // differ would be a bug of the exchange: the run fails (exit 4) naming it.
   const RadiosityEngine& reported = programs.engines.front();
@@ -179,14 +186,7 @@ void launch_circulation(NodePrograms& programs, const ProgramSetup& setup,
 void collect_circulation(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
                          SimulationResult& result) {
   const CirculationProcessor& first = programs.circulation.front();
-  result.converged = first.converged();
-  result.shooters = first.shooters();
-  result.iterations = int(first.iteration_ends().size());
-  double previous = 0.0;
-  for (double end : first.iteration_ends()) {
-    result.iteration_seconds.push_back(end - previous);
-    previous = end;
-  }
+  take_iterations(first, result);
   // Each patch as its owner holds it (the other nodes' copies of it are never updated).
   result.solution.assign(scene.patches.size(), PatchSolution{});
   result.patch_radiosity.assign(scene.patches.size(), Rgb(0.0));

@@ -374,18 +374,7 @@ int machine_probe(int argc, char** argv) {
   app.add_option("--repeats", repeats, "times each kernel is timed (the median is the rate)")
       ->capture_default_str()->check(CLI::Range(3, 101));
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return ncube::kExitOk;
-  } catch (const CLI::CallForVersion& e) {
-    std::cout << e.what() << "\n";
-    return ncube::kExitOk;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "machine_probe: " << e.what() << "\n(see machine_probe --help)\n";
-    return ncube::kExitBadInput;
-  }
+  if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
   ncube::OutputFiles outputs({{"--out", out_file}}, {network_file, cost_model_file});
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const std::string network = ncube::read_input_file(network_file, ncube::kSimgridPlatformFile);

@@ -67,18 +67,7 @@ int network_bench(int argc, char** argv) {
   app.set_version_flag("--version", [] {
     return "network_bench " + ncube::code_version() + " (SimGrid " + ncube::simgrid_version() + ")";
   });
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return ncube::kExitOk;
-  } catch (const CLI::CallForVersion& e) {
-    std::cout << e.what() << "\n";
-    return ncube::kExitOk;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "network_bench: " << e.what() << "\n(see network_bench --help)\n";
-    return ncube::kExitBadInput;
-  }
+  if (const auto ended = ncube::parse_command_line(app, "network_bench", argc, argv)) return *ended;
   platform_file = ncube::find_input(platform_file, ncube::InputRole::kPlatform, root);
   cost_model_file = ncube::find_input(cost_model_file, ncube::InputRole::kCostModel, root);
   if (min_bytes % 8 != 0)

@@ -12,6 +12,7 @@
 #include "simulation/trace_file.h"
 #include "tools/input_lookup.h"
 #include "tools/option_table.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 #include "util/version.h"
 #include "visibility/visibility_methods.h"
@@ -277,18 +278,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     }
   }
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return kExitOk;
-  } catch (const CLI::CallForVersion& e) {
-    std::cout << e.what() << "\n";
-    return kExitOk;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "simulate: " << e.what() << "\n(see simulate --help)\n";
-    return kExitBadInput;
-  }
+  if (const auto ended = parse_command_line(app, "simulate", argc, argv)) return *ended;
   for (CLI::Option* option : import_options)
     options.import_options_given = options.import_options_given || option->count() > 0;
   if (options.scene_file.empty() && !options.check_settings && !options.platform_nodes) {

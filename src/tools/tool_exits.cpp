@@ -1,5 +1,7 @@
 #include "tools/tool_exits.h"
 
+#include <CLI/CLI.hpp>
+
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -38,6 +40,22 @@ int run_tool(const char* tool, const std::function<int()>& run, OtherRuntimeErro
     std::cerr << prefix << "internal error: an unknown exception\n";
     return kExitInternalError;
   }
+}
+
+std::optional<int> parse_command_line(CLI::App& app, const char* tool, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << tool << ": " << e.what() << "\n(see " << tool << " --help)\n";
+    return kExitBadInput;
+  }
+  return std::nullopt;
 }
 
 }  // namespace ncube

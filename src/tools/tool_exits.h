@@ -4,6 +4,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+
+namespace CLI {
+class App;
+}
 
 namespace ncube {
 
@@ -14,5 +19,10 @@ enum class OtherRuntimeErrors { kInternalError, kSimulationFailed };
 
 int run_tool(const char* tool, const std::function<int()>& run,
               OtherRuntimeErrors other = OtherRuntimeErrors::kInternalError);
+
+// The command line parsed as every tool parses it: --help and --version print and end the
+// run (exit 0), a bad option is one line, "(see TOOL --help)" and exit 2. Returns the exit
+// code when the run ends here, nothing when it goes on.
+std::optional<int> parse_command_line(CLI::App& app, const char* tool, int argc, char** argv);
 
 }  // namespace ncube
