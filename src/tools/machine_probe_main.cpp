@@ -381,6 +381,9 @@ int machine_probe(int argc, char** argv) {
   // The network file is kept in the platform it writes: held to the limits ./simulate holds a
   // platform to (depth, hosts, topology strings; platform_shape.h) before any time is spent.
   ncube::check_platform_shape(network_file, network);
+  // And it must take the rates (a node speed, node_memory, a header comment): tried with
+  // placeholders here, so that a file that cannot is refused before the seconds of timing.
+  probed_platform(network_file, network, {{"test_speed", 1.0}}, "");
 
   // The loop and the gather in every room; the loop's three rates fitted, the gather's one.
   std::vector<Timing> loops, gathers;

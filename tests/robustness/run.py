@@ -233,7 +233,8 @@ def run_threats(args, work, pool):
     futures = {}
     for cell in threat_model.cells(simulate):
         futures[pool.submit(threat_cases.run_cell, cell, Path(work), root, simulate,
-                            args.cell_timeout, args.memory_mb << 20)] = cell
+                            args.cell_timeout * threat_model.time_factor(cell),
+                            args.memory_mb << 20)] = cell
     return futures
 
 

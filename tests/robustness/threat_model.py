@@ -306,20 +306,37 @@ class Cell:
         return issue_class(self.kind, self.direction)
 
 
+# machine_probe times its kernels on a shared host: a fit that the host disturbed ends in exit 4
+# with nothing written (docs/cli.md, "machine_probe"), as clean an end as 0 for a run that gets
+# that far; and its runs get PROBE_TIME_FACTOR times the cell timeout (about 2.5 s of CPU each
+# on an idle core, several of them at once beside the rest of the suite).
+PROBE_TIME_FACTOR = 5
+
+
+def probe_expect(expect):
+    return expect | {"failed"} if "ok" in expect else expect
+
+
+def time_factor(cell):
+    return PROBE_TIME_FACTOR if getattr(cell.surface, "run", "") == "probe" else 1
+
+
 def cells(simulate):
     found = []
     for surface in INPUTS + TOOL_INPUTS:
         for kind in input_kinds(surface):
+            expect = input_expect(surface, kind)
             found.append(Cell(f"read {surface.id} / {kind}", "read", surface, kind,
-                              input_expect(surface, kind)))
+                              probe_expect(expect) if surface.run == "probe" else expect))
         contents = CONTENT_CLASSES[surface.fmt] if not surface.absolute else []
         for content in contents if surface.run != "probe" else ["garbage", "deep nesting"]:
             found.append(Cell(f"content {surface.id} / {content}", "content", surface, content,
                               {"error"}))
     for output in TOOL_OUTPUTS:
         for kind in PROBE_OUTPUT_KINDS if output.run == "probe" else TOOL_OUTPUT_KINDS:
+            expect = {OUTPUT_KINDS[kind][0]}
             found.append(Cell(f"write {output.id} / {kind}", "write", output, kind,
-                              {OUTPUT_KINDS[kind][0]}))
+                              probe_expect(expect) if output.run == "probe" else expect))
         for name in output.inputs:
             found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
