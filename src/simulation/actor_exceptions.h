@@ -18,15 +18,9 @@ class ActorExceptions {
   ActorExceptions();
   // `body` as an actor's code: an exception it throws (derived from std::exception; SimGrid's
   // own ForcefulKillException, which kills an actor, is not one and passes) is kept and ends
-  // the simulation. Call it as Actor::create's argument: it hands back one of the stacks
-  // check_stacks reserved, for SimGrid to allocate right after.
+  // the simulation. Create the actor with create_actor (simulation/actor_stacks.h), which
+  // hands it one of the stacks reserve_actor_stacks reserved.
   std::function<void()> guard(std::function<void()> body);
-  // Throws HostMemoryError (exit 6, one line with the figures) when the host cannot hold the
-  // stacks of `actors` more actors: SimGrid ends the process (xbt_die, exit 134) when it
-  // cannot allocate an actor's stack. The stacks are reserved (allocated, never touched) until
-  // guard() hands them back one by one, so that what is allocated between this call and the
-  // actors' creation cannot take their room.
-  static void check_stacks(std::size_t actors);
   // Rethrows the first kept exception, if there is one; call after Engine::run returned.
   void rethrow_first() const;
 

@@ -7,6 +7,7 @@
 #include <simgrid/s4u/Actor.hpp>
 #include <simgrid/s4u/Engine.hpp>
 
+#include "simulation/actor_stacks.h"
 
 namespace ncube {
 
@@ -38,21 +39,20 @@ void launch_node_programs(NodePrograms& programs, const ProgramSetup& setup,
   build_host_machinery(programs.host, scene, patch_sets, setup.options, V, R, setup.block_size,
                        setup.loads_change());
   const OccluderSet* all = V == 0 ? programs.host.occluders.front().get() : nullptr;
-  ActorExceptions::check_stacks(std::size_t(R) * std::size_t(V + 1));
+  reserve_actor_stacks(std::size_t(R) * std::size_t(V + 1));
   int next_runtime = 0;
   for (int rank = 0; rank < R; ++rank) {
     NodeRuntime& rp_runtime = programs.runtimes[next_runtime++];
     RadiosityEngine& radiosity = programs.engines.emplace_back(scene, owned[std::size_t(rank)]);
     radiosity.use_host_assist(programs.host.assist.get(), rank);
     RadiosityProcessor& rp = programs.radiosity.emplace_back(setup, rank, rp_runtime, radiosity, all);
-    simgrid::s4u::Actor::create("radiosity-" + std::to_string(rank),
-                                hosts[setup.placement.radiosity_node(rank)],
-                                programs.exceptions.guard([&rp] { rp.run(); }));
+    create_actor("radiosity-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
+                 programs.exceptions.guard([&rp] { rp.run(); }));
     for (int j = 0; j < V; ++j) {
       const OccluderSet& share = *programs.host.occluders[std::size_t(j)];
       VisibilityProcessor& vp =
           programs.visibility.emplace_back(setup, programs.runtimes[next_runtime++], share);
-      simgrid::s4u::Actor::create(
+      create_actor(
           "visibility-" + std::to_string(rank) + "." + std::to_string(j),
           hosts[setup.placement.visibility_node(rank, j)],
           programs.exceptions.guard([&vp] { vp.run(); }));

@@ -6,6 +6,7 @@
 #include <simgrid/s4u/Actor.hpp>
 
 #include "nodes/placement.h"
+#include "simulation/actor_stacks.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -115,15 +116,14 @@ void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
   // the paper's program without visibility processors has them.
   build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
   const OccluderSet& occluders = *programs.host.occluders.front();
-  ActorExceptions::check_stacks(std::size_t(R));
+  reserve_actor_stacks(std::size_t(R));
   for (int rank = 0; rank < R; ++rank) {
     RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
     engine.use_host_assist(programs.host.assist.get(), rank);
     ShooterProcessor& node = programs.shooters.emplace_back(
         setup, rank, programs.runtimes[std::size_t(rank)], engine, occluders);
-    simgrid::s4u::Actor::create("shooter-" + std::to_string(rank),
-                                hosts[setup.placement.radiosity_node(rank)],
-                                programs.exceptions.guard([&node] { node.run(); }));
+    create_actor("shooter-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
+                 programs.exceptions.guard([&node] { node.run(); }));
   }
   report_iterations(programs.shooters.front(), config, setup.emitted_power);
 }
@@ -170,15 +170,14 @@ void launch_circulation(NodePrograms& programs, const ProgramSetup& setup,
   build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
   const OccluderSet& occluders = *programs.host.occluders.front();
   const std::vector<std::vector<int>> owned = owned_patches(setup);
-  ActorExceptions::check_stacks(std::size_t(R));
+  reserve_actor_stacks(std::size_t(R));
   for (int rank = 0; rank < R; ++rank) {
     RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
     engine.use_host_assist(programs.host.assist.get(), rank);
     CirculationProcessor& node = programs.circulation.emplace_back(
         setup, rank, owned, programs.runtimes[std::size_t(rank)], engine, occluders);
-    simgrid::s4u::Actor::create("circulation-" + std::to_string(rank),
-                                hosts[setup.placement.radiosity_node(rank)],
-                                programs.exceptions.guard([&node] { node.run(); }));
+    create_actor("circulation-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
+                 programs.exceptions.guard([&node] { node.run(); }));
   }
   report_iterations(programs.circulation.front(), config, setup.emitted_power);
 }

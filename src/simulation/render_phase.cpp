@@ -8,6 +8,7 @@
 #include "nodes/placement.h"
 #include "nodes/render_processor.h"
 #include "simulation/actor_exceptions.h"
+#include "simulation/actor_stacks.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -56,7 +57,7 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
       }
   std::deque<NodeRuntime> runtimes;
   std::deque<RenderProcessor> programs;
-  ActorExceptions::check_stacks(std::size_t(N));
+  reserve_actor_stacks(std::size_t(N));
   ActorExceptions exceptions;  // a program's exception (the host out of memory), rethrown
   for (int node = 0; node < N; ++node) {
     const bool radiosity = node % (V + 1) == 0;
@@ -65,8 +66,8 @@ RenderResult run_render_phase(const Scene& scene, const RenderOptions& options, 
     runtime.set_memory(memory[std::size_t(node)]);
     runtime.set_trace_render();
     RenderProcessor& program = programs.emplace_back(setup, node, runtime);
-    simgrid::s4u::Actor::create("render-" + std::to_string(node), hosts[std::size_t(node)],
-                                exceptions.guard([&program] { program.run(); }));
+    create_actor("render-" + std::to_string(node), hosts[std::size_t(node)],
+                 exceptions.guard([&program] { program.run(); }));
   }
   result.ran = true;
   const double start = simgrid::s4u::Engine::get_clock();
