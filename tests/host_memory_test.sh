@@ -7,11 +7,12 @@
 # left). The limit is found by bisection (the smallest that runs), then every limit in the
 # 60 MB below it is tried: each ends in exit 0 or 6, one of them in 6, and none leaves a file.
 # Lower limits fail where SimGrid allocates the actors' stacks, which SimGrid itself turns into
-# an abort: the stacks' memory is asked for first (ActorExceptions::check_stacks), so these
-# too are exit 6 (naming the stacks). SimGrid's own allocations (xbt_malloc, in the maestro) end the process
-# with xbt's "Memory (c)allocation of N bytes failed" and an abort that no code of ours sees:
-# a limit where one of those fails first is exit 134 with that message, counted and allowed
-# (docs/cli.md, exit 6), but it must leave no file either, and most limits must still be 6.
+# an abort: the stacks are reserved first and handed to SimGrid (reserve_actor_stacks,
+# src/simulation/actor_stacks.h), so these too are exit 6 (naming the stacks). SimGrid's own
+# allocations (xbt_malloc, in the maestro) end the process with xbt's "Memory (c)allocation of
+# N bytes failed" and an abort that no code of ours sees: a limit where one of those fails
+# first is exit 134 with that message, counted and allowed (docs/cli.md, exit 6), but it must
+# leave no file either, and most limits must still be 6.
 # THREADS=N runs with N host threads (default 1).
 # Usage: bash tests/host_memory_test.sh <path-to-simulate-binary> <repo-root>
 set -euo pipefail

@@ -93,6 +93,7 @@ struct Reservation {
   // it takes the offered block: its SwappedContext with a guard (3.32 without model checking;
   // the thread factory's stacks are the threads', a guard of 0 pages is a calloc).
   bool handed_over = false;
+  std::size_t taken = 0;  // by SimGrid, as offered
   Room room;
 };
 Reservation& reservation() {
@@ -114,6 +115,7 @@ void reserve_actor_stacks(std::size_t actors) {
   const std::size_t page = std::size_t(sysconf(_SC_PAGESIZE));
   Reservation& reserved = reservation();
   reserved.stacks.clear();
+  reserved.taken = 0;
   reserved.stack_bytes = std::size_t(kib) * 1024 + std::size_t(guard_pages) * page;
   reserved.handed_over = !SIMGRID_HAVE_MC && guard_pages > 0 &&
                          simgrid::config::get_value<std::string>("contexts/factory") != "thread";
@@ -170,12 +172,17 @@ void create_actor(const std::string& name, simgrid::s4u::Host* host, std::functi
     settle();
     throw;
   }
-  if (!settle())
-    throw std::logic_error("SimGrid did not take the stack reserved for actor " + name + " (" +
-                           std::to_string(reserved.stack_bytes) +
-                           " bytes, page-aligned, as SimGrid 3.32 allocates a stack with "
-                           "posix_memalign): src/simulation/actor_stacks.cpp must follow how "
-                           "this SimGrid allocates stacks");
+  if (settle()) {
+    ++reserved.taken;
+    return;
+  }
+  throw std::logic_error("SimGrid did not take the stack reserved for actor " + name + " (" +
+                         std::to_string(reserved.stack_bytes) +
+                         " bytes, page-aligned, as SimGrid 3.32 allocates a stack with "
+                         "posix_memalign): src/simulation/actor_stacks.cpp must follow how "
+                         "this SimGrid allocates stacks");
 }
+
+std::size_t actor_stacks_handed_over() { return reservation().taken; }
 
 }  // namespace ncube

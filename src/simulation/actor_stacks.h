@@ -37,4 +37,7 @@ void reserve_actor_stacks(std::size_t actors);
 // lost silently otherwise).
 void create_actor(const std::string& name, simgrid::s4u::Host* host, std::function<void()> code);
 
+// How many of the stacks of the last reserve_actor_stacks SimGrid took as they were offered.
+std::size_t actor_stacks_handed_over();
+
 }  // namespace ncube
