@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -101,6 +102,31 @@ Reservation& reservation() {
   return reserved;
 }
 
+// SimGrid turns each stack's guard pages PROT_NONE (mprotect), which splits the memory mapping
+// that holds the stack: two mappings per actor, and it aborts ("Failed to protect stack") when
+// the kernel's limit on a process's mappings (vm.max_map_count, 65,530 by default) is reached:
+// about 32,000 actors with a guard. Room for the mappings the run makes besides (host
+// threads' stacks, the allocator's growth; a run on 1,024 nodes had about 250 besides its
+// actors' 2,048).
+constexpr long kMappingsPerGuardedStack = 2;
+constexpr long kMappingsForTheRun = 1024;
+
+// Lines of a text file (the mappings of /proc/self/maps); -1 when it cannot be read.
+long count_lines(const char* path) {
+  std::ifstream file(path);
+  if (!file) return -1;
+  long lines = 0;
+  for (std::string line; std::getline(file, line);) ++lines;
+  return lines;
+}
+
+long read_number(const char* path) {
+  std::ifstream file(path);
+  long value = -1;
+  if (!(file >> value)) return -1;
+  return value;
+}
+
 std::string mib(std::size_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f", double(bytes) / double(1 << 20));
@@ -117,8 +143,19 @@ void reserve_actor_stacks(std::size_t actors) {
   reserved.stacks.clear();
   reserved.taken = 0;
   reserved.stack_bytes = std::size_t(kib) * 1024 + std::size_t(guard_pages) * page;
-  reserved.handed_over = !SIMGRID_HAVE_MC && guard_pages > 0 &&
-                         simgrid::config::get_value<std::string>("contexts/factory") != "thread";
+  // SimGrid's SwappedContext (every factory but the threads) guards the stacks it allocates.
+  const bool guarded = guard_pages > 0 &&
+                       simgrid::config::get_value<std::string>("contexts/factory") != "thread";
+  reserved.handed_over = guarded && !SIMGRID_HAVE_MC;
+  const long allowed = read_number("/proc/sys/vm/max_map_count");
+  const long in_use = count_lines("/proc/self/maps");
+  const long needed = kMappingsPerGuardedStack * long(actors) + kMappingsForTheRun;
+  if (guarded && allowed > 0 && in_use >= 0 && in_use + needed > allowed)
+    throw HostMemoryError(
+        "the guard pages of the stacks of the simulation's " + std::to_string(actors) +
+        " actors need about " + std::to_string(needed) + " memory mappings, and the host allows " +
+        std::to_string(allowed) + " to a process (vm.max_map_count), " + std::to_string(in_use) +
+        " in use: --cfg=contexts/guard-size:0, fewer nodes, or a larger vm.max_map_count");
   const std::size_t room = std::max(kRoomAtLeast, actors * kRoomPerActor);
   reserved.room.reset(room);
   if (!reserved.room)
