@@ -63,7 +63,7 @@ using ncube::Vec3;
 // of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both.
 // ROOMS below are the rooms timed; the room of cut 4 and 24 boxes (241 patches) is the one the
 // gather is timed on.
-ncube::Scene probe_room(int cut, int boxes) {
+ncube::Scene probe_room(int cut, int boxes, double box_scale, int screen) {
   ncube::Scene scene;
   scene.name = "machine probe room";
   auto add = [&](const Polygon& polygon, const Rgb& emission, int n) {
@@ -95,8 +95,9 @@ ncube::Scene probe_room(int cut, int boxes) {
   std::mt19937 random(1994);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int b = 0; b < boxes; ++b) {
-    const double w = 0.2 + 0.6 * unit(random), d = 0.2 + 0.6 * unit(random),
-                 h = 0.2 + 1.2 * unit(random);
+    const double w = box_scale * (0.2 + 0.6 * unit(random)),
+                 d = box_scale * (0.2 + 0.6 * unit(random)),
+                 h = std::min(Y - 1.4, box_scale * (0.2 + 1.2 * unit(random)));
     const double x = 0.1 + (X - 0.2 - w) * unit(random), z = 0.1 + (Z - 0.2 - d) * unit(random);
     const double y = b % 3 == 0 ? 0.3 + 1.0 * unit(random) : 0.0;  // a third float (shelves)
     const Vec3 p000{x, y, z}, p100{x + w, y, z}, p010{x, y + h, z}, p110{x + w, y + h, z},
@@ -108,6 +109,16 @@ ncube::Scene probe_room(int cut, int boxes) {
     add(Polygon::triangle(p010, p011, p111), Rgb(0.0), 1);    // top, facing +y
     add(Polygon::triangle(p010, p111, p110), Rgb(0.0), 1);
   }
+  // A screen: a checkerboard of screen x screen cells across the room at mid-height, every
+  // other cell a patch (facing down), so that about half the rays from below are blocked, by
+  // which cell no branch foretells.
+  for (int i = 0; i < screen; ++i)
+    for (int j = 0; j < screen; ++j) {
+      if ((i + j) % 2) continue;
+      const double x0 = X * i / screen, x1 = X * (i + 1) / screen, z0 = Z * j / screen,
+                   z1 = Z * (j + 1) / screen, y = 0.5 * Y;
+      add(Polygon::quad({x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}), Rgb(0.0), 1);
+    }
   scene.build_elements();
   return scene;
 }
@@ -121,10 +132,22 @@ ncube::Scene probe_room(int cut, int boxes) {
 // crosses a patch's plane, every test's branch goes the same way, and its tests run faster
 // than in any room with something in it (bare rooms: 3.1-4.0 ns a test against 5.2-6.2 in
 // these) — not the work a visibility computation does.
+//
+// Two more runs make the fit well-conditioned, each where one kind dominates: the shots of the
+// room of 241 patches against no patch at all (`nothing_to_test`: a ray's own work alone,
+// ray_speed), and a room with two large blocks (`box_scale` 2.5, as the Cornell box's), whose
+// rays are blocked about ten times as often a test as in the others (blocked_ray_speed).
 struct Room {
   int cut, boxes;
+  double box_scale = 1.0;
+  bool nothing_to_test = false;
+  int screen = 0;  // > 0: the loop runs against the screen's patches alone
 };
-const std::vector<Room> kRooms = {{1, 2}, {2, 4}, {3, 8}, {4, 24}, {6, 48}, {8, 100}};
+const std::vector<Room> kRooms = {{1, 2},   {2, 4},   {3, 8},
+                                  {4, 24},  {6, 48},  {8, 100},
+                                  {4, 24, 1.0, true}, {2, 0, 1.0, false, 2}};
+// Counted flops of one timed repeat of the rays with nothing to test (about 0.03 s).
+constexpr double kRayFlopsARepeat = 3e7;
 // Counted flops of one timed repeat of the loop in each room (about 0.1 s on a core of 2024):
 // a small room's shots are run several times over to reach it.
 constexpr double kLoopFlopsARepeat = 4e8;
@@ -241,7 +264,10 @@ std::string probed_platform(const std::string& network_file, const std::string& 
 // The kinds of work of the visibility loop, each a rate the fit gives: a ray's own, and its
 // tests (ray-patch tests and their plane crossings, in the cost model's proportion of flops:
 // src/machine/work_kinds.h).
-const std::vector<std::string> kLoopKinds = {"ray_speed", "test_speed"};
+const std::vector<std::string> kLoopKinds = {"ray_speed", "test_speed", "blocked_ray_speed"};
+// The gather's: the counted form factors and updates (arithmetic_speed), and the edge terms
+// the host sums for them (edge_term_speed).
+const std::vector<std::string> kGatherKinds = {"arithmetic_speed", "edge_term_speed"};
 
 double loop_flops(const ncube::CostModel& costs, const ncube::WorkCounts& counts) {
   double flops = 0;
@@ -285,11 +311,15 @@ struct RoomTimings {
 
 RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& costs) {
   Shots shots;
-  shots.scene = probe_room(room.cut, room.boxes);
+  shots.scene = probe_room(room.cut, room.boxes, room.box_scale, room.screen);
   shots.all.resize(shots.scene.patches.size());
   for (std::size_t k = 0; k < shots.all.size(); ++k) shots.all[k] = int(k);
   ncube::RadiosityEngine engine(shots.scene, shots.all);
-  const ncube::BruteForceOccluders occluders(shots.scene, shots.all,
+  std::vector<int> tested = shots.all;
+  if (room.nothing_to_test) tested.clear();
+  if (room.screen > 0)  // the screen's cells, the last patches
+    tested.assign(shots.all.end() - (room.screen * room.screen + 1) / 2, shots.all.end());
+  const ncube::BruteForceOccluders occluders(shots.scene, tested,
                                              ncube::RayTestPolicy::kTestAllPatches);
   aim(shots, engine, room);
   const auto pass = [&](ncube::WorkCounts& counts) {
@@ -310,7 +340,7 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   const double estimate = rays * double(loop.patches - 2) *
                           (costs.flops_per_ray_patch_test + 0.25 * costs.flops_per_plane_crossing);
   std::size_t stride = 1;
-  if (estimate > kLoopFlopsARepeat) {
+  if (!room.nothing_to_test && estimate > kLoopFlopsARepeat) {
     stride = std::size_t(std::ceil(estimate / kLoopFlopsARepeat));
     for (auto& receivers : shots.receivers) {
       std::vector<ncube::ElementRef> kept;
@@ -320,9 +350,15 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   }
   ncube::WorkCounts once;
   pass(once);
-  loop.passes = std::max(1, int(std::lround(kLoopFlopsARepeat / loop_flops(costs, once))));
+  loop.passes = std::max(1, int(std::lround((room.nothing_to_test ? kRayFlopsARepeat
+                                                                     : kLoopFlopsARepeat) /
+                                              loop_flops(costs, once))));
   loop.what = std::to_string(loop.patches) + " patches (cut " + std::to_string(room.cut) + ", " +
-              std::to_string(room.boxes) + " boxes), the shots " +
+              std::to_string(room.boxes) + (room.box_scale != 1.0 ? " large" : "") + " boxes" +
+              (room.screen ? ", a screen of " + std::to_string(room.screen) + " x " +
+                                 std::to_string(room.screen) + " cells" : "") +
+              "), the shots " + (room.nothing_to_test ? "against no patch, " :
+                                 room.screen ? "against the screen alone, " : "") +
               (stride > 1 ? "to 1 receiver in " + std::to_string(stride) + ", " : "") +
               std::to_string(loop.passes) + (loop.passes == 1 ? " time" : " times");
   for (int r = 0; r < repeats; ++r) {
@@ -332,6 +368,7 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
     loop.seconds.push_back(thread_seconds() - start);
     loop.counts = counts;
   }
+  if (room.nothing_to_test) return t;  // every part visible: not a gather a scene asks for
   // The gather of the masks found: its cost a counted form factor depends on which parts are
   // visible (the host sums a visible region's contour, not each part: docs/machines/probe.md),
   // so it is timed in every room, as the loop is.
@@ -343,8 +380,10 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   };
   ncube::WorkCounts gathered_once;
   gather_pass(gathered_once);
-  gather.passes = std::max(1, int(std::lround(
-      kGatherFlopsARepeat / ncube::kind_flops(costs, gathered_once, "arithmetic_speed"))));
+  double gather_flops = 0;
+  for (const std::string& kind : kGatherKinds)
+    gather_flops += ncube::kind_flops(costs, gathered_once, kind);
+  gather.passes = std::max(1, int(std::lround(kGatherFlopsARepeat / gather_flops)));
   gather.what = std::to_string(gather.patches) + " patches, the shots' gather " +
                 std::to_string(gather.passes) + " times";
   for (int r = 0; r < repeats; ++r) {
@@ -397,35 +436,53 @@ int machine_probe(int argc, char** argv) {
     for (const std::string& kind : kLoopKinds)
       run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
     runs.push_back(run);
-    gather_runs.push_back({{ncube::kind_flops(costs, timed.gather.counts, "arithmetic_speed")},
-                           median(timed.gather.seconds)});
+    if (room.nothing_to_test) {
+      gathers.pop_back();
+      continue;
+    }
+    ncube::TimedRun gather_run{{}, median(timed.gather.seconds)};
+    for (const std::string& kind : kGatherKinds)
+      gather_run.flops.push_back(ncube::kind_flops(costs, timed.gather.counts, kind));
+    gather_runs.push_back(gather_run);
   }
   const ncube::RateFit fit = ncube::fit_seconds_per_flop(runs);
   for (std::size_t k = 0; k < loops.size(); ++k)
-    std::cout << "room of " << loops[k].patches << " patches: "
+    std::cout << "room of " << loops[k].patches << " patches"
+              << (loops[k].counts.ray_patch_tests ? "" : ", nothing to test") << ": "
               << number(double(loops[k].counts.ray_patch_tests) / double(loops[k].counts.rays), 4)
               << " tests a ray, "
-              << number(100.0 * double(loops[k].counts.plane_crossings) /
-                        double(loops[k].counts.ray_patch_tests), 3)
-              << " % crossing, " << number(median(loops[k].seconds), 4) << " s, "
-              << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.ray_patch_tests), 4)
-              << " ns a test, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(100.0 * double(loops[k].counts.blocked_rays) / double(loops[k].counts.rays), 3)
+              << " % blocked, " << number(median(loops[k].seconds), 4) << " s, "
+              << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.rays), 4)
+              << " ns a ray, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
               << number(100 * fit.relative_residuals[k], 2) << " %\n";
+  const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
+  // (rate, flop/s), node_speed's (test_speed) first: the rates of the two fits.
   std::vector<std::pair<std::string, double>> rates;
-  for (std::size_t k = 0; k < kLoopKinds.size(); ++k) {
-    if (!(fit.seconds_per_flop[k] > 0))
-      throw MeasurementFailed("the fit of the visibility loop's times gave " + kLoopKinds[k] +
-                              " no time or less (" + number(fit.seconds_per_flop[k], 4) +
-                              " s a flop): the host was too disturbed; probe again, or with "
-                              "more --repeats");
-    rates.push_back({kLoopKinds[k], 1 / fit.seconds_per_flop[k]});
-  }
+  const auto take = [&rates](const ncube::RateFit& f, const std::vector<std::string>& kinds,
+                             const std::string& kernel) {
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+      if (!(f.seconds_per_flop[k] > 0))
+        throw MeasurementFailed("the fit of the " + kernel + "'s times gave " + kinds[k] +
+                                " no time or less (" + number(f.seconds_per_flop[k], 4) +
+                                " s a flop): the host was too disturbed; probe again, or with "
+                                "more --repeats");
+      rates.push_back({kinds[k], 1 / f.seconds_per_flop[k]});
+    }
+  };
+  take(fit, kLoopKinds, "visibility loop");
+  take(gather_fit, kGatherKinds, "gather");
   // node_speed (and so memory_speed's kind) is the test rate: the first of the file's rates.
   std::swap(rates[0], rates[1]);
-  const double test_speed = rates[0].second, ray_speed = rates[1].second;
-  const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
-  const double arithmetic_speed = 1 / gather_fit.seconds_per_flop[0];
-  rates.push_back({"arithmetic_speed", arithmetic_speed});
+  const auto rate_of = [&rates](const std::string& name) {
+    for (const auto& [rate, value] : rates)
+      if (rate == name) return value;
+    throw std::logic_error("machine_probe: no rate " + name);
+  };
+  const double test_speed = rate_of("test_speed"), ray_speed = rate_of("ray_speed"),
+               blocked_ray_speed = rate_of("blocked_ray_speed"),
+               arithmetic_speed = rate_of("arithmetic_speed"),
+               edge_term_speed = rate_of("edge_term_speed");
 
   const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
@@ -443,31 +500,38 @@ int machine_probe(int argc, char** argv) {
         << "     that kind outside a node program) and so runs at node_speed.\n"
         << "     test_speed = " << number(test_speed, 6) << " flop/s ("
         << number(1e9 * costs.flops_per_ray_patch_test / test_speed, 3)
-        << " ns a ray-patch test) and ray_speed = " << number(ray_speed, 6) << " flop/s\n       ("
+        << " ns a ray-patch test), ray_speed = " << number(ray_speed, 6) << " flop/s\n       ("
         << number(1e9 * costs.flops_per_ray / ray_speed, 3) << " ns a ray's own work besides "
-        << "its tests): the brute-force visibility loop\n       (visible_parts over "
-        << "BruteForceOccluders, " << kShooters << " shooters of 64 parts) in " << loops.size()
-        << " rooms, the relative\n       least squares fit of the median time = ray flops / "
-        << "ray_speed + test flops / test_speed\n       (src/machine/rate_fit.h; test flops: "
-        << "the ray-patch tests' and their plane crossings'),\n       root mean square residual "
-        << number(100 * fit.rms_relative_residual, 2) << " %. Each room: its counts a repeat, "
-        << "median of " << repeats << " repeats,\n       spread (fastest - slowest over the "
-        << "median), fitted - measured:\n";
+        << "its tests) and blocked_ray_speed = " << number(blocked_ray_speed, 6)
+        << " flop/s\n       (" << number(1e9 * costs.flops_per_blocked_ray / blocked_ray_speed, 3)
+        << " ns a blocked ray's more): the brute-force visibility loop (visible_parts over\n"
+        << "       BruteForceOccluders, " << kShooters << " shooters of 64 parts) in " << loops.size()
+        << " runs, the relative least squares fit of the median\n       time = ray flops / "
+        << "ray_speed + test flops / test_speed + blocked flops / blocked_ray_speed\n       "
+        << "(src/machine/rate_fit.h; test flops: the ray-patch tests' and their plane crossings'),"
+        << "\n       root mean square residual " << number(100 * fit.rms_relative_residual, 2)
+        << " %. Each run: its counts a repeat, median of " << repeats << " repeats,\n       spread "
+        << "(fastest - slowest over the median), fitted - measured:\n";
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const Timing& t = loops[k];
     about << "       " << t.what << ": "
           << number(double(t.counts.ray_patch_tests) / double(t.counts.rays), 4)
-          << " tests a ray, " << number(100.0 * double(t.counts.plane_crossings) /
-                                        double(t.counts.ray_patch_tests), 3)
-          << " % of them crossing; " << counts_text(t.counts) << "; " << number(median(t.seconds), 4)
-          << " s, spread " << number(100 * spread(t.seconds), 2) << " %, residual "
-          << (fit.relative_residuals[k] >= 0 ? "+" : "")
+          << " tests a ray, " << number(100.0 * double(t.counts.blocked_rays) /
+                                        double(t.counts.rays), 3)
+          << " % of the rays blocked; " << counts_text(t.counts) << "; "
+          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << " %, residual " << (fit.relative_residuals[k] >= 0 ? "+" : "")
           << number(100 * fit.relative_residuals[k], 2) << " %.\n";
   }
-  about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s: the engine's "
-        << "gather (point-to-part form factors,\n       radiosity updates) of the same shots in "
-        << "the same rooms, the relative least squares fit of\n       the median time = "
-        << "arithmetic flops / arithmetic_speed, root mean square residual "
+  about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s and edge_term_speed = "
+        << number(edge_term_speed, 6) << " flop/s (" << number(1e9 * costs.flops_per_form_factor /
+                                                              arithmetic_speed, 3)
+        << " ns a counted form factor,\n       "
+        << number(1e9 * costs.flops_per_form_factor_edge_term / edge_term_speed, 3)
+        << " ns an edge term): the engine's gather (point-to-part form factors, radiosity\n       "
+        << "updates) of the same shots in the same rooms, the relative least squares fit of the\n"
+        << "       median time = arithmetic flops / arithmetic_speed + edge-term flops / "
+        << "edge_term_speed,\n       root mean square residual "
         << number(100 * gather_fit.rms_relative_residual, 2) << " %:\n";
   for (std::size_t k = 0; k < gathers.size(); ++k) {
     const Timing& t = gathers[k];
