@@ -146,13 +146,13 @@ struct Room {
 const std::vector<Room> kRooms = {{1, 2},   {2, 4},   {3, 8},
                                   {4, 24},  {6, 48},  {8, 100},
                                   {4, 24, 1.0, true}, {2, 0, 1.0, false, 2}};
-// Counted flops of one timed repeat of the rays with nothing to test (about 0.03 s).
-constexpr double kRayFlopsARepeat = 3e7;
-// Counted flops of one timed repeat of the loop in each room (about 0.1 s on a core of 2024):
+// Counted flops of one timed repeat of the rays with nothing to test (about 0.01 s).
+constexpr double kRayFlopsARepeat = 6e7;
+// Counted flops of one timed repeat of the loop in each room (about 0.07 s on a core of 2024):
 // a small room's shots are run several times over to reach it.
-constexpr double kLoopFlopsARepeat = 4e8;
-// The same for the gather (arithmetic flops; about 0.02 s).
-constexpr double kGatherFlopsARepeat = 2e8;
+constexpr double kLoopFlopsARepeat = 3e8;
+// The same for the gather (its flops as a probed machine is charged them; about 0.02 s).
+constexpr double kGatherFlopsARepeat = 3e7;
 
 double thread_seconds() {
   timespec t{};
@@ -368,7 +368,11 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
     loop.seconds.push_back(thread_seconds() - start);
     loop.counts = counts;
   }
-  if (room.nothing_to_test) return t;  // every part visible: not a gather a scene asks for
+  // With nothing to test every part is visible, not a gather a scene asks for; there the
+  // gather is timed with no part visible instead: each receiver's own work alone (the light
+  // test, the update: element_updates, arithmetic_speed), where that kind dominates.
+  if (room.nothing_to_test)
+    for (auto& masks : shots.masks) std::fill(masks.begin(), masks.end(), ncube::PartMask(0));
   // The gather of the masks found: its cost a counted form factor depends on which parts are
   // visible (the host sums a visible region's contour, not each part: docs/machines/probe.md),
   // so it is timed in every room, as the loop is.
@@ -384,7 +388,8 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   for (const std::string& kind : kGatherKinds)
     gather_flops += ncube::kind_flops(costs, gathered_once, kind);
   gather.passes = std::max(1, int(std::lround(kGatherFlopsARepeat / gather_flops)));
-  gather.what = std::to_string(gather.patches) + " patches, the shots' gather " +
+  gather.what = std::to_string(gather.patches) + " patches, the shots' gather" +
+                (room.nothing_to_test ? " with no part visible " : " ") +
                 std::to_string(gather.passes) + " times";
   for (int r = 0; r < repeats; ++r) {
     ncube::WorkCounts counts;
@@ -436,10 +441,6 @@ int machine_probe(int argc, char** argv) {
     for (const std::string& kind : kLoopKinds)
       run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
     runs.push_back(run);
-    if (room.nothing_to_test) {
-      gathers.pop_back();
-      continue;
-    }
     ncube::TimedRun gather_run{{}, median(timed.gather.seconds)};
     for (const std::string& kind : kGatherKinds)
       gather_run.flops.push_back(ncube::kind_flops(costs, timed.gather.counts, kind));
