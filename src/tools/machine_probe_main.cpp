@@ -7,15 +7,19 @@
 // The kernels are the very code the simulated node programs charge for (the readable
 // definitions, not the host's fast machinery): the paper's brute-force visibility loop
 // (BruteForceOccluders through visible_parts) and the engine's gather (point-to-part form
-// factors and radiosity updates, kind arithmetic_speed), on scenes of the probe's own (rooms
-// of boxes drawn from a fixed seed, never one of the scenes the simulator is held against).
-// The loop does two kinds of work: a ray's own (ray_speed: its set-up, its loop's start and
-// exit, the patches it skips) and its tests (test_speed: ray-patch tests, plane crossings). It
-// is timed on rooms of 19 to 985 patches, so 17 to 983 tests a ray, and the two rates are the
-// relative least squares fit of time = ray flops / ray_speed + test flops / test_speed over the
-// rooms (src/machine/rate_fit.h), each room's residual written with it. The gather is timed in
-// the same rooms on the masks the loop found, and arithmetic_speed is the same fit with one
-// kind. Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
+// factors and radiosity updates), on scenes of the probe's own (rooms of boxes drawn from a
+// fixed seed, never one of the scenes the simulator is held against). The loop does three
+// kinds of work: a ray's own (ray_speed: its set-up, its loop's start and exit), its tests
+// (test_speed: ray-patch tests, plane crossings) and what a blocked ray costs more
+// (blocked_ray_speed: the edge tests of the patch that stops it, a branch no predictor
+// foretells); the gather two: each receiver's update (arithmetic_speed) and the contour
+// integrals' edge terms (edge_term_speed). Each rate is measured where its kind dominates, so
+// that the fits are well-conditioned: the loop in 6 rooms of 19 to 985 patches (tests), the
+// rays of one room against no patch at all (rays), and a room against a screen of 2 cells (2
+// tests a ray, a third of the rays blocked); the gather in the same rooms, and with no part
+// visible (the updates alone). The rates are the relative least squares fits of time = sum
+// over kinds of flops / rate (src/machine/rate_fit.h), each run's residual written with them.
+// Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
 // processes do not count), the median kept; flops are counted with platforms/cost_model.json.
 // memory_speed has no kernel reachable outside a node program (the increments' sum is the
 // increment exchange's own): it is left out, so that kind runs at node_speed, which is the
@@ -60,10 +64,10 @@ using ncube::Vec3;
 // A room of the probe's own: a room 4 x 3 x 4 (walls, floor and ceiling each cut x cut patches
 // of 2 x 2 elements), a light in the ceiling, and `boxes` boxes of random size and place (seed
 // 1994, the same first boxes in every room; five faces each, the top as two triangles, a third
-// of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both.
-// ROOMS below are the rooms timed; the room of cut 4 and 24 boxes (241 patches) is the one the
-// gather is timed on.
-ncube::Scene probe_room(int cut, int boxes, double box_scale, int screen) {
+// of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both;
+// with `screen` > 0, a screen across the room at mid-height besides. kRooms below are the
+// rooms timed.
+ncube::Scene probe_room(int cut, int boxes, int screen) {
   ncube::Scene scene;
   scene.name = "machine probe room";
   auto add = [&](const Polygon& polygon, const Rgb& emission, int n) {
@@ -95,9 +99,8 @@ ncube::Scene probe_room(int cut, int boxes, double box_scale, int screen) {
   std::mt19937 random(1994);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int b = 0; b < boxes; ++b) {
-    const double w = box_scale * (0.2 + 0.6 * unit(random)),
-                 d = box_scale * (0.2 + 0.6 * unit(random)),
-                 h = std::min(Y - 1.4, box_scale * (0.2 + 1.2 * unit(random)));
+    const double w = 0.2 + 0.6 * unit(random), d = 0.2 + 0.6 * unit(random),
+                 h = 0.2 + 1.2 * unit(random);
     const double x = 0.1 + (X - 0.2 - w) * unit(random), z = 0.1 + (Z - 0.2 - d) * unit(random);
     const double y = b % 3 == 0 ? 0.3 + 1.0 * unit(random) : 0.0;  // a third float (shelves)
     const Vec3 p000{x, y, z}, p100{x + w, y, z}, p010{x, y + h, z}, p110{x + w, y + h, z},
@@ -126,26 +129,25 @@ ncube::Scene probe_room(int cut, int boxes, double box_scale, int screen) {
 // The rooms the loop and the gather are timed on, (cut, boxes): 19, 49, 103, 241, 505 and 985
 // patches, so that a ray meets from 17 to 983 patches (the range of the rooms a radiosity
 // program is run on, from a box with two blocks in it to the paper's largest scenes); how they
-// were chosen, and what else was tried: docs/machines/probe.md. The fit needs the
-// spread: a ray's own cost and its tests' are told apart only by rooms whose rays meet
-// different numbers of patches. Every room has boxes: in an empty convex room no ray ever
-// crosses a patch's plane, every test's branch goes the same way, and its tests run faster
-// than in any room with something in it (bare rooms: 3.1-4.0 ns a test against 5.2-6.2 in
-// these) — not the work a visibility computation does.
+// were chosen, and what else was tried: docs/machines/probe.md. Every room has boxes: in an
+// empty convex room no ray ever crosses a patch's plane, every test's branch goes the same
+// way, and its tests run faster than in any room with something in it (bare rooms: 3.1-4.0 ns
+// a test against 5.2-6.2 in these) — not the work a visibility computation does.
 //
-// Two more runs make the fit well-conditioned, each where one kind dominates: the shots of the
-// room of 241 patches against no patch at all (`nothing_to_test`: a ray's own work alone,
-// ray_speed), and a room with two large blocks (`box_scale` 2.5, as the Cornell box's), whose
-// rays are blocked about ten times as often a test as in the others (blocked_ray_speed).
+// Two more runs make the fits well-conditioned, each where one kind dominates (in the rooms a
+// ray's own work is 1-2 % of its time and a blocked ray's 3 %, which a 2 % noise decides):
+// the shots of the room of 241 patches against no patch at all (`nothing_to_test`: a ray's
+// own work alone, ray_speed; its gather with no part visible: each receiver's update alone,
+// arithmetic_speed), and the shots of a room against a screen across it, a checkerboard of 2
+// x 2 cells with two of them patches (`screen`: 2 tests a ray, a third of the rays blocked,
+// by which cell no branch foretells: blocked_ray_speed).
 struct Room {
   int cut, boxes;
-  double box_scale = 1.0;
   bool nothing_to_test = false;
   int screen = 0;  // > 0: the loop runs against the screen's patches alone
 };
-const std::vector<Room> kRooms = {{1, 2},   {2, 4},   {3, 8},
-                                  {4, 24},  {6, 48},  {8, 100},
-                                  {4, 24, 1.0, true}, {2, 0, 1.0, false, 2}};
+const std::vector<Room> kRooms = {{1, 2},  {2, 4},  {3, 8},           {4, 24},
+                                  {6, 48}, {8, 100}, {4, 24, true, 0}, {2, 0, false, 2}};
 // Counted flops of one timed repeat of the rays with nothing to test (about 0.01 s).
 constexpr double kRayFlopsARepeat = 6e7;
 // Counted flops of one timed repeat of the loop in each room (about 0.07 s on a core of 2024):
@@ -311,7 +313,7 @@ struct RoomTimings {
 
 RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& costs) {
   Shots shots;
-  shots.scene = probe_room(room.cut, room.boxes, room.box_scale, room.screen);
+  shots.scene = probe_room(room.cut, room.boxes, room.screen);
   shots.all.resize(shots.scene.patches.size());
   for (std::size_t k = 0; k < shots.all.size(); ++k) shots.all[k] = int(k);
   ncube::RadiosityEngine engine(shots.scene, shots.all);
@@ -354,7 +356,7 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
                                                                      : kLoopFlopsARepeat) /
                                               loop_flops(costs, once))));
   loop.what = std::to_string(loop.patches) + " patches (cut " + std::to_string(room.cut) + ", " +
-              std::to_string(room.boxes) + (room.box_scale != 1.0 ? " large" : "") + " boxes" +
+              std::to_string(room.boxes) + " boxes" +
               (room.screen ? ", a screen of " + std::to_string(room.screen) + " x " +
                                  std::to_string(room.screen) + " cells" : "") +
               "), the shots " + (room.nothing_to_test ? "against no patch, " :
@@ -525,14 +527,15 @@ int machine_probe(int argc, char** argv) {
           << number(100 * fit.relative_residuals[k], 2) << " %.\n";
   }
   about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s and edge_term_speed = "
-        << number(edge_term_speed, 6) << " flop/s (" << number(1e9 * costs.flops_per_form_factor /
+        << number(edge_term_speed, 6) << " flop/s (" << number(1e9 * costs.flops_per_element_update /
                                                               arithmetic_speed, 3)
-        << " ns a counted form factor,\n       "
+        << " ns a radiosity update,\n       "
         << number(1e9 * costs.flops_per_form_factor_edge_term / edge_term_speed, 3)
-        << " ns an edge term): the engine's gather (point-to-part form factors, radiosity\n       "
-        << "updates) of the same shots in the same rooms, the relative least squares fit of the\n"
-        << "       median time = arithmetic flops / arithmetic_speed + edge-term flops / "
-        << "edge_term_speed,\n       root mean square residual "
+        << " ns an edge term; the counted form factors are their edge terms here, not charged\n"
+        << "       apart): the engine's gather (point-to-part form factors, radiosity updates) of the\n"
+        << "       same shots in the same rooms, the relative least squares fit of the median time =\n"
+        << "       arithmetic flops / arithmetic_speed + edge-term flops / edge_term_speed,\n"
+        << "       root mean square residual "
         << number(100 * gather_fit.rms_relative_residual, 2) << " %:\n";
   for (std::size_t k = 0; k < gathers.size(); ++k) {
     const Timing& t = gathers[k];
