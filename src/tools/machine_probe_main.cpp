@@ -549,13 +549,19 @@ int machine_probe(int argc, char** argv) {
   outputs.write("--out", text);
   outputs.commit();
   for (const auto& [rate, value] : rates) std::cout << rate << " " << number(value, 6) << " flop/s\n";
-  std::cout << "visibility loop fit over " << loops.size() << " rooms: root mean square residual "
+  std::cout << "visibility loop fit over " << loops.size() << " runs: root mean square residual "
             << number(100 * fit.rms_relative_residual, 2) << " %\n";
   for (std::size_t k = 0; k < gathers.size(); ++k)
     std::cout << "room of " << gathers[k].patches << " patches: gather "
-              << number(1e9 * median(gathers[k].seconds) / double(gathers[k].counts.form_factors), 4)
-              << " ns a form factor, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(1e9 * median(gathers[k].seconds) /
+                        double(std::max<std::uint64_t>(1, gathers[k].counts.element_updates)), 4)
+              << " ns a receiver, "
+              << number(double(gathers[k].counts.form_factor_edge_terms) /
+                        double(std::max<std::uint64_t>(1, gathers[k].counts.element_updates)), 3)
+              << " edge terms a receiver, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
               << number(100 * gather_fit.relative_residuals[k], 2) << " %\n";
+  std::cout << "gather fit over " << gathers.size() << " runs: root mean square residual "
+            << number(100 * gather_fit.rms_relative_residual, 2) << " %\n";
   return ncube::kExitOk;
 }
 
