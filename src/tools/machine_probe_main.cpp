@@ -32,6 +32,7 @@
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <random>
 #include <sstream>
@@ -306,31 +307,41 @@ void aim(Shots& shots, const ncube::RadiosityEngine& engine, const Room& room) {
 }
 
 // The brute-force visibility loop in one room, then the engine's gather for the masks it
-// found, each `repeats` times after one run that warms the caches and counts a pass.
-struct RoomTimings {
+// found: set up, with one run of each that warms the caches and counts a pass; then timed by
+// time_rooms.
+struct PreparedRoom {
+  Shots shots;
+  std::unique_ptr<ncube::RadiosityEngine> engine;
+  std::unique_ptr<ncube::BruteForceOccluders> occluders;
+  std::vector<std::vector<ncube::PartMask>> gather_masks;  // the masks the gather is timed on
   Timing loop, gather;
+  void loop_pass(ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      shots.masks[s] = ncube::visible_parts(*engine, *occluders, shots.receivers[s],
+                                            shots.shooters[s], counts);
+  }
+  void gather_pass(ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      engine->gather(shots.shooters[s], shots.receivers[s], gather_masks[s], counts);
+  }
 };
 
-RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& costs) {
-  Shots shots;
+std::unique_ptr<PreparedRoom> prepare_room(const Room& room, const ncube::CostModel& costs) {
+  auto prepared = std::make_unique<PreparedRoom>();
+  Shots& shots = prepared->shots;
   shots.scene = probe_room(room.cut, room.boxes, room.screen);
   shots.all.resize(shots.scene.patches.size());
   for (std::size_t k = 0; k < shots.all.size(); ++k) shots.all[k] = int(k);
-  ncube::RadiosityEngine engine(shots.scene, shots.all);
+  prepared->engine = std::make_unique<ncube::RadiosityEngine>(shots.scene, shots.all);
+  ncube::RadiosityEngine& engine = *prepared->engine;
   std::vector<int> tested = shots.all;
   if (room.nothing_to_test) tested.clear();
   if (room.screen > 0)  // the screen's cells, the last patches
     tested.assign(shots.all.end() - (room.screen * room.screen + 1) / 2, shots.all.end());
-  const ncube::BruteForceOccluders occluders(shots.scene, tested,
-                                             ncube::RayTestPolicy::kTestAllPatches);
+  prepared->occluders = std::make_unique<ncube::BruteForceOccluders>(
+      shots.scene, tested, ncube::RayTestPolicy::kTestAllPatches);
   aim(shots, engine, room);
-  const auto pass = [&](ncube::WorkCounts& counts) {
-    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
-      shots.masks[s] = ncube::visible_parts(engine, occluders, shots.receivers[s],
-                                            shots.shooters[s], counts);
-  };
-  RoomTimings t;
-  Timing& loop = t.loop;
+  Timing& loop = prepared->loop;
   loop.patches = shots.scene.patches.size();
   // A large room's shots are more than a repeat: every k-th receiver of each shot, in store
   // order (the rays still cross the whole room), k from the shots' size before they are run
@@ -351,7 +362,7 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
     }
   }
   ncube::WorkCounts once;
-  pass(once);
+  prepared->loop_pass(once);
   loop.passes = std::max(1, int(std::lround((room.nothing_to_test ? kRayFlopsARepeat
                                                                      : kLoopFlopsARepeat) /
                                               loop_flops(costs, once))));
@@ -363,29 +374,20 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
                                  room.screen ? "against the screen alone, " : "") +
               (stride > 1 ? "to 1 receiver in " + std::to_string(stride) + ", " : "") +
               std::to_string(loop.passes) + (loop.passes == 1 ? " time" : " times");
-  for (int r = 0; r < repeats; ++r) {
-    ncube::WorkCounts counts;
-    const double start = thread_seconds();
-    for (int p = 0; p < loop.passes; ++p) pass(counts);
-    loop.seconds.push_back(thread_seconds() - start);
-    loop.counts = counts;
-  }
   // With nothing to test every part is visible, not a gather a scene asks for; there the
   // gather is timed with no part visible instead: each receiver's own work alone (the light
   // test, the update: element_updates, arithmetic_speed), where that kind dominates.
+  prepared->gather_masks = shots.masks;
   if (room.nothing_to_test)
-    for (auto& masks : shots.masks) std::fill(masks.begin(), masks.end(), ncube::PartMask(0));
+    for (auto& masks : prepared->gather_masks)
+      std::fill(masks.begin(), masks.end(), ncube::PartMask(0));
   // The gather of the masks found: its cost a counted form factor depends on which parts are
   // visible (the host sums a visible region's contour, not each part: docs/machines/probe.md),
   // so it is timed in every room, as the loop is.
-  Timing& gather = t.gather;
+  Timing& gather = prepared->gather;
   gather.patches = loop.patches;
-  const auto gather_pass = [&](ncube::WorkCounts& counts) {
-    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
-      engine.gather(shots.shooters[s], shots.receivers[s], shots.masks[s], counts);
-  };
   ncube::WorkCounts gathered_once;
-  gather_pass(gathered_once);
+  prepared->gather_pass(gathered_once);
   double gather_flops = 0;
   for (const std::string& kind : kGatherKinds)
     gather_flops += ncube::kind_flops(costs, gathered_once, kind);
@@ -393,15 +395,27 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   gather.what = std::to_string(gather.patches) + " patches, the shots' gather" +
                 (room.nothing_to_test ? " with no part visible " : " ") +
                 std::to_string(gather.passes) + " times";
-  for (int r = 0; r < repeats; ++r) {
+  return prepared;
+}
+
+// Every room's loop and gather timed `repeats` times, round by round: one repeat of each in
+// turn, so that a few seconds in which another process disturbs the host fall on one repeat
+// of several runs, which their medians leave out, rather than on every repeat of one run.
+void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms, int repeats) {
+  const auto time = [](Timing& timing, auto&& pass) {
     ncube::WorkCounts counts;
     const double start = thread_seconds();
-    for (int p = 0; p < gather.passes; ++p) gather_pass(counts);
-    gather.seconds.push_back(thread_seconds() - start);
-    gather.counts = counts;
-  }
-  return t;
+    for (int p = 0; p < timing.passes; ++p) pass(counts);
+    timing.seconds.push_back(thread_seconds() - start);
+    timing.counts = counts;
+  };
+  for (int r = 0; r < repeats; ++r)
+    for (auto& room : rooms) {
+      time(room->loop, [&](ncube::WorkCounts& c) { room->loop_pass(c); });
+      time(room->gather, [&](ncube::WorkCounts& c) { room->gather_pass(c); });
+    }
 }
+
 
 int machine_probe(int argc, char** argv) {
   const std::string root = ncube::repository_root();
@@ -431,21 +445,24 @@ int machine_probe(int argc, char** argv) {
   // placeholders here, so that a file that cannot is refused before the seconds of timing.
   probed_platform(network_file, network, {{"test_speed", 1.0}}, "");
 
-  // The loop and the gather in every room; the loop's three rates fitted, the gather's one.
+  // The loop and the gather in every room, timed round by round; the loop's three rates
+  // fitted, the gather's two.
   std::vector<Timing> loops, gathers;
   std::vector<ncube::TimedRun> runs, gather_runs;
-  for (const Room& room : kRooms) {
-    RoomTimings timed = time_room(room, repeats, costs);
-    loops.push_back(timed.loop);
-    gathers.push_back(timed.gather);
+  std::vector<std::unique_ptr<PreparedRoom>> prepared;
+  for (const Room& room : kRooms) prepared.push_back(prepare_room(room, costs));
+  time_rooms(prepared, repeats);
+  for (const auto& timed : prepared) {
+    loops.push_back(timed->loop);
+    gathers.push_back(timed->gather);
     const Timing& t = loops.back();
     ncube::TimedRun run{{}, median(t.seconds)};
     for (const std::string& kind : kLoopKinds)
       run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
     runs.push_back(run);
-    ncube::TimedRun gather_run{{}, median(timed.gather.seconds)};
+    ncube::TimedRun gather_run{{}, median(timed->gather.seconds)};
     for (const std::string& kind : kGatherKinds)
-      gather_run.flops.push_back(ncube::kind_flops(costs, timed.gather.counts, kind));
+      gather_run.flops.push_back(ncube::kind_flops(costs, timed->gather.counts, kind));
     gather_runs.push_back(gather_run);
   }
   const ncube::RateFit fit = ncube::fit_seconds_per_flop(runs);
