@@ -131,16 +131,16 @@ MACHINES = [
                  "host this project is built on, its rates measured by build/machine_probe; "
                  "InfiniBand HDR 200 Gb/s fat tree)",
         # Measured on this project's build host ("AMD EPYC", 2.6 GHz, 1 MB L2 a core) by
-        # build/machine_probe --repeats 15 on 2026-11-28 02:01 UTC (load average 4.5 on 2
+        # build/machine_probe --repeats 15 on 2026-11-28 02:11 UTC (load average 5 on 2
         # cores), rounded to 3 digits: test_speed, ray_speed and blocked_ray_speed the relative
-        # least squares fit over the probe's 8 loop runs (root mean square residual 2.2 %, runs
-        # within -3.0 to +4.7 %), arithmetic_speed and edge_term_speed the gather's over its 8
-        # (4.1 %, -6.4 to +5.2 %); docs/machines/probe.md. node speed is the test rate.
+        # least squares fit over the probe's 8 loop runs (root mean square residual 2.1 %, runs
+        # within -2.9 to +4.7 %), arithmetic_speed and edge_term_speed the gather's over its 8
+        # (4.1 %, -6.0 to +5.8 %); docs/machines/probe.md. node speed is the test rate.
         "speed": 4.34e9,
-        "rates": {"test_speed": 4.34e9, "ray_speed": 5.91e9, "blocked_ray_speed": 5.68e9,
-                  "arithmetic_speed": 1.36e9, "edge_term_speed": 1.29e9},
+        "rates": {"test_speed": 4.34e9, "ray_speed": 6.05e9, "blocked_ray_speed": 5.6e9,
+                  "arithmetic_speed": 1.4e9, "edge_term_speed": 1.28e9},
         "rates_measured": "Measured by build/machine_probe --repeats 15 on this project's build "
-                          "host (AMD EPYC,\n         2.6 GHz) on 2026-11-28 02:01 UTC, rounded to "
+                          "host (AMD EPYC,\n         2.6 GHz) on 2026-11-28 02:11 UTC, rounded to "
                           "3 digits: docs/machines/probe.md.",
         "memory": 256 * 1024 ** 3,
         "bandwidth": 25e9,
