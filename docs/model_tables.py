@@ -29,6 +29,7 @@ SOURCES = ROOT / "src"
 
 # Where a counter list's counts appear in a result file (docs/result-format.md).
 COUNTER_LISTS = {"NCUBE_WORK_COUNTERS": "counts", "NCUBE_HEMICUBE_COUNTERS": "counts",
+                 "NCUBE_HOST_WORK_COUNTERS": "counts",
                  "NCUBE_RENDER_COUNTERS": "render.counts"}
 
 

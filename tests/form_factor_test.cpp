@@ -73,6 +73,7 @@ TEST(FormFactor, HemisphereOfLargePolygonApproachesOne) {
   EXPECT_NEAR(point_to_polygon_form_factor({0, 0, 0}, {0, 0, 1}, sky), 1.0, 1e-3);
 }
 
+
 }  // namespace
 }  // namespace ncube
 
@@ -124,6 +125,39 @@ TEST(FormFactor, VisiblePartsSumEqualsThePartByPartSum) {
   EXPECT_GT(unclipped, 500);  // both ways of summing are exercised
   EXPECT_GT(clipped, 500);
   std::cout << "largest relative difference " << largest_error << "\n";
+}
+
+// The host work counter form_factor_edge_terms (work_counts.h), worked by hand on an 8 x 8
+// shooter (M = 64): seen from in front, every part visible is the square's outline (4 x 8
+// edges), one part alone its 4 edges, none
+// nothing; from a point whose tangent plane cuts the shooter (clipping), each visible part's
+// clipped polygon (a part wholly in front keeps its 4 edges).
+TEST(FormFactor, EdgeTermsAreTheContourOrTheClippedPartsHandCounted) {
+  Scene scene;
+  Patch square;
+  square.polygon = Polygon::quad({0, 0, 0}, {8, 0, 0}, {8, 8, 0}, {0, 8, 0});  // faces +z
+  square.reflectance = Rgb(0.5);
+  scene.patches = {square};
+  scene.build_elements();
+  const Shooter shooter = make_shooter(scene, 0, Rgb(1.0), 64);
+  ASSERT_EQ(shooter.side, 8);
+  const Vec3 above(4, 4, 3), up(0, 0, -1);  // looking down at the shooter: no clipping
+  EXPECT_EQ(form_factor_edge_terms(above, up, shooter, shooter.all_parts()), 32u);
+  EXPECT_EQ(form_factor_edge_terms(above, up, shooter, PartMask(1) << 27), 4u);
+  EXPECT_EQ(form_factor_edge_terms(above, up, shooter, 0), 0u);
+  PartMask checkerboard = 0;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i)
+      if ((i + j) % 2 == 0) checkerboard |= PartMask(1) << (j * 8 + i);
+  // The checkerboard: every inner edge (2 x 8 x 7) and the outline's edges of visible parts (16).
+  EXPECT_EQ(form_factor_edge_terms(above, up, shooter, checkerboard), 128u);
+  // A receiver at x = 3.5 facing -x: its tangent plane cuts the parts of column 3 in half
+  // (each clipped to a quad, 4 edges); columns 0-2 lie wholly in front (4 edges each), 4-7
+  // behind (clipped away: none).
+  const Vec3 side(3.5, 4, 1), minus_x(-1, 0, 0);
+  EXPECT_EQ(form_factor_edge_terms(side, minus_x, shooter, shooter.all_parts()), 32u * 4u);
+  EXPECT_EQ(form_factor_edge_terms(side, minus_x, shooter, PartMask(1) << 4), 0u);  // (4, 0)
+  EXPECT_EQ(form_factor_edge_terms(side, minus_x, shooter, PartMask(1) << 3), 4u);  // (3, 0)
 }
 
 }  // namespace

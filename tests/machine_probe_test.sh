@@ -2,9 +2,10 @@
 # build/machine_probe (src/tools/machine_probe_main.cpp, docs/machines/probe.md):
 #  - its errors: no --out (exit 2), --out a folder (exit 5), a --network that is not a platform
 #    of platforms/machines/ (exit 2, no file left);
-#  - the file it writes loads and runs, with the three measured rates read back into the
-#    result's provenance and each rate's measurement in the file: the fit's rooms (median of the
-#    repeats, spread, residual) and its root mean square residual;
+#  - the file it writes loads and runs, with the five measured rates read back into the
+#    result's provenance and each rate's measurement in the file: the fits' runs (median of the
+#    repeats, spread, residual) and their root mean square residuals; the host work counters
+#    (blocked_rays, form_factor_edge_terms) in its result's counts, and in no nCube2 result's;
 #  - the prediction on a small case: scene1, one node, iteration 2 alone (the difference of a
 #    1- and a 2-iteration run), simulated seconds on the probed platform against the host's CPU
 #    seconds of the same iteration with the readable definitions on one thread. The tolerance,
@@ -35,14 +36,14 @@ set -e
 
 # 2. The file.
 "$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said"
-for rate in test_speed ray_speed arithmetic_speed; do
+for rate in test_speed ray_speed blocked_ray_speed arithmetic_speed edge_term_speed; do
   grep -q "<prop id=\"$rate\" value=\"" "$tmp/probed.xml" || fail "no $rate <prop>"
   grep -q "$rate = [0-9.e+]* flop/s" "$tmp/probed.xml" || fail "no measurement of $rate in the file"
 done
 grep -q "median of 3 repeats" "$tmp/probed.xml" || fail "the file does not give the repeats"
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
-[[ $(grep -c "boxes), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 6 ]] ||
-  fail "the file does not give the loop's 6 rooms with their residuals"
+[[ $(grep -c "), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 8 ]] ||
+  fail "the file does not give the loop's 8 runs with their residuals"
 [[ $(grep -c "root mean square residual" "$tmp/probed.xml") == 2 ]] ||
   fail "the file does not give the two fits' residuals"
 grep -q 'topo_parameters="2;16,4;1,4;1,4"' "$tmp/probed.xml" || fail "not the 2024 cluster's network"
@@ -64,11 +65,18 @@ def run(iterations):
         least = cpu if least is None else min(least, cpu)
     result = json.load(open(f"{tmp}/r.json"))
     values = result["provenance"]["platform"]["values"]
-    assert all(rate in values for rate in ("test_speed", "ray_speed", "arithmetic_speed")), values
+    assert all(rate in values for rate in ("test_speed", "ray_speed", "blocked_ray_speed",
+                                           "arithmetic_speed", "edge_term_speed")), values
+    assert result["counts"]["blocked_rays"] > 0 and result["counts"]["form_factor_edge_terms"] > 0
     return result["simulated_seconds"], least
 s1, c1 = run(1)
 s2, c2 = run(2)
 error = (s2 - s1) / (c2 - c1) - 1
+# The nCube2 is charged and written as before the host work counters existed.
+subprocess.run([simulate, f"{root}/scenes/scene1.json", "--R", "1", "--V", "0", "--iterations",
+                "1", "--json", f"{tmp}/n.json", "--quiet"], check=True)
+counts = json.load(open(f"{tmp}/n.json"))["counts"]
+assert "blocked_rays" not in counts and "form_factor_edge_terms" not in counts, counts
 print(f"scene1, iteration 2: simulated {s2 - s1:.4f} s, host CPU {c2 - c1:.4f} s, {100 * error:+.1f} %")
 if abs(error) > tolerance:
     sys.exit(f"FAIL: the prediction misses by {100 * error:+.1f} %, beyond {100 * tolerance:.0f} %")

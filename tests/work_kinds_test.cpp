@@ -36,7 +36,7 @@ TEST(WorkKinds, EveryCounterHasAKindWhoseRateIsAnOptionalMachineParameter) {
   EXPECT_EQ(kinds, listed);
   ASSERT_EQ(work_rate_names(),
             (std::vector<std::string>{"test_speed", "ray_speed", "arithmetic_speed",
-                                      "memory_speed"}));
+                                      "memory_speed", "blocked_ray_speed", "edge_term_speed"}));
   for (const std::string& rate : work_rate_names()) {
     const MachineParameter* p = parameter_named(rate);
     ASSERT_NE(p, nullptr) << rate;
@@ -138,6 +138,51 @@ TEST(WorkKinds, RaysRunAtRaySpeedAndWithoutItAtTestSpeedToTheLastBit) {
   // Neither: rays at node_speed.
   p.ray_speed = 0;
   EXPECT_FALSE(gives_work_rates(p));
+}
+
+// The host work counters (work_counts.h): charged only on a platform that gives their own rate
+// (no fallback), and then the form factors they replace (NCUBE_HOST_REPLACES) are not.
+TEST(WorkKinds, HostWorkIsChargedOnlyWhereItsRateIsGivenAndThenReplacesTheFormFactors) {
+  const CostModel c = [] {
+    CostModel m = hand_costs();
+    m.flops_per_blocked_ray = 42;
+    m.flops_per_form_factor_edge_term = 45;
+    return m;
+  }();
+  const WorkCounts before = hand_counts();
+  WorkCounts w = before;
+  w.blocked_rays = 3;
+  w.form_factor_edge_terms = 20;
+  // Without rates, and with the rates of before the counters existed: to the last bit as
+  // without the counters.
+  PlatformConfig p;
+  p.node_speed = 1e6;
+  EXPECT_EQ(compute_seconds(c, p, w), compute_seconds(c, p, before));
+  p.test_speed = 4e8;
+  p.arithmetic_speed = 2e8;
+  p.ray_speed = 1e8;
+  EXPECT_EQ(compute_seconds(c, p, w), compute_seconds(c, p, before));
+  EXPECT_FALSE(charges_counter(p, "blocked_rays"));
+  EXPECT_FALSE(charges_counter(p, "form_factor_edge_terms"));
+  EXPECT_TRUE(charges_counter(p, "form_factors"));
+  EXPECT_TRUE(charges_counter(p, "rays"));
+  // blocked_ray_speed given: blocked rays 3 x 42 at it, by hand.
+  p.blocked_ray_speed = 5e8;
+  const double without = 63 / 1e8 + (17354.7 + 3537.859) / 4e8 + 960 / 2e8 + 33 / 1e6;
+  EXPECT_NEAR(compute_seconds(c, p, w), without + 126 / 5e8, without * 1e-12);
+  EXPECT_TRUE(charges_counter(p, "blocked_rays"));
+  // edge_term_speed given: 20 x 45 edge-term flops at it, and the 5 form factors' 900 flops
+  // no more (the updates' 60 stay at arithmetic_speed).
+  p.edge_term_speed = 3e8;
+  const double host = 63 / 1e8 + (17354.7 + 3537.859) / 4e8 + 60 / 2e8 + 33 / 1e6 + 126 / 5e8 +
+                      900 / 3e8;
+  EXPECT_NEAR(compute_seconds(c, p, w), host, host * 1e-12);
+  EXPECT_TRUE(charges_counter(p, "form_factor_edge_terms"));
+  EXPECT_FALSE(charges_counter(p, "form_factors"));
+  // What a probe divides by: as on a platform that gives every rate.
+  EXPECT_EQ(kind_flops(c, w, "arithmetic_speed"), 60);
+  EXPECT_EQ(kind_flops(c, w, "edge_term_speed"), 900);
+  EXPECT_EQ(kind_flops(c, w, "blocked_ray_speed"), 126);
 }
 
 }  // namespace

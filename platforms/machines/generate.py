@@ -131,13 +131,17 @@ MACHINES = [
                  "host this project is built on, its rates measured by build/machine_probe; "
                  "InfiniBand HDR 200 Gb/s fat tree)",
         # Measured on this project's build host ("AMD EPYC", 2.6 GHz, 1 MB L2 a core) by
-        # build/machine_probe --repeats 15 on 2026-11-27 23:34 UTC (load average 7 on 2
-        # cores), rounded to 3 digits: test_speed and ray_speed the relative least squares fit
-        # over the probe's 6 rooms (root mean square residual 2.2 %, rooms within -1.8 to
-        # +4.9 %), arithmetic_speed the gather's (12 %, -19 to +8.7 %); docs/machines/probe.md.
-        # node speed is the test rate.
-        "speed": 4.25e9,
-        "rates": {"test_speed": 4.25e9, "ray_speed": 1.25e9, "arithmetic_speed": 9.03e9},
+        # build/machine_probe --repeats 15 on 2026-11-28 02:11 UTC (load average 5 on 2
+        # cores), rounded to 3 digits: test_speed, ray_speed and blocked_ray_speed the relative
+        # least squares fit over the probe's 8 loop runs (root mean square residual 2.1 %, runs
+        # within -2.9 to +4.7 %), arithmetic_speed and edge_term_speed the gather's over its 8
+        # (4.1 %, -6.0 to +5.8 %); docs/machines/probe.md. node speed is the test rate.
+        "speed": 4.34e9,
+        "rates": {"test_speed": 4.34e9, "ray_speed": 6.05e9, "blocked_ray_speed": 5.6e9,
+                  "arithmetic_speed": 1.4e9, "edge_term_speed": 1.28e9},
+        "rates_measured": "Measured by build/machine_probe --repeats 15 on this project's build "
+                          "host (AMD EPYC,\n         2.6 GHz) on 2026-11-28 02:11 UTC, rounded to "
+                          "3 digits: docs/machines/probe.md.",
         "memory": 256 * 1024 ** 3,
         "bandwidth": 25e9,
         "latency": 0.1e-6,
@@ -200,8 +204,11 @@ def properties(machine, indent):
     if unknown:
         raise SystemExit("generate.py: %s: no such rate %s" % (machine["name"], sorted(unknown)))
     if rates:
+        measured = ""
+        if "rates_measured" in machine:
+            measured = "\n%s     %s" % (pad, machine["rates_measured"])
         rates.insert(0, "%s<!-- Rates per kind of work (flop/s, src/machine/work_kinds.h); node "
-                        "speed is\n%s     the test rate. -->\n" % (pad, pad))
+                        "speed is\n%s     the test rate.%s -->\n" % (pad, pad, measured))
     return "".join(rates + lines)
 
 

@@ -4,16 +4,20 @@
 
 namespace ncube {
 
-// The sum runs in the order of the list, as the hand-written sum did before it.
+// The sum runs in the order of the list, as the hand-written sum did before it. The host work
+// counters are left out: they are charged only at their own rates (work_kinds.h).
 double CostModel::flops(const WorkCounts& c) const {
   double total = 0.0;
-#define NCUBE_ADD_FLOPS(member, cost, doc) total += cost * double(c.member);
-  NCUBE_WORK_COUNTERS(NCUBE_ADD_FLOPS)
+#define NCUBE_ADD_WORK_FLOPS(member, cost, doc) \
+  if (!is_host_work_counter(#member)) total += cost * double(c.member);
+  NCUBE_WORK_COUNTERS(NCUBE_ADD_WORK_FLOPS)
+#undef NCUBE_ADD_WORK_FLOPS
   return total;
 }
 
 double CostModel::flops(const RenderCounts& c) const {
   double total = 0.0;
+#define NCUBE_ADD_FLOPS(member, cost, doc) total += cost * double(c.member);
   NCUBE_RENDER_COUNTERS(NCUBE_ADD_FLOPS)
 #undef NCUBE_ADD_FLOPS
   return total;

@@ -69,7 +69,16 @@ enum class XmlForm {
     "speed of one node on a ray's own work besides its tests (flops_per_ray of "                \
     "cost_model.json per second): setting the ray up, starting and leaving its loop over the "  \
     "patches, the patches it skips (its own and the shooter's); left out: test_speed, as "      \
-    "before this rate existed (node_speed when that too is left out)")
+    "before this rate existed (node_speed when that too is left out)")                        \
+  X(blocked_ray_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                     \
+    "speed of one node on what a blocked ray costs beyond its counted tests (flops_per_blocked_ray " \
+    "of cost_model.json per second): the edge tests of the patches that stop it and a branch "  \
+    "the core could not foretell; left out: blocked rays are not charged (nor written), as "   \
+    "before this rate existed")                                                                 \
+  X(edge_term_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                       \
+    "speed of one node on the contour integrals' edge terms as the host sums them "            \
+    "(flops_per_form_factor_edge_term of cost_model.json per second: cross product, norm, "     \
+    "arctangent); left out: they are not charged (nor written), as before this rate existed")
 
 // The network model a JSON platform file gets when it has no "simgrid_config" (the nCube2's,
 // docs/model.md): X(SimGrid setting, value, why). Defaults that --cfg overrides. The one

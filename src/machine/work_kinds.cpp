@@ -55,6 +55,39 @@ const std::vector<double PlatformConfig::*>& work_fields() {
   return fields;
 }
 
+// What decides whether each counter (in list order) is charged: `field` 0 for a counter always
+// charged; else it is charged when the platform gives `field` (a host work counter's own
+// rate) or, for a counter a host counter replaces, when it does not give it.
+struct Gate {
+  double PlatformConfig::*field = nullptr;
+  bool charged_when_given = true;
+};
+
+const std::vector<Gate>& work_gates() {
+  static const std::vector<Gate> gates = [] {
+    std::vector<std::string> members;
+#define NCUBE_MEMBER_NAME(member, cost, doc) members.push_back(#member);
+    NCUBE_WORK_COUNTERS(NCUBE_MEMBER_NAME)
+#undef NCUBE_MEMBER_NAME
+    const auto index_of = [&members](const char* member) {
+      return std::size_t(std::find(members.begin(), members.end(), member) - members.begin());
+    };
+    std::vector<Gate> out(members.size());
+    for (std::size_t k = 0; k < members.size(); ++k)
+      if (is_host_work_counter(members[k].c_str())) out[k] = {work_fields()[k], true};
+#define NCUBE_REPLACED_GATE(host, paper) \
+  out.at(index_of(#paper)) = {work_fields()[index_of(#host)], false};
+    NCUBE_HOST_REPLACES(NCUBE_REPLACED_GATE)
+#undef NCUBE_REPLACED_GATE
+    return out;
+  }();
+  return gates;
+}
+
+bool charged(const PlatformConfig& platform, const Gate& gate) {
+  return !gate.field || (platform.*gate.field > 0) == gate.charged_when_given;
+}
+
 const std::vector<double PlatformConfig::*>& render_fields() {
   static const std::vector<double PlatformConfig::*> fields = {
       NCUBE_RENDER_COUNTERS(NCUBE_KIND_FIELD)
@@ -99,11 +132,25 @@ std::string work_rate_of(const std::string& cost_parameter) {
 
 double kind_flops(const CostModel& costs, const WorkCounts& c, const std::string& rate) {
   double flops = 0.0;
-#define NCUBE_KIND_FLOPS(member, cost, doc) \
-  if (entry_of(#cost).rate == rate) flops += costs.cost * double(c.member);
+  std::size_t k = 0;
+#define NCUBE_KIND_FLOPS(member, cost, doc)                                                   \
+  if (entry_of(#cost).rate == rate &&                                                         \
+      (!work_gates()[k].field || work_gates()[k].charged_when_given))                         \
+    flops += costs.cost * double(c.member);                                                   \
+  ++k;
   NCUBE_WORK_COUNTERS(NCUBE_KIND_FLOPS)
 #undef NCUBE_KIND_FLOPS
   return flops;
+}
+
+bool charges_counter(const PlatformConfig& platform, const std::string& member) {
+  std::size_t k = 0;
+#define NCUBE_FIND_GATE(m, cost, doc) \
+  if (member == #m) return charged(platform, work_gates()[k]); \
+  ++k;
+  NCUBE_WORK_COUNTERS(NCUBE_FIND_GATE)
+#undef NCUBE_FIND_GATE
+  return false;
 }
 
 bool gives_work_rates(const PlatformConfig& platform) {
@@ -117,11 +164,15 @@ double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
                        const WorkCounts& c) {
   if (!gives_work_rates(platform)) return costs.flops(c) / platform.node_speed;
   const auto& fields = work_fields();
+  const auto& gates = work_gates();
   double seconds = 0.0;
   std::size_t k = 0;
-#define NCUBE_ADD_SECONDS(member, cost, doc) \
-  seconds += costs.cost * double(c.member) / rate(platform, fields[k++]);
-  NCUBE_WORK_COUNTERS(NCUBE_ADD_SECONDS)
+#define NCUBE_ADD_WORK_SECONDS(member, cost, doc)                                \
+  if (charged(platform, gates[k]))                                              \
+    seconds += costs.cost * double(c.member) / rate(platform, fields[k]);        \
+  ++k;
+  NCUBE_WORK_COUNTERS(NCUBE_ADD_WORK_SECONDS)
+#undef NCUBE_ADD_WORK_SECONDS
   return seconds;
 }
 
@@ -131,6 +182,8 @@ double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
   const auto& fields = render_fields();
   double seconds = 0.0;
   std::size_t k = 0;
+#define NCUBE_ADD_SECONDS(member, cost, doc) \
+  seconds += costs.cost * double(c.member) / rate(platform, fields[k++]);
   NCUBE_RENDER_COUNTERS(NCUBE_ADD_SECONDS)
 #undef NCUBE_ADD_SECONDS
   return seconds;

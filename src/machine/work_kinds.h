@@ -40,6 +40,8 @@ namespace ncube {
   X(flops_per_hemicube_row_scanned, arithmetic_speed)                                           \
   X(flops_per_hemicube_depth_test, test_speed)                                                  \
   X(flops_per_hemicube_cell_read, memory_speed)                                                 \
+  X(flops_per_blocked_ray, blocked_ray_speed)                                                   \
+  X(flops_per_form_factor_edge_term, edge_term_speed)                                           \
   X(flops_per_render_vertex, arithmetic_speed)                                                  \
   X(flops_per_clip_vertex, arithmetic_speed)                                                    \
   X(flops_per_projected_vertex, arithmetic_speed)                                               \
@@ -59,6 +61,20 @@ namespace ncube {
 // (docs/machines/README.md, "Rates per kind of work").
 #define NCUBE_RATE_FALLBACKS(X) X(ray_speed, test_speed)
 
+// X(host work counter, the paper's counter whose work it is). On a platform that charges the
+// host counter, the paper's counter is not charged: the same work, counted as the host does
+// it (the gather's form factors: the paper computes each visible part's, 180 flops each; the
+// host sums the visible region's contour, and its cost follows the edge terms, not the parts:
+// docs/machines/probe.md). The paper's counter is still counted and written.
+#define NCUBE_HOST_REPLACES(X) X(form_factor_edge_terms, form_factors)
+
+// Whether a platform charges `member`, a counter of NCUBE_WORK_COUNTERS: always, but for the
+// host work counters (NCUBE_HOST_WORK_COUNTERS), charged only when the platform gives their
+// kind's own rate (no fallback: a machine that does not give it is charged, and its result
+// file written, as before the counter existed); a counter a charged host counter replaces
+// (NCUBE_HOST_REPLACES) is not.
+bool charges_counter(const PlatformConfig& platform, const std::string& member);
+
 // The rates' names (machine parameters), in the order they first appear above.
 const std::vector<std::string>& work_rate_names();
 
@@ -73,8 +89,9 @@ std::string work_rate_of(const std::string& cost_parameter);
 // that its simulated seconds stay the same to the last bit.
 bool gives_work_rates(const PlatformConfig& platform);
 
-// The flops of `counts` whose kind runs at `rate` (a name of work_rate_names()): what a
-// probe of the rate divides by the seconds it measured (build/machine_probe).
+// The flops of `counts` whose kind runs at `rate` (a name of work_rate_names()) on a platform
+// that gives every rate (the host work counters charged, the counters they replace not): what
+// a probe of the rate divides by the seconds it measured (build/machine_probe).
 double kind_flops(const CostModel& costs, const WorkCounts& counts, const std::string& rate);
 
 // Simulated CPU seconds of counted work on one node of `platform`: the flops of each kind at

@@ -34,6 +34,7 @@ void VisibilityProcessor::run() {
     answer->masks.resize(message->points.size());
     share_.unblocked_parts(PointBlock(message->points, message->point_patches), shooter,
                            answer->masks.data(), work);
+    count_blocked_rays(answer->masks.data(), answer->masks.size(), shooter, work);
     runtime_.charge(work);
     XBT_DEBUG("block %d from node %d: %zu points, %llu ray-patch tests", message->block,
               message->from, message->points.size(), (unsigned long long)work.ray_patch_tests);

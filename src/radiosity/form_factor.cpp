@@ -92,6 +92,34 @@ double visible_parts_form_factor(const Vec3& point, const Vec3& normal, const Sh
   return std::fabs(sum) / (2.0 * M_PI);
 }
 
+std::uint64_t form_factor_edge_terms(const Vec3& point, const Vec3& normal, const Shooter& shooter,
+                                     PartMask mask) {
+  if (mask == 0) return 0;
+  const int k = shooter.side;
+  const int corners = (k + 1) * (k + 1);
+  bool clipping = false;
+  for (int v = 0; v < corners && !clipping; ++v)
+    clipping = glm::dot(normal, shooter.grid[v] - point) < 0.0;
+  std::uint64_t terms = 0;
+  if (clipping) {  // as point_to_polygon_form_factor: the clipped polygon's edges
+    for (int part = 0; part < shooter.part_count; ++part)
+      if (mask & (PartMask(1) << part)) {
+        const ClippedPolygon clipped = clip_to_front(point, normal, shooter.parts[part]);
+        if (clipped.count >= 3) terms += std::uint64_t(clipped.count);
+      }
+    return terms;
+  }
+  // The contour: the edges whose weight is not zero (visible on one side only).
+  auto visible = [&](int i, int j) {
+    return i >= 0 && i < k && j >= 0 && j < k && (mask >> (j * k + i) & 1) ? 1 : 0;
+  };
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i < k; ++i) terms += visible(i, j) != visible(i, j - 1);
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; j < k; ++j) terms += visible(i - 1, j) != visible(i, j);
+  return terms;
+}
+
 std::vector<double> ray_traced_form_factors(RadiosityEngine& engine, const OccluderSet& occluders,
                                             const std::vector<ElementRef>& receivers,
                                             const Shooter& shooter, WorkCounts& counts) {
@@ -99,9 +127,14 @@ std::vector<double> ray_traced_form_factors(RadiosityEngine& engine, const Occlu
   std::vector<double> form_factors = engine.form_factors(shooter, receivers, visible);
   // As the paper's gather counts them (RadiosityEngine::add_light): the visible parts of a
   // receiver the shooter lights.
-  for (std::size_t k = 0; k < receivers.size(); ++k)
-    if (shooter_lights(shooter, engine.store().element(receivers[k]).centre))
-      counts.form_factors += std::bitset<64>(visible[k]).count();
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    const StoredElement& element = engine.store().element(receivers[k]);
+    if (!shooter_lights(shooter, element.centre)) continue;
+    counts.form_factors += std::bitset<64>(visible[k]).count();
+    const int patch = engine.store().patches()[std::size_t(receivers[k].slot)].patch;
+    counts.form_factor_edge_terms += form_factor_edge_terms(
+        element.centre, engine.scene().patches[std::size_t(patch)].normal, shooter, visible[k]);
+  }
   return form_factors;
 }
 

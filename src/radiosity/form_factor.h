@@ -3,6 +3,7 @@
 // distance, so elements close to the shooter get accurate values.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "geometry/polygon.h"
@@ -25,6 +26,12 @@ double point_to_polygon_form_factor(const Vec3& point, const Vec3& normal,
 // per-part sum computes it (same to about 1e-15 relative; docs/performance.md).
 double visible_parts_form_factor(const Vec3& point, const Vec3& normal, const Shooter& shooter,
                                  PartMask mask);
+
+// The edge terms visible_parts_form_factor sums for the same question (the host work counter
+// form_factor_edge_terms, work_counts.h): the visible region's contour edges when no part
+// needs clipping, else each visible part's edges after clipping. Geometry only, no arctangent.
+std::uint64_t form_factor_edge_terms(const Vec3& point, const Vec3& normal, const Shooter& shooter,
+                                     PartMask mask);
 
 class RadiosityEngine;
 class OccluderSet;

@@ -135,6 +135,12 @@ void RadiosityEngine::add_light(const Shooter& shooter, const std::vector<Elemen
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     const PartMask mask = shooter_lights(shooter, store_.element(receivers[k]).centre) ? masks[k] : 0;
     counts.form_factors += std::bitset<64>(mask).count();
+    if (mask != 0) {
+      const StoredElement& element = store_.element(receivers[k]);
+      const int patch = store_.patches()[std::size_t(receivers[k].slot)].patch;
+      counts.form_factor_edge_terms += form_factor_edge_terms(
+          element.centre, scene().patches[std::size_t(patch)].normal, shooter, mask);
+    }
     receive(shooter, receivers[k], computed_form_factors[k], counts);
   }
 }
@@ -246,6 +252,7 @@ std::vector<PartMask> visible_parts(const RadiosityEngine& engine, const Occlude
   engine.visibility_points(receivers, points, patches);
   std::vector<PartMask> masks(receivers.size());
   occluders.unblocked_parts(PointBlock(points, patches), shooter, masks.data(), counts);
+  count_blocked_rays(masks.data(), masks.size(), shooter, counts);
   return masks;
 }
 

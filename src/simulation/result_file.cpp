@@ -1,5 +1,7 @@
 #include "simulation/result_file.h"
 
+#include <algorithm>
+
 #include "simulation/iteration_time.h"
 #include "simulation/parallelisations.h"
 #include "radiosity/form_factor_methods.h"
@@ -8,11 +10,17 @@
 namespace ncube {
 
 nlohmann::json counts_to_json(const WorkCounts& c, const std::string& form_factors,
-                              const std::string& parallelisation) {
+                              const std::string& parallelisation,
+                              const std::vector<std::string>& host_counters_charged) {
   nlohmann::json j;
+  const auto charged = [&](const char* member) {
+    return !is_host_work_counter(member) ||
+           std::find(host_counters_charged.begin(), host_counters_charged.end(), member) !=
+               host_counters_charged.end();
+  };
 #define NCUBE_WORK_COUNT_TO_JSON(member, cost, doc) \
   if (writes_counter(form_factors, #member) &&                  \
-      parallelisation_writes_counter(parallelisation, #member))  \
+      parallelisation_writes_counter(parallelisation, #member) && charged(#member)) \
     j[#member] = c.member;
   NCUBE_WORK_COUNTERS(NCUBE_WORK_COUNT_TO_JSON)
 #undef NCUBE_WORK_COUNT_TO_JSON
@@ -137,7 +145,8 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   nlohmann::json radiosity = nlohmann::json::array();
   for (const Rgb& b : result.patch_radiosity) radiosity.push_back({b.r, b.g, b.b});
   j["patch_radiosity"] = radiosity;
-  j["counts"] = counts_to_json(result.counts, config.options.form_factors, config.parallelisation);
+  j["counts"] = counts_to_json(result.counts, config.options.form_factors, config.parallelisation,
+                               result.host_counters_charged);
   nlohmann::json nodes = nlohmann::json::array();
   for (const NodeStats& n : result.nodes)
     nodes.push_back({{"node", n.node},
@@ -151,7 +160,8 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                      {"messages_received", n.messages_received},
                      {"peak_memory_bytes", n.peak_memory_bytes},
                      {"memory_bytes_at_end", n.memory_bytes_at_end},
-                     {"counts", counts_to_json(n.counts, config.options.form_factors, config.parallelisation)}});
+                     {"counts", counts_to_json(n.counts, config.options.form_factors, config.parallelisation,
+                                                   result.host_counters_charged)}});
   j["nodes"] = nodes;
   if (result.render.ran) j["render"] = render_to_json(config, result.render);
   j["host_seconds"] = result.host_seconds;

@@ -9,6 +9,7 @@
 #include "nodes/placement.h"
 #include "simulation/node_programs.h"
 #include "simulation/parallelisations.h"
+#include "machine/work_kinds.h"
 #include "simulation/simulated_platform.h"
 
 namespace ncube {
@@ -98,6 +99,10 @@ SimulationResult run_simulation(const Scene& scene, const SimulationConfig& conf
     result.nodes.push_back(runtime.stats());
     result.counts += runtime.stats().counts;
   }
+#define NCUBE_HOST_CHARGED(member, cost, doc) \
+  if (charges_counter(platform, #member)) result.host_counters_charged.push_back(#member);
+  NCUBE_HOST_WORK_COUNTERS(NCUBE_HOST_CHARGED)
+#undef NCUBE_HOST_CHARGED
   if (result.status == RunStatus::kOk) {
     result.failure = failure_of(result, programs);
     if (result.failure.empty()) result.failure = result.render.failure;

@@ -59,6 +59,9 @@ struct SimulationResult {
   long transfer_messages = 0;   // the kPatches messages that moved them
   double transfer_bytes = 0.0;  // their modeled payload (headers not included)
   WorkCounts counts;                   // all nodes together
+  // The host work counters (work_counts.h) the platform charges, so the result file writes
+  // them: none on a platform that does not give their rates (the nCube2's result files).
+  std::vector<std::string> host_counters_charged;
   std::vector<NodeStats> nodes;        // in node order
   std::vector<TraceEvent> trace;       // when config.record_trace
   RenderResult render;                 // when config.render.enabled and the run got that far

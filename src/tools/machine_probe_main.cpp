@@ -7,15 +7,19 @@
 // The kernels are the very code the simulated node programs charge for (the readable
 // definitions, not the host's fast machinery): the paper's brute-force visibility loop
 // (BruteForceOccluders through visible_parts) and the engine's gather (point-to-part form
-// factors and radiosity updates, kind arithmetic_speed), on scenes of the probe's own (rooms
-// of boxes drawn from a fixed seed, never one of the scenes the simulator is held against).
-// The loop does two kinds of work: a ray's own (ray_speed: its set-up, its loop's start and
-// exit, the patches it skips) and its tests (test_speed: ray-patch tests, plane crossings). It
-// is timed on rooms of 19 to 985 patches, so 17 to 983 tests a ray, and the two rates are the
-// relative least squares fit of time = ray flops / ray_speed + test flops / test_speed over the
-// rooms (src/machine/rate_fit.h), each room's residual written with it. The gather is timed in
-// the same rooms on the masks the loop found, and arithmetic_speed is the same fit with one
-// kind. Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
+// factors and radiosity updates), on scenes of the probe's own (rooms of boxes drawn from a
+// fixed seed, never one of the scenes the simulator is held against). The loop does three
+// kinds of work: a ray's own (ray_speed: its set-up, its loop's start and exit), its tests
+// (test_speed: ray-patch tests, plane crossings) and what a blocked ray costs more
+// (blocked_ray_speed: the edge tests of the patch that stops it, a branch no predictor
+// foretells); the gather two: each receiver's update (arithmetic_speed) and the contour
+// integrals' edge terms (edge_term_speed). Each rate is measured where its kind dominates, so
+// that the fits are well-conditioned: the loop in 6 rooms of 19 to 985 patches (tests), the
+// rays of one room against no patch at all (rays), and a room against a screen of 2 cells (2
+// tests a ray, a third of the rays blocked); the gather in the same rooms, and with no part
+// visible (the updates alone). The rates are the relative least squares fits of time = sum
+// over kinds of flops / rate (src/machine/rate_fit.h), each run's residual written with them.
+// Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
 // processes do not count), the median kept; flops are counted with platforms/cost_model.json.
 // memory_speed has no kernel reachable outside a node program (the increments' sum is the
 // increment exchange's own): it is left out, so that kind runs at node_speed, which is the
@@ -28,6 +32,7 @@
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <random>
 #include <sstream>
@@ -60,10 +65,10 @@ using ncube::Vec3;
 // A room of the probe's own: a room 4 x 3 x 4 (walls, floor and ceiling each cut x cut patches
 // of 2 x 2 elements), a light in the ceiling, and `boxes` boxes of random size and place (seed
 // 1994, the same first boxes in every room; five faces each, the top as two triangles, a third
-// of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both.
-// ROOMS below are the rooms timed; the room of cut 4 and 24 boxes (241 patches) is the one the
-// gather is timed on.
-ncube::Scene probe_room(int cut, int boxes) {
+// of them floating like shelves): 6 cut^2 + 1 + 6 boxes patches, quads and triangles both;
+// with `screen` > 0, a screen across the room at mid-height besides. kRooms below are the
+// rooms timed.
+ncube::Scene probe_room(int cut, int boxes, int screen) {
   ncube::Scene scene;
   scene.name = "machine probe room";
   auto add = [&](const Polygon& polygon, const Rgb& emission, int n) {
@@ -108,6 +113,16 @@ ncube::Scene probe_room(int cut, int boxes) {
     add(Polygon::triangle(p010, p011, p111), Rgb(0.0), 1);    // top, facing +y
     add(Polygon::triangle(p010, p111, p110), Rgb(0.0), 1);
   }
+  // A screen: a checkerboard of screen x screen cells across the room at mid-height, every
+  // other cell a patch (facing down), so that about half the rays from below are blocked, by
+  // which cell no branch foretells.
+  for (int i = 0; i < screen; ++i)
+    for (int j = 0; j < screen; ++j) {
+      if ((i + j) % 2) continue;
+      const double x0 = X * i / screen, x1 = X * (i + 1) / screen, z0 = Z * j / screen,
+                   z1 = Z * (j + 1) / screen, y = 0.5 * Y;
+      add(Polygon::quad({x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}), Rgb(0.0), 1);
+    }
   scene.build_elements();
   return scene;
 }
@@ -115,21 +130,32 @@ ncube::Scene probe_room(int cut, int boxes) {
 // The rooms the loop and the gather are timed on, (cut, boxes): 19, 49, 103, 241, 505 and 985
 // patches, so that a ray meets from 17 to 983 patches (the range of the rooms a radiosity
 // program is run on, from a box with two blocks in it to the paper's largest scenes); how they
-// were chosen, and what else was tried: docs/machines/probe.md. The fit needs the
-// spread: a ray's own cost and its tests' are told apart only by rooms whose rays meet
-// different numbers of patches. Every room has boxes: in an empty convex room no ray ever
-// crosses a patch's plane, every test's branch goes the same way, and its tests run faster
-// than in any room with something in it (bare rooms: 3.1-4.0 ns a test against 5.2-6.2 in
-// these) — not the work a visibility computation does.
+// were chosen, and what else was tried: docs/machines/probe.md. Every room has boxes: in an
+// empty convex room no ray ever crosses a patch's plane, every test's branch goes the same
+// way, and its tests run faster than in any room with something in it (bare rooms: 3.1-4.0 ns
+// a test against 5.2-6.2 in these) — not the work a visibility computation does.
+//
+// Two more runs make the fits well-conditioned, each where one kind dominates (in the rooms a
+// ray's own work is 1-2 % of its time and a blocked ray's 3 %, which a 2 % noise decides):
+// the shots of the room of 241 patches against no patch at all (`nothing_to_test`: a ray's
+// own work alone, ray_speed; its gather with no part visible: each receiver's update alone,
+// arithmetic_speed), and the shots of a room against a screen across it, a checkerboard of 2
+// x 2 cells with two of them patches (`screen`: 2 tests a ray, a third of the rays blocked,
+// by which cell no branch foretells: blocked_ray_speed).
 struct Room {
   int cut, boxes;
+  bool nothing_to_test = false;
+  int screen = 0;  // > 0: the loop runs against the screen's patches alone
 };
-const std::vector<Room> kRooms = {{1, 2}, {2, 4}, {3, 8}, {4, 24}, {6, 48}, {8, 100}};
-// Counted flops of one timed repeat of the loop in each room (about 0.1 s on a core of 2024):
+const std::vector<Room> kRooms = {{1, 2},  {2, 4},  {3, 8},           {4, 24},
+                                  {6, 48}, {8, 100}, {4, 24, true, 0}, {2, 0, false, 2}};
+// Counted flops of one timed repeat of the rays with nothing to test (about 0.01 s).
+constexpr double kRayFlopsARepeat = 6e7;
+// Counted flops of one timed repeat of the loop in each room (about 0.07 s on a core of 2024):
 // a small room's shots are run several times over to reach it.
-constexpr double kLoopFlopsARepeat = 4e8;
-// The same for the gather (arithmetic flops; about 0.02 s).
-constexpr double kGatherFlopsARepeat = 2e8;
+constexpr double kLoopFlopsARepeat = 3e8;
+// The same for the gather (its flops as a probed machine is charged them; about 0.02 s).
+constexpr double kGatherFlopsARepeat = 3e7;
 
 double thread_seconds() {
   timespec t{};
@@ -241,7 +267,10 @@ std::string probed_platform(const std::string& network_file, const std::string& 
 // The kinds of work of the visibility loop, each a rate the fit gives: a ray's own, and its
 // tests (ray-patch tests and their plane crossings, in the cost model's proportion of flops:
 // src/machine/work_kinds.h).
-const std::vector<std::string> kLoopKinds = {"ray_speed", "test_speed"};
+const std::vector<std::string> kLoopKinds = {"ray_speed", "test_speed", "blocked_ray_speed"};
+// The gather's: the counted form factors and updates (arithmetic_speed), and the edge terms
+// the host sums for them (edge_term_speed).
+const std::vector<std::string> kGatherKinds = {"arithmetic_speed", "edge_term_speed"};
 
 double loop_flops(const ncube::CostModel& costs, const ncube::WorkCounts& counts) {
   double flops = 0;
@@ -278,27 +307,41 @@ void aim(Shots& shots, const ncube::RadiosityEngine& engine, const Room& room) {
 }
 
 // The brute-force visibility loop in one room, then the engine's gather for the masks it
-// found, each `repeats` times after one run that warms the caches and counts a pass.
-struct RoomTimings {
+// found: set up, with one run of each that warms the caches and counts a pass; then timed by
+// time_rooms.
+struct PreparedRoom {
+  Shots shots;
+  std::unique_ptr<ncube::RadiosityEngine> engine;
+  std::unique_ptr<ncube::BruteForceOccluders> occluders;
+  std::vector<std::vector<ncube::PartMask>> gather_masks;  // the masks the gather is timed on
   Timing loop, gather;
+  void loop_pass(ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      shots.masks[s] = ncube::visible_parts(*engine, *occluders, shots.receivers[s],
+                                            shots.shooters[s], counts);
+  }
+  void gather_pass(ncube::WorkCounts& counts) {
+    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
+      engine->gather(shots.shooters[s], shots.receivers[s], gather_masks[s], counts);
+  }
 };
 
-RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& costs) {
-  Shots shots;
-  shots.scene = probe_room(room.cut, room.boxes);
+std::unique_ptr<PreparedRoom> prepare_room(const Room& room, const ncube::CostModel& costs) {
+  auto prepared = std::make_unique<PreparedRoom>();
+  Shots& shots = prepared->shots;
+  shots.scene = probe_room(room.cut, room.boxes, room.screen);
   shots.all.resize(shots.scene.patches.size());
   for (std::size_t k = 0; k < shots.all.size(); ++k) shots.all[k] = int(k);
-  ncube::RadiosityEngine engine(shots.scene, shots.all);
-  const ncube::BruteForceOccluders occluders(shots.scene, shots.all,
-                                             ncube::RayTestPolicy::kTestAllPatches);
+  prepared->engine = std::make_unique<ncube::RadiosityEngine>(shots.scene, shots.all);
+  ncube::RadiosityEngine& engine = *prepared->engine;
+  std::vector<int> tested = shots.all;
+  if (room.nothing_to_test) tested.clear();
+  if (room.screen > 0)  // the screen's cells, the last patches
+    tested.assign(shots.all.end() - (room.screen * room.screen + 1) / 2, shots.all.end());
+  prepared->occluders = std::make_unique<ncube::BruteForceOccluders>(
+      shots.scene, tested, ncube::RayTestPolicy::kTestAllPatches);
   aim(shots, engine, room);
-  const auto pass = [&](ncube::WorkCounts& counts) {
-    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
-      shots.masks[s] = ncube::visible_parts(engine, occluders, shots.receivers[s],
-                                            shots.shooters[s], counts);
-  };
-  RoomTimings t;
-  Timing& loop = t.loop;
+  Timing& loop = prepared->loop;
   loop.patches = shots.scene.patches.size();
   // A large room's shots are more than a repeat: every k-th receiver of each shot, in store
   // order (the rays still cross the whole room), k from the shots' size before they are run
@@ -310,7 +353,7 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
   const double estimate = rays * double(loop.patches - 2) *
                           (costs.flops_per_ray_patch_test + 0.25 * costs.flops_per_plane_crossing);
   std::size_t stride = 1;
-  if (estimate > kLoopFlopsARepeat) {
+  if (!room.nothing_to_test && estimate > kLoopFlopsARepeat) {
     stride = std::size_t(std::ceil(estimate / kLoopFlopsARepeat));
     for (auto& receivers : shots.receivers) {
       std::vector<ncube::ElementRef> kept;
@@ -319,43 +362,60 @@ RoomTimings time_room(const Room& room, int repeats, const ncube::CostModel& cos
     }
   }
   ncube::WorkCounts once;
-  pass(once);
-  loop.passes = std::max(1, int(std::lround(kLoopFlopsARepeat / loop_flops(costs, once))));
+  prepared->loop_pass(once);
+  loop.passes = std::max(1, int(std::lround((room.nothing_to_test ? kRayFlopsARepeat
+                                                                     : kLoopFlopsARepeat) /
+                                              loop_flops(costs, once))));
   loop.what = std::to_string(loop.patches) + " patches (cut " + std::to_string(room.cut) + ", " +
-              std::to_string(room.boxes) + " boxes), the shots " +
+              std::to_string(room.boxes) + " boxes" +
+              (room.screen ? ", a screen of " + std::to_string(room.screen) + " x " +
+                                 std::to_string(room.screen) + " cells" : "") +
+              "), the shots " + (room.nothing_to_test ? "against no patch, " :
+                                 room.screen ? "against the screen alone, " : "") +
               (stride > 1 ? "to 1 receiver in " + std::to_string(stride) + ", " : "") +
               std::to_string(loop.passes) + (loop.passes == 1 ? " time" : " times");
-  for (int r = 0; r < repeats; ++r) {
-    ncube::WorkCounts counts;
-    const double start = thread_seconds();
-    for (int p = 0; p < loop.passes; ++p) pass(counts);
-    loop.seconds.push_back(thread_seconds() - start);
-    loop.counts = counts;
-  }
+  // With nothing to test every part is visible, not a gather a scene asks for; there the
+  // gather is timed with no part visible instead: each receiver's own work alone (the light
+  // test, the update: element_updates, arithmetic_speed), where that kind dominates.
+  prepared->gather_masks = shots.masks;
+  if (room.nothing_to_test)
+    for (auto& masks : prepared->gather_masks)
+      std::fill(masks.begin(), masks.end(), ncube::PartMask(0));
   // The gather of the masks found: its cost a counted form factor depends on which parts are
   // visible (the host sums a visible region's contour, not each part: docs/machines/probe.md),
   // so it is timed in every room, as the loop is.
-  Timing& gather = t.gather;
+  Timing& gather = prepared->gather;
   gather.patches = loop.patches;
-  const auto gather_pass = [&](ncube::WorkCounts& counts) {
-    for (std::size_t s = 0; s < shots.shooters.size(); ++s)
-      engine.gather(shots.shooters[s], shots.receivers[s], shots.masks[s], counts);
-  };
   ncube::WorkCounts gathered_once;
-  gather_pass(gathered_once);
-  gather.passes = std::max(1, int(std::lround(
-      kGatherFlopsARepeat / ncube::kind_flops(costs, gathered_once, "arithmetic_speed"))));
-  gather.what = std::to_string(gather.patches) + " patches, the shots' gather " +
+  prepared->gather_pass(gathered_once);
+  double gather_flops = 0;
+  for (const std::string& kind : kGatherKinds)
+    gather_flops += ncube::kind_flops(costs, gathered_once, kind);
+  gather.passes = std::max(1, int(std::lround(kGatherFlopsARepeat / gather_flops)));
+  gather.what = std::to_string(gather.patches) + " patches, the shots' gather" +
+                (room.nothing_to_test ? " with no part visible " : " ") +
                 std::to_string(gather.passes) + " times";
-  for (int r = 0; r < repeats; ++r) {
+  return prepared;
+}
+
+// Every room's loop and gather timed `repeats` times, round by round: one repeat of each in
+// turn, so that a few seconds in which another process disturbs the host fall on one repeat
+// of several runs, which their medians leave out, rather than on every repeat of one run.
+void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms, int repeats) {
+  const auto time = [](Timing& timing, auto&& pass) {
     ncube::WorkCounts counts;
     const double start = thread_seconds();
-    for (int p = 0; p < gather.passes; ++p) gather_pass(counts);
-    gather.seconds.push_back(thread_seconds() - start);
-    gather.counts = counts;
-  }
-  return t;
+    for (int p = 0; p < timing.passes; ++p) pass(counts);
+    timing.seconds.push_back(thread_seconds() - start);
+    timing.counts = counts;
+  };
+  for (int r = 0; r < repeats; ++r)
+    for (auto& room : rooms) {
+      time(room->loop, [&](ncube::WorkCounts& c) { room->loop_pass(c); });
+      time(room->gather, [&](ncube::WorkCounts& c) { room->gather_pass(c); });
+    }
 }
+
 
 int machine_probe(int argc, char** argv) {
   const std::string root = ncube::repository_root();
@@ -385,47 +445,64 @@ int machine_probe(int argc, char** argv) {
   // placeholders here, so that a file that cannot is refused before the seconds of timing.
   probed_platform(network_file, network, {{"test_speed", 1.0}}, "");
 
-  // The loop and the gather in every room; the loop's three rates fitted, the gather's one.
+  // The loop and the gather in every room, timed round by round; the loop's three rates
+  // fitted, the gather's two.
   std::vector<Timing> loops, gathers;
   std::vector<ncube::TimedRun> runs, gather_runs;
-  for (const Room& room : kRooms) {
-    RoomTimings timed = time_room(room, repeats, costs);
-    loops.push_back(timed.loop);
-    gathers.push_back(timed.gather);
+  std::vector<std::unique_ptr<PreparedRoom>> prepared;
+  for (const Room& room : kRooms) prepared.push_back(prepare_room(room, costs));
+  time_rooms(prepared, repeats);
+  for (const auto& timed : prepared) {
+    loops.push_back(timed->loop);
+    gathers.push_back(timed->gather);
     const Timing& t = loops.back();
     ncube::TimedRun run{{}, median(t.seconds)};
     for (const std::string& kind : kLoopKinds)
       run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
     runs.push_back(run);
-    gather_runs.push_back({{ncube::kind_flops(costs, timed.gather.counts, "arithmetic_speed")},
-                           median(timed.gather.seconds)});
+    ncube::TimedRun gather_run{{}, median(timed->gather.seconds)};
+    for (const std::string& kind : kGatherKinds)
+      gather_run.flops.push_back(ncube::kind_flops(costs, timed->gather.counts, kind));
+    gather_runs.push_back(gather_run);
   }
   const ncube::RateFit fit = ncube::fit_seconds_per_flop(runs);
   for (std::size_t k = 0; k < loops.size(); ++k)
-    std::cout << "room of " << loops[k].patches << " patches: "
+    std::cout << "room of " << loops[k].patches << " patches"
+              << (loops[k].counts.ray_patch_tests ? "" : ", nothing to test") << ": "
               << number(double(loops[k].counts.ray_patch_tests) / double(loops[k].counts.rays), 4)
               << " tests a ray, "
-              << number(100.0 * double(loops[k].counts.plane_crossings) /
-                        double(loops[k].counts.ray_patch_tests), 3)
-              << " % crossing, " << number(median(loops[k].seconds), 4) << " s, "
-              << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.ray_patch_tests), 4)
-              << " ns a test, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(100.0 * double(loops[k].counts.blocked_rays) / double(loops[k].counts.rays), 3)
+              << " % blocked, " << number(median(loops[k].seconds), 4) << " s, "
+              << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.rays), 4)
+              << " ns a ray, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
               << number(100 * fit.relative_residuals[k], 2) << " %\n";
+  const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
+  // (rate, flop/s), node_speed's (test_speed) first: the rates of the two fits.
   std::vector<std::pair<std::string, double>> rates;
-  for (std::size_t k = 0; k < kLoopKinds.size(); ++k) {
-    if (!(fit.seconds_per_flop[k] > 0))
-      throw MeasurementFailed("the fit of the visibility loop's times gave " + kLoopKinds[k] +
-                              " no time or less (" + number(fit.seconds_per_flop[k], 4) +
-                              " s a flop): the host was too disturbed; probe again, or with "
-                              "more --repeats");
-    rates.push_back({kLoopKinds[k], 1 / fit.seconds_per_flop[k]});
-  }
+  const auto take = [&rates](const ncube::RateFit& f, const std::vector<std::string>& kinds,
+                             const std::string& kernel) {
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+      if (!(f.seconds_per_flop[k] > 0))
+        throw MeasurementFailed("the fit of the " + kernel + "'s times gave " + kinds[k] +
+                                " no time or less (" + number(f.seconds_per_flop[k], 4) +
+                                " s a flop): the host was too disturbed; probe again, or with "
+                                "more --repeats");
+      rates.push_back({kinds[k], 1 / f.seconds_per_flop[k]});
+    }
+  };
+  take(fit, kLoopKinds, "visibility loop");
+  take(gather_fit, kGatherKinds, "gather");
   // node_speed (and so memory_speed's kind) is the test rate: the first of the file's rates.
   std::swap(rates[0], rates[1]);
-  const double test_speed = rates[0].second, ray_speed = rates[1].second;
-  const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
-  const double arithmetic_speed = 1 / gather_fit.seconds_per_flop[0];
-  rates.push_back({"arithmetic_speed", arithmetic_speed});
+  const auto rate_of = [&rates](const std::string& name) {
+    for (const auto& [rate, value] : rates)
+      if (rate == name) return value;
+    throw std::logic_error("machine_probe: no rate " + name);
+  };
+  const double test_speed = rate_of("test_speed"), ray_speed = rate_of("ray_speed"),
+               blocked_ray_speed = rate_of("blocked_ray_speed"),
+               arithmetic_speed = rate_of("arithmetic_speed"),
+               edge_term_speed = rate_of("edge_term_speed");
 
   const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
@@ -443,31 +520,39 @@ int machine_probe(int argc, char** argv) {
         << "     that kind outside a node program) and so runs at node_speed.\n"
         << "     test_speed = " << number(test_speed, 6) << " flop/s ("
         << number(1e9 * costs.flops_per_ray_patch_test / test_speed, 3)
-        << " ns a ray-patch test) and ray_speed = " << number(ray_speed, 6) << " flop/s\n       ("
+        << " ns a ray-patch test), ray_speed = " << number(ray_speed, 6) << " flop/s\n       ("
         << number(1e9 * costs.flops_per_ray / ray_speed, 3) << " ns a ray's own work besides "
-        << "its tests): the brute-force visibility loop\n       (visible_parts over "
-        << "BruteForceOccluders, " << kShooters << " shooters of 64 parts) in " << loops.size()
-        << " rooms, the relative\n       least squares fit of the median time = ray flops / "
-        << "ray_speed + test flops / test_speed\n       (src/machine/rate_fit.h; test flops: "
-        << "the ray-patch tests' and their plane crossings'),\n       root mean square residual "
-        << number(100 * fit.rms_relative_residual, 2) << " %. Each room: its counts a repeat, "
-        << "median of " << repeats << " repeats,\n       spread (fastest - slowest over the "
-        << "median), fitted - measured:\n";
+        << "its tests) and blocked_ray_speed = " << number(blocked_ray_speed, 6)
+        << " flop/s\n       (" << number(1e9 * costs.flops_per_blocked_ray / blocked_ray_speed, 3)
+        << " ns a blocked ray's more): the brute-force visibility loop (visible_parts over\n"
+        << "       BruteForceOccluders, " << kShooters << " shooters of 64 parts) in " << loops.size()
+        << " runs, the relative least squares fit of the median\n       time = ray flops / "
+        << "ray_speed + test flops / test_speed + blocked flops / blocked_ray_speed\n       "
+        << "(src/machine/rate_fit.h; test flops: the ray-patch tests' and their plane crossings'),"
+        << "\n       root mean square residual " << number(100 * fit.rms_relative_residual, 2)
+        << " %. Each run: its counts a repeat, median of " << repeats << " repeats,\n       spread "
+        << "(fastest - slowest over the median), fitted - measured:\n";
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const Timing& t = loops[k];
     about << "       " << t.what << ": "
           << number(double(t.counts.ray_patch_tests) / double(t.counts.rays), 4)
-          << " tests a ray, " << number(100.0 * double(t.counts.plane_crossings) /
-                                        double(t.counts.ray_patch_tests), 3)
-          << " % of them crossing; " << counts_text(t.counts) << "; " << number(median(t.seconds), 4)
-          << " s, spread " << number(100 * spread(t.seconds), 2) << " %, residual "
-          << (fit.relative_residuals[k] >= 0 ? "+" : "")
+          << " tests a ray, " << number(100.0 * double(t.counts.blocked_rays) /
+                                        double(t.counts.rays), 3)
+          << " % of the rays blocked; " << counts_text(t.counts) << "; "
+          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << " %, residual " << (fit.relative_residuals[k] >= 0 ? "+" : "")
           << number(100 * fit.relative_residuals[k], 2) << " %.\n";
   }
-  about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s: the engine's "
-        << "gather (point-to-part form factors,\n       radiosity updates) of the same shots in "
-        << "the same rooms, the relative least squares fit of\n       the median time = "
-        << "arithmetic flops / arithmetic_speed, root mean square residual "
+  about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s and edge_term_speed = "
+        << number(edge_term_speed, 6) << " flop/s (" << number(1e9 * costs.flops_per_element_update /
+                                                              arithmetic_speed, 3)
+        << " ns a radiosity update,\n       "
+        << number(1e9 * costs.flops_per_form_factor_edge_term / edge_term_speed, 3)
+        << " ns an edge term; the counted form factors are their edge terms here, not charged\n"
+        << "       apart): the engine's gather (point-to-part form factors, radiosity updates) of the\n"
+        << "       same shots in the same rooms, the relative least squares fit of the median time =\n"
+        << "       arithmetic flops / arithmetic_speed + edge-term flops / edge_term_speed,\n"
+        << "       root mean square residual "
         << number(100 * gather_fit.rms_relative_residual, 2) << " %:\n";
   for (std::size_t k = 0; k < gathers.size(); ++k) {
     const Timing& t = gathers[k];
@@ -481,13 +566,19 @@ int machine_probe(int argc, char** argv) {
   outputs.write("--out", text);
   outputs.commit();
   for (const auto& [rate, value] : rates) std::cout << rate << " " << number(value, 6) << " flop/s\n";
-  std::cout << "visibility loop fit over " << loops.size() << " rooms: root mean square residual "
+  std::cout << "visibility loop fit over " << loops.size() << " runs: root mean square residual "
             << number(100 * fit.rms_relative_residual, 2) << " %\n";
   for (std::size_t k = 0; k < gathers.size(); ++k)
     std::cout << "room of " << gathers[k].patches << " patches: gather "
-              << number(1e9 * median(gathers[k].seconds) / double(gathers[k].counts.form_factors), 4)
-              << " ns a form factor, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(1e9 * median(gathers[k].seconds) /
+                        double(std::max<std::uint64_t>(1, gathers[k].counts.element_updates)), 4)
+              << " ns a receiver, "
+              << number(double(gathers[k].counts.form_factor_edge_terms) /
+                        double(std::max<std::uint64_t>(1, gathers[k].counts.element_updates)), 3)
+              << " edge terms a receiver, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
               << number(100 * gather_fit.relative_residuals[k], 2) << " %\n";
+  std::cout << "gather fit over " << gathers.size() << " runs: root mean square residual "
+            << number(100 * gather_fit.rms_relative_residual, 2) << " %\n";
   return ncube::kExitOk;
 }
 

@@ -60,4 +60,17 @@ class OccluderSet {
   }
 };
 
+// Adds to counts.blocked_rays the rays of a block's answers that found their part blocked
+// (NCUBE_HOST_WORK_COUNTERS): read from the answers, so that every way of finding them (the
+// readable definitions and the host's) counts the same. The node programs call it beside
+// unblocked_parts (visible_parts, the visibility processor).
+inline void count_blocked_rays(const PartMask* masks, std::size_t count, const Shooter& shooter,
+                               WorkCounts& counts) {
+  const PartMask all = shooter.all_parts();
+  std::uint64_t blocked = 0;
+  for (std::size_t k = 0; k < count; ++k)
+    blocked += std::uint64_t(shooter.part_count - __builtin_popcountll(masks[k] & all));
+  counts.blocked_rays += blocked;
+}
+
 }  // namespace ncube
