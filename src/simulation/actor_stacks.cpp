@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -19,6 +19,7 @@
 #include <xbt/config.hpp>
 
 #include "util/input_error.h"
+#include "util/input_file.h"
 
 namespace ncube {
 namespace {
@@ -111,20 +112,26 @@ Reservation& reservation() {
 constexpr long kMappingsPerGuardedStack = 2;
 constexpr long kMappingsForTheRun = 1024;
 
-// Lines of a text file (the mappings of /proc/self/maps); -1 when it cannot be read.
+// Lines of a kernel's file (the mappings of /proc/self/maps), through the read gate; -1 when it
+// cannot be read (the check is then left out, as on a host without /proc).
 long count_lines(const char* path) {
-  std::ifstream file(path);
-  if (!file) return -1;
-  long lines = 0;
-  for (std::string line; std::getline(file, line);) ++lines;
-  return lines;
+  try {
+    const std::string text = read_input_file(path, kProcessMapsFile);
+    return long(std::count(text.begin(), text.end(), '\n'));
+  } catch (const InputError&) {
+    return -1;
+  }
 }
 
 long read_number(const char* path) {
-  std::ifstream file(path);
-  long value = -1;
-  if (!(file >> value)) return -1;
-  return value;
+  try {
+    std::istringstream text(read_input_file(path, kKernelFile));
+    long value = -1;
+    if (!(text >> value)) return -1;
+    return value;
+  } catch (const InputError&) {
+    return -1;
+  }
 }
 
 std::string mib(std::size_t bytes) {

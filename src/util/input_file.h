@@ -32,6 +32,9 @@ inline constexpr InputKind kCostModelFile{"cost model", 1 * kMiB};
 inline constexpr InputKind kActivityRecord{"activity record", std::size_t(16) << 30};
 // A file of the kernel's (/proc/meminfo): what the host has, for a tool's estimate.
 inline constexpr InputKind kKernelFile{"kernel file", 1 * kMiB};
+// The kernel's list of a process's memory mappings (/proc/self/maps): about 100 bytes a
+// mapping, up to vm.max_map_count (65,530 by default) of them.
+inline constexpr InputKind kProcessMapsFile{"process memory map", 64 * kMiB};
 // A result file read back by a bench tool (build/embree_floor).
 inline constexpr InputKind kResultFile{"result file", 256 * kMiB};
 
