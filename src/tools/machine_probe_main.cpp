@@ -19,6 +19,9 @@
 // tests a ray, a third of the rays blocked); the gather in the same rooms, and with no part
 // visible (the updates alone). The rates are the relative least squares fits of time = sum
 // over kinds of flops / rate (src/machine/rate_fit.h), each run's residual written with them.
+// The hemicube (render_hemicube, --form-factors hemicube) is timed on the probe's rooms too,
+// in 6 runs from 985 patches on hemicubes of 8 x 8 cells (its polygons' work dominates:
+// projection_speed) to 49 on 400 x 400 (its cells': raster_speed), and fitted the same way.
 // Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
 // processes do not count), the median kept; flops are counted with platforms/cost_model.json.
 // memory_speed has no kernel reachable outside a node program (the increments' sum is the
