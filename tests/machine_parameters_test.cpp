@@ -75,7 +75,7 @@ TEST(MachineParameters, EveryEntryIsComplete) {
     p.set(c, p.high);
     EXPECT_EQ(p.get(c), p.high) << p.name << ": get and set are not one field";
   }
-  EXPECT_EQ(names.size(), 13u);  // update with the list when a parameter is added
+  EXPECT_EQ(names.size(), 15u);  // update with the list when a parameter is added
 }
 
 // platforms/ncube2.json as a JSON object, each parameter set by `change`.

@@ -2,7 +2,8 @@
 # build/machine_probe (src/tools/machine_probe_main.cpp, docs/machines/probe.md):
 #  - its errors: no --out (exit 2), --out a folder (exit 5), a --network that is not a platform
 #    of platforms/machines/ (exit 2, no file left);
-#  - the file it writes loads and runs, with the five measured rates read back into the
+#  - the file it writes loads and runs, with the seven measured rates (the hemicube's two,
+#    projection_speed and raster_speed, among them, with its 6 runs) read back into the
 #    result's provenance and each rate's measurement in the file: the fits' runs (median of the
 #    repeats, spread, residual) and their root mean square residuals; the host work counters
 #    (blocked_rays, form_factor_edge_terms) in its result's counts, and in no nCube2 result's;
@@ -36,7 +37,8 @@ set -e
 
 # 2. The file.
 "$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said"
-for rate in test_speed ray_speed blocked_ray_speed arithmetic_speed edge_term_speed; do
+for rate in test_speed ray_speed blocked_ray_speed arithmetic_speed edge_term_speed \
+            projection_speed raster_speed; do
   grep -q "<prop id=\"$rate\" value=\"" "$tmp/probed.xml" || fail "no $rate <prop>"
   grep -q "$rate = [0-9.e+]* flop/s" "$tmp/probed.xml" || fail "no measurement of $rate in the file"
 done
@@ -44,8 +46,10 @@ grep -q "median of 3 repeats" "$tmp/probed.xml" || fail "the file does not give 
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
 [[ $(grep -c "), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 8 ]] ||
   fail "the file does not give the loop's 8 runs with their residuals"
-[[ $(grep -c "root mean square residual" "$tmp/probed.xml") == 2 ]] ||
-  fail "the file does not give the two fits' residuals"
+[[ $(grep -c "hemicubes of [0-9]* x [0-9]* cells, .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 6 ]] ||
+  fail "the file does not give the hemicube's 6 runs with their residuals"
+[[ $(grep -c "root mean square residual" "$tmp/probed.xml") == 3 ]] ||
+  fail "the file does not give the three fits' residuals"
 grep -q 'topo_parameters="2;16,4;1,4;1,4"' "$tmp/probed.xml" || fail "not the 2024 cluster's network"
 
 # 3. The prediction: least of 2 CPU times for 1 and for 2 iterations.
@@ -66,7 +70,8 @@ def run(iterations):
     result = json.load(open(f"{tmp}/r.json"))
     values = result["provenance"]["platform"]["values"]
     assert all(rate in values for rate in ("test_speed", "ray_speed", "blocked_ray_speed",
-                                           "arithmetic_speed", "edge_term_speed")), values
+                                           "arithmetic_speed", "edge_term_speed",
+                                           "projection_speed", "raster_speed")), values
     assert result["counts"]["blocked_rays"] > 0 and result["counts"]["form_factor_edge_terms"] > 0
     return result["simulated_seconds"], least
 s1, c1 = run(1)

@@ -36,7 +36,8 @@ TEST(WorkKinds, EveryCounterHasAKindWhoseRateIsAnOptionalMachineParameter) {
   EXPECT_EQ(kinds, listed);
   ASSERT_EQ(work_rate_names(),
             (std::vector<std::string>{"test_speed", "ray_speed", "arithmetic_speed",
-                                      "memory_speed", "blocked_ray_speed", "edge_term_speed"}));
+                                      "memory_speed", "projection_speed", "raster_speed",
+                                      "blocked_ray_speed", "edge_term_speed"}));
   for (const std::string& rate : work_rate_names()) {
     const MachineParameter* p = parameter_named(rate);
     ASSERT_NE(p, nullptr) << rate;
@@ -183,6 +184,45 @@ TEST(WorkKinds, HostWorkIsChargedOnlyWhereItsRateIsGivenAndThenReplacesTheFormFa
   EXPECT_EQ(kind_flops(c, w, "arithmetic_speed"), 60);
   EXPECT_EQ(kind_flops(c, w, "edge_term_speed"), 900);
   EXPECT_EQ(kind_flops(c, w, "blocked_ray_speed"), 126);
+}
+
+// The hemicube's kinds: given, each counter runs at its kind's rate; left out, each counter at
+// the rate that ran it before the kinds existed (clip and depth tests test_speed, cells read
+// memory_speed, the rest arithmetic_speed), to the last bit. Worked by hand.
+TEST(WorkKinds, HemicubeCountersRunAtTheirKindsAndWithoutThemAsBeforeToTheLastBit) {
+  CostModel c;
+  c.flops_per_hemicube_vertex_transformed = 21;
+  c.flops_per_hemicube_clip_test = 2;
+  c.flops_per_hemicube_row_scanned = 10;
+  c.flops_per_hemicube_depth_test = 2;
+  c.flops_per_hemicube_cell_read = 3;
+  WorkCounts w;
+  w.hemicube_vertices_transformed = 40;
+  w.hemicube_clip_tests = 300;
+  w.hemicube_rows_scanned = 70;
+  w.hemicube_depth_tests = 900;
+  w.hemicube_cells_read = 1000;
+  PlatformConfig p;
+  p.node_speed = 1e6;
+  p.test_speed = 4e8;
+  p.arithmetic_speed = 2e8;
+  p.memory_speed = 1e9;
+  const double before = 840.0 / 2e8 + 600.0 / 4e8 + 700.0 / 2e8 + 1800.0 / 4e8 + 3000.0 / 1e9;
+  EXPECT_EQ(compute_seconds(c, p, w), before);
+  // memory_speed left out too: the cells read at node_speed, as before.
+  p.memory_speed = 0;
+  EXPECT_EQ(compute_seconds(c, p, w),
+            840.0 / 2e8 + 600.0 / 4e8 + 700.0 / 2e8 + 1800.0 / 4e8 + 3000.0 / 1e6);
+  p.memory_speed = 1e9;
+  p.projection_speed = 5e8;
+  EXPECT_NEAR(compute_seconds(c, p, w),
+              (840.0 + 600.0) / 5e8 + 700.0 / 2e8 + 1800.0 / 4e8 + 3000.0 / 1e9, 1e-15);
+  p.raster_speed = 3e8;
+  EXPECT_NEAR(compute_seconds(c, p, w), (840.0 + 600.0) / 5e8 + (700.0 + 1800.0 + 3000.0) / 3e8,
+              1e-15);
+  EXPECT_EQ(kind_flops(c, w, "raster_speed"), 5500);
+  EXPECT_EQ(kind_flops(c, w, "projection_speed"), 1440);
+  EXPECT_EQ(kind_flops(c, w, "test_speed"), 0);
 }
 
 }  // namespace

@@ -136,12 +136,18 @@ MACHINES = [
         # least squares fit over the probe's 8 loop runs (root mean square residual 2.1 %, runs
         # within -2.9 to +4.7 %), arithmetic_speed and edge_term_speed the gather's over its 8
         # (4.1 %, -6.0 to +5.8 %); docs/machines/probe.md. node speed is the test rate.
+        # projection_speed and raster_speed (the hemicube's kinds, added later) from
+        # build/machine_probe --repeats 15 on 2026-11-28 02:48 UTC (load average 4 on 2
+        # cores), the fit over its 6 hemicube runs (root mean square residual 11 %, runs within
+        # -24 to +9 %; the other five rates of that probe within 1.2 % of these).
         "speed": 4.34e9,
         "rates": {"test_speed": 4.34e9, "ray_speed": 6.05e9, "blocked_ray_speed": 5.6e9,
-                  "arithmetic_speed": 1.4e9, "edge_term_speed": 1.28e9},
+                  "arithmetic_speed": 1.4e9, "edge_term_speed": 1.28e9,
+                  "projection_speed": 7.29e8, "raster_speed": 9.33e8},
         "rates_measured": "Measured by build/machine_probe --repeats 15 on this project's build "
-                          "host (AMD EPYC,\n         2.6 GHz) on 2026-11-28 02:11 UTC, rounded to "
-                          "3 digits: docs/machines/probe.md.",
+                          "host (AMD EPYC,\n         2.6 GHz) on 2026-11-28 02:11 UTC (projection_speed and "
+                          "raster_speed at\n         02:48 UTC), rounded to 3 digits: "
+                          "docs/machines/probe.md.",
         "memory": 256 * 1024 ** 3,
         "bandwidth": 25e9,
         "latency": 0.1e-6,

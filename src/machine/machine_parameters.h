@@ -78,7 +78,18 @@ enum class XmlForm {
   X(edge_term_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                       \
     "speed of one node on the contour integrals' edge terms as the host sums them "            \
     "(flops_per_form_factor_edge_term of cost_model.json per second: cross product, norm, "     \
-    "arctangent); left out: they are not charged (nor written), as before this rate existed")
+    "arctangent); left out: they are not charged (nor written), as before this rate existed") \
+  X(projection_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                      \
+    "speed of one node on a polygon's way into a hemicube face: its vertices moved into the "   \
+    "hemicube's frame, clipped to the face and projected, its plane and scan set up "          \
+    "(flops_per_hemicube_vertex_transformed, _polygon_set_up, _clip_test, _clip_cut, "         \
+    "_vertex_projected, _polygon_scanned per second); left out: each at the rate that ran it "  \
+    "before this rate existed (arithmetic_speed, the clip tests test_speed)")                  \
+  X(raster_speed, double, "flop/s", 1e3, 1e15, false, kProperty, true,                          \
+    "speed of one node on a hemicube's scan conversion and item buffer: rows scanned, cells "   \
+    "depth-tested, cells read out (flops_per_hemicube_row_scanned, _depth_test, _cell_read "    \
+    "per second); left out: each at the rate that ran it before this rate existed "             \
+    "(arithmetic_speed, test_speed, memory_speed)")
 
 // The network model a JSON platform file gets when it has no "simgrid_config" (the nCube2's,
 // docs/model.md): X(SimGrid setting, value, why). Defaults that --cfg overrides. The one

@@ -29,6 +29,16 @@ const std::vector<Fallback>& fallbacks() {
   return entries;
 }
 
+// A counter's own fallback (NCUBE_COUNTER_FALLBACKS): the rate field that runs it when the
+// machine leaves its kind's rate out; null for a counter whose kind falls back as a whole.
+double PlatformConfig::*counter_fallback_field(const char* cost_parameter) {
+#define NCUBE_COUNTER_FALLBACK_FIELD(cost, fallback) \
+  if (std::string(#cost) == cost_parameter) return &PlatformConfig::fallback;
+  NCUBE_COUNTER_FALLBACKS(NCUBE_COUNTER_FALLBACK_FIELD)
+#undef NCUBE_COUNTER_FALLBACK_FIELD
+  return nullptr;
+}
+
 const std::vector<KindEntry>& kind_entries() {
   static const std::vector<KindEntry> entries = {
 #define NCUBE_KIND_ENTRY(cost, rate) {#cost, #rate, &PlatformConfig::rate},
@@ -51,6 +61,16 @@ const std::vector<double PlatformConfig::*>& work_fields() {
   static const std::vector<double PlatformConfig::*> fields = {
 #define NCUBE_KIND_FIELD(member, cost, doc) entry_of(#cost).field,
       NCUBE_WORK_COUNTERS(NCUBE_KIND_FIELD)
+  };
+  return fields;
+}
+
+// Each counter's own fallback field, in the order of the counter lists (null: none).
+const std::vector<double PlatformConfig::*>& work_fallback_fields() {
+  static const std::vector<double PlatformConfig::*> fields = {
+#define NCUBE_FALLBACK_FIELD(member, cost, doc) counter_fallback_field(#cost),
+      NCUBE_WORK_COUNTERS(NCUBE_FALLBACK_FIELD)
+#undef NCUBE_FALLBACK_FIELD
   };
   return fields;
 }
@@ -104,6 +124,14 @@ double rate(const PlatformConfig& platform, double PlatformConfig::*field) {
   for (const Fallback& f : fallbacks())
     if (f.field == field) return rate(platform, f.fallback_field);
   return platform.node_speed;
+}
+
+// The rate of a counter of kind `field` whose own fallback is `fallback` (null: none): the
+// kind's rate when the machine gives it, else the fallback's as rate() finds it.
+double counter_rate(const PlatformConfig& platform, double PlatformConfig::*field,
+                    double PlatformConfig::*fallback) {
+  if (fallback && !(platform.*field > 0)) return rate(platform, fallback);
+  return rate(platform, field);
 }
 
 }  // namespace
@@ -165,11 +193,13 @@ double compute_seconds(const CostModel& costs, const PlatformConfig& platform,
   if (!gives_work_rates(platform)) return costs.flops(c) / platform.node_speed;
   const auto& fields = work_fields();
   const auto& gates = work_gates();
+  const auto& counter_fallbacks = work_fallback_fields();
   double seconds = 0.0;
   std::size_t k = 0;
 #define NCUBE_ADD_WORK_SECONDS(member, cost, doc)                                \
   if (charged(platform, gates[k]))                                              \
-    seconds += costs.cost * double(c.member) / rate(platform, fields[k]);        \
+    seconds += costs.cost * double(c.member) /                                  \
+               counter_rate(platform, fields[k], counter_fallbacks[k]);          \
   ++k;
   NCUBE_WORK_COUNTERS(NCUBE_ADD_WORK_SECONDS)
 #undef NCUBE_ADD_WORK_SECONDS

@@ -31,15 +31,15 @@ namespace ncube {
   X(flops_per_increment_combined, memory_speed)                                                 \
   X(flops_per_increment_applied, memory_speed)                                                  \
   X(flops_per_hemicube_delta_form_factor, arithmetic_speed)                                     \
-  X(flops_per_hemicube_vertex_transformed, arithmetic_speed)                                    \
-  X(flops_per_hemicube_polygon_set_up, arithmetic_speed)                                        \
-  X(flops_per_hemicube_clip_test, test_speed)                                                   \
-  X(flops_per_hemicube_clip_cut, arithmetic_speed)                                              \
-  X(flops_per_hemicube_vertex_projected, arithmetic_speed)                                      \
-  X(flops_per_hemicube_polygon_scanned, arithmetic_speed)                                       \
-  X(flops_per_hemicube_row_scanned, arithmetic_speed)                                           \
-  X(flops_per_hemicube_depth_test, test_speed)                                                  \
-  X(flops_per_hemicube_cell_read, memory_speed)                                                 \
+  X(flops_per_hemicube_vertex_transformed, projection_speed)                                    \
+  X(flops_per_hemicube_polygon_set_up, projection_speed)                                        \
+  X(flops_per_hemicube_clip_test, projection_speed)                                             \
+  X(flops_per_hemicube_clip_cut, projection_speed)                                              \
+  X(flops_per_hemicube_vertex_projected, projection_speed)                                      \
+  X(flops_per_hemicube_polygon_scanned, projection_speed)                                       \
+  X(flops_per_hemicube_row_scanned, raster_speed)                                               \
+  X(flops_per_hemicube_depth_test, raster_speed)                                                \
+  X(flops_per_hemicube_cell_read, raster_speed)                                                 \
   X(flops_per_blocked_ray, blocked_ray_speed)                                                   \
   X(flops_per_form_factor_edge_term, edge_term_speed)                                           \
   X(flops_per_render_vertex, arithmetic_speed)                                                  \
@@ -60,6 +60,23 @@ namespace ncube {
 // that does not give ray_speed runs rays at its test_speed, as before, to the last bit
 // (docs/machines/README.md, "Rates per kind of work").
 #define NCUBE_RATE_FALLBACKS(X) X(ray_speed, test_speed)
+
+// X(cost-model parameter, the rate that runs it when a machine leaves its kind's rate out).
+// The hemicube's kinds (projection_speed: a polygon's way into a face, its vertices moved,
+// clipped and projected and its scan set up; raster_speed: the rows and cells of the scan
+// conversion and the item buffer's read-out) were split from the kinds that ran them before
+// (tests, arithmetic, memory); a machine that does not give them runs each of their counters
+// at the rate it ran at before, to the last bit (docs/machines/probe.md, "The hemicube").
+#define NCUBE_COUNTER_FALLBACKS(X) \
+  X(flops_per_hemicube_vertex_transformed, arithmetic_speed)                                    \
+  X(flops_per_hemicube_polygon_set_up, arithmetic_speed)                                        \
+  X(flops_per_hemicube_clip_test, test_speed)                                                   \
+  X(flops_per_hemicube_clip_cut, arithmetic_speed)                                              \
+  X(flops_per_hemicube_vertex_projected, arithmetic_speed)                                      \
+  X(flops_per_hemicube_polygon_scanned, arithmetic_speed)                                       \
+  X(flops_per_hemicube_row_scanned, arithmetic_speed)                                           \
+  X(flops_per_hemicube_depth_test, test_speed)                                                  \
+  X(flops_per_hemicube_cell_read, memory_speed)
 
 // X(host work counter, the paper's counter whose work it is). On a platform that charges the
 // host counter, the paper's counter is not charged: the same work, counted as the host does

@@ -19,6 +19,9 @@
 // tests a ray, a third of the rays blocked); the gather in the same rooms, and with no part
 // visible (the updates alone). The rates are the relative least squares fits of time = sum
 // over kinds of flops / rate (src/machine/rate_fit.h), each run's residual written with them.
+// The hemicube (render_hemicube, --form-factors hemicube) is timed on the probe's rooms too,
+// in 6 runs from 985 patches on hemicubes of 8 x 8 cells (its polygons' work dominates:
+// projection_speed) to 49 on 400 x 400 (its cells': raster_speed), and fitted the same way.
 // Each kernel is timed `repeats` times in the thread's CPU time (a shared host's other
 // processes do not count), the median kept; flops are counted with platforms/cost_model.json.
 // memory_speed has no kernel reachable outside a node program (the increments' sum is the
@@ -45,6 +48,7 @@
 #include "machine/platform_shape.h"
 #include "machine/rate_fit.h"
 #include "machine/work_kinds.h"
+#include "radiosity/hemicube.h"
 #include "radiosity/radiosity_engine.h"
 #include "radiosity/shooter.h"
 #include "scene/scene.h"
@@ -398,10 +402,83 @@ std::unique_ptr<PreparedRoom> prepare_room(const Room& room, const ncube::CostMo
   return prepared;
 }
 
+// The hemicube's runs, (cut, boxes, resolution): its two kinds of work, a polygon's way into a
+// face (projection_speed: moved, clipped, projected, its scan set up; per polygon and face)
+// and the scan conversion's rows and cells with the item buffer's read-out (raster_speed; per
+// cell), each dominating at one end: 985 patches on a hemicube of 8 x 8 cells (the polygons'
+// work 96 % of the flops), 49 patches on one of 400 x 400 (the cells' 99 %), and
+// between them the rooms and resolutions of the scenes' runs (100, the default, and 400).
+struct HemicubeRoom {
+  int cut, boxes, resolution;
+};
+const std::vector<HemicubeRoom> kHemicubeRooms = {
+    {8, 100, 8}, {6, 48, 20}, {4, 24, 100}, {3, 8, 100}, {2, 4, 400}, {1, 2, 200}};
+// Host seconds of one timed repeat of a hemicube run (its passes chosen from a warming pass):
+// short, so that the probe stays about 2.5 s of CPU at --repeats 3.
+constexpr double kHemicubeSecondsARepeat = 0.012;
+const std::vector<std::string> kHemicubeKinds = {"projection_speed", "raster_speed"};
+
+// One hemicube run: kShooters eyes (the light and patches spread through the room, as the
+// loop's shooters), each rendering every other patch of the room (render_hemicube, the code
+// the node programs run with --form-factors hemicube).
+struct PreparedHemicube {
+  ncube::Scene scene;
+  std::vector<int> eyes;
+  std::vector<std::vector<ncube::HemicubePolygon>> receivers;
+  std::unique_ptr<ncube::DeltaFormFactors> deltas;
+  Timing timing;
+  void pass(ncube::WorkCounts& counts) {
+    static const std::vector<ncube::HemicubePolygon> no_occluders;
+    for (std::size_t e = 0; e < eyes.size(); ++e) {
+      const ncube::Patch& eye = scene.patches[std::size_t(eyes[e])];
+      std::vector<double> sums(receivers[e].size(), 0.0);
+      ncube::render_hemicube(eye.polygon.centroid(), eye.normal,
+                             glm::normalize(eye.polygon[1] - eye.polygon[0]), receivers[e],
+                             no_occluders, *deltas, eye.area, sums, counts);
+    }
+  }
+};
+
+std::unique_ptr<PreparedHemicube> prepare_hemicube(const HemicubeRoom& room) {
+  auto prepared = std::make_unique<PreparedHemicube>();
+  prepared->scene = probe_room(room.cut, room.boxes, 0);
+  const int patches = int(prepared->scene.patches.size()), light = 6 * room.cut * room.cut;
+  prepared->eyes = {light};
+  for (int k = 0; k < kShooters - 1; ++k) {
+    int patch = int(std::lround((k + 0.5) * patches / (kShooters - 1) - 0.5));
+    while (std::find(prepared->eyes.begin(), prepared->eyes.end(), patch) != prepared->eyes.end())
+      patch = (patch + 1) % patches;
+    prepared->eyes.push_back(patch);
+  }
+  for (int eye : prepared->eyes) {
+    std::vector<ncube::HemicubePolygon> receivers;
+    for (int k = 0; k < patches; ++k)
+      if (k != eye)
+        receivers.push_back(ncube::hemicube_polygon(prepared->scene, k,
+                                                    prepared->scene.patches[std::size_t(k)].polygon,
+                                                    prepared->scene.patches[std::size_t(k)].area));
+    prepared->receivers.push_back(std::move(receivers));
+  }
+  prepared->deltas = std::make_unique<ncube::DeltaFormFactors>(room.resolution);
+  ncube::WorkCounts once;
+  const double start = thread_seconds();
+  prepared->pass(once);
+  const double warming = thread_seconds() - start;
+  Timing& t = prepared->timing;
+  t.patches = std::size_t(patches);
+  t.passes = std::max(1, int(std::lround(kHemicubeSecondsARepeat / std::max(warming, 1e-6))));
+  t.what = std::to_string(patches) + " patches, " + std::to_string(prepared->eyes.size()) +
+           " hemicubes of " + std::to_string(room.resolution) + " x " +
+           std::to_string(room.resolution) + " cells, " + std::to_string(t.passes) +
+           (t.passes == 1 ? " time" : " times");
+  return prepared;
+}
+
 // Every room's loop and gather timed `repeats` times, round by round: one repeat of each in
 // turn, so that a few seconds in which another process disturbs the host fall on one repeat
 // of several runs, which their medians leave out, rather than on every repeat of one run.
-void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms, int repeats) {
+void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms,
+                std::vector<std::unique_ptr<PreparedHemicube>>& hemicubes, int repeats) {
   const auto time = [](Timing& timing, auto&& pass) {
     ncube::WorkCounts counts;
     const double start = thread_seconds();
@@ -409,11 +486,14 @@ void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms, int repeats) 
     timing.seconds.push_back(thread_seconds() - start);
     timing.counts = counts;
   };
-  for (int r = 0; r < repeats; ++r)
+  for (int r = 0; r < repeats; ++r) {
     for (auto& room : rooms) {
       time(room->loop, [&](ncube::WorkCounts& c) { room->loop_pass(c); });
       time(room->gather, [&](ncube::WorkCounts& c) { room->gather_pass(c); });
     }
+    for (auto& hemicube : hemicubes)
+      time(hemicube->timing, [&](ncube::WorkCounts& c) { hemicube->pass(c); });
+  }
 }
 
 
@@ -451,7 +531,16 @@ int machine_probe(int argc, char** argv) {
   std::vector<ncube::TimedRun> runs, gather_runs;
   std::vector<std::unique_ptr<PreparedRoom>> prepared;
   for (const Room& room : kRooms) prepared.push_back(prepare_room(room, costs));
-  time_rooms(prepared, repeats);
+  std::vector<std::unique_ptr<PreparedHemicube>> hemicubes;
+  for (const HemicubeRoom& room : kHemicubeRooms) hemicubes.push_back(prepare_hemicube(room));
+  time_rooms(prepared, hemicubes, repeats);
+  std::vector<ncube::TimedRun> hemicube_runs;
+  for (const auto& timed : hemicubes) {
+    ncube::TimedRun run{{}, median(timed->timing.seconds)};
+    for (const std::string& kind : kHemicubeKinds)
+      run.flops.push_back(ncube::kind_flops(costs, timed->timing.counts, kind));
+    hemicube_runs.push_back(run);
+  }
   for (const auto& timed : prepared) {
     loops.push_back(timed->loop);
     gathers.push_back(timed->gather);
@@ -477,6 +566,7 @@ int machine_probe(int argc, char** argv) {
               << " ns a ray, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
               << number(100 * fit.relative_residuals[k], 2) << " %\n";
   const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
+  const ncube::RateFit hemicube_fit = ncube::fit_seconds_per_flop(hemicube_runs);
   // (rate, flop/s), node_speed's (test_speed) first: the rates of the two fits.
   std::vector<std::pair<std::string, double>> rates;
   const auto take = [&rates](const ncube::RateFit& f, const std::vector<std::string>& kinds,
@@ -492,6 +582,7 @@ int machine_probe(int argc, char** argv) {
   };
   take(fit, kLoopKinds, "visibility loop");
   take(gather_fit, kGatherKinds, "gather");
+  take(hemicube_fit, kHemicubeKinds, "hemicube");
   // node_speed (and so memory_speed's kind) is the test rate: the first of the file's rates.
   std::swap(rates[0], rates[1]);
   const auto rate_of = [&rates](const std::string& name) {
@@ -502,7 +593,9 @@ int machine_probe(int argc, char** argv) {
   const double test_speed = rate_of("test_speed"), ray_speed = rate_of("ray_speed"),
                blocked_ray_speed = rate_of("blocked_ray_speed"),
                arithmetic_speed = rate_of("arithmetic_speed"),
-               edge_term_speed = rate_of("edge_term_speed");
+               edge_term_speed = rate_of("edge_term_speed"),
+               projection_speed = rate_of("projection_speed"),
+               raster_speed = rate_of("raster_speed");
 
   const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
@@ -561,6 +654,23 @@ int machine_probe(int argc, char** argv) {
           << " %, residual " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
           << number(100 * gather_fit.relative_residuals[k], 2) << " %.\n";
   }
+  about << "     projection_speed = " << number(projection_speed, 6) << " flop/s ("
+        << number(1e9 * costs.flops_per_hemicube_vertex_transformed / projection_speed, 3)
+        << " ns a vertex moved into a hemicube's frame) and raster_speed = "
+        << number(raster_speed, 6) << " flop/s\n       ("
+        << number(1e9 * costs.flops_per_hemicube_depth_test / raster_speed, 3)
+        << " ns a cell depth-tested): the hemicube (render_hemicube, every other patch of a\n"
+        << "       room from " << kShooters << " eyes) in " << hemicubes.size()
+        << " runs, the relative least squares fit of the median time = projection\n"
+        << "       flops / projection_speed + raster flops / raster_speed, root mean square "
+        << "residual " << number(100 * hemicube_fit.rms_relative_residual, 2) << " %:\n";
+  for (std::size_t k = 0; k < hemicubes.size(); ++k) {
+    const Timing& t = hemicubes[k]->timing;
+    about << "       " << t.what << ": " << counts_text(t.counts) << "; "
+          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << " %, residual " << (hemicube_fit.relative_residuals[k] >= 0 ? "+" : "")
+          << number(100 * hemicube_fit.relative_residuals[k], 2) << " %.\n";
+  }
   about << "     ";
   const std::string text = probed_platform(network_file, network, rates, about.str());
   outputs.write("--out", text);
@@ -579,6 +689,17 @@ int machine_probe(int argc, char** argv) {
               << number(100 * gather_fit.relative_residuals[k], 2) << " %\n";
   std::cout << "gather fit over " << gathers.size() << " runs: root mean square residual "
             << number(100 * gather_fit.rms_relative_residual, 2) << " %\n";
+  for (std::size_t k = 0; k < hemicubes.size(); ++k) {
+    const Timing& t = hemicubes[k]->timing;
+    std::cout << "hemicube, " << t.what << ": " << number(median(t.seconds), 4) << " s, "
+              << number(100 * kind_flops(costs, t.counts, "raster_speed") /
+                            (kind_flops(costs, t.counts, "raster_speed") +
+                             kind_flops(costs, t.counts, "projection_speed")), 3)
+              << " % raster flops, fit " << (hemicube_fit.relative_residuals[k] >= 0 ? "+" : "")
+              << number(100 * hemicube_fit.relative_residuals[k], 2) << " %\n";
+  }
+  std::cout << "hemicube fit over " << hemicubes.size() << " runs: root mean square residual "
+            << number(100 * hemicube_fit.rms_relative_residual, 2) << " %\n";
   return ncube::kExitOk;
 }
 
