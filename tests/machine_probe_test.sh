@@ -36,7 +36,17 @@ grep -q "scene0.json" "$tmp/err" || fail "--network a scene: the message does no
 set -e
 
 # 2. The file.
-"$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said"
+# A fit the host disturbed ends in exit 4 with nothing written (docs/machines/probe.md): on a
+# 2-core host running the suite beside it, probed again, at most three times in all.
+for attempt in 1 2 3; do
+  set +e
+  "$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said" 2>"$tmp/err"
+  code=$?
+  set -e
+  [[ $code == 4 ]] || break
+  echo "probe $attempt: exit 4 (a disturbed fit): $(cat "$tmp/err")"
+done
+[[ $code == 0 ]] || fail "machine_probe: exit $code: $(cat "$tmp/err")"
 for rate in test_speed ray_speed blocked_ray_speed arithmetic_speed edge_term_speed \
             projection_speed raster_speed; do
   grep -q "<prop id=\"$rate\" value=\"" "$tmp/probed.xml" || fail "no $rate <prop>"

@@ -200,6 +200,17 @@ std::string number(double v, int digits = 4) {
   return out.str();
 }
 
+// A share as a percentage of two significant digits, never in exponent form: a residual or a
+// spread near zero (a run that pins its rate) reads "0.0001", which the file's readers (and
+// tests/machine_probe_test.sh) parse as a number, where "1.2e-05" would not.
+std::string percent(double share) {
+  const double value = 100 * share;
+  if (std::fabs(value) >= 0.01) return number(value, 2);
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(4) << value;
+  return out.str();
+}
+
 std::string counts_text(const ncube::WorkCounts& c) {
   std::string out;
 #define NCUBE_COUNT_TEXT(member, cost, doc) \
@@ -564,7 +575,7 @@ int machine_probe(int argc, char** argv) {
               << " % blocked, " << number(median(loops[k].seconds), 4) << " s, "
               << number(1e9 * median(loops[k].seconds) / double(loops[k].counts.rays), 4)
               << " ns a ray, fit " << (fit.relative_residuals[k] >= 0 ? "+" : "")
-              << number(100 * fit.relative_residuals[k], 2) << " %\n";
+              << percent(fit.relative_residuals[k]) << " %\n";
   const ncube::RateFit gather_fit = ncube::fit_seconds_per_flop(gather_runs);
   const ncube::RateFit hemicube_fit = ncube::fit_seconds_per_flop(hemicube_runs);
   // (rate, flop/s), node_speed's (test_speed) first: the rates of the two fits.
@@ -622,7 +633,7 @@ int machine_probe(int argc, char** argv) {
         << " runs, the relative least squares fit of the median\n       time = ray flops / "
         << "ray_speed + test flops / test_speed + blocked flops / blocked_ray_speed\n       "
         << "(src/machine/rate_fit.h; test flops: the ray-patch tests' and their plane crossings'),"
-        << "\n       root mean square residual " << number(100 * fit.rms_relative_residual, 2)
+        << "\n       root mean square residual " << percent(fit.rms_relative_residual)
         << " %. Each run: its counts a repeat, median of " << repeats << " repeats,\n       spread "
         << "(fastest - slowest over the median), fitted - measured:\n";
   for (std::size_t k = 0; k < loops.size(); ++k) {
@@ -632,9 +643,9 @@ int machine_probe(int argc, char** argv) {
           << " tests a ray, " << number(100.0 * double(t.counts.blocked_rays) /
                                         double(t.counts.rays), 3)
           << " % of the rays blocked; " << counts_text(t.counts) << "; "
-          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << number(median(t.seconds), 4) << " s, spread " << percent(spread(t.seconds))
           << " %, residual " << (fit.relative_residuals[k] >= 0 ? "+" : "")
-          << number(100 * fit.relative_residuals[k], 2) << " %.\n";
+          << percent(fit.relative_residuals[k]) << " %.\n";
   }
   about << "     arithmetic_speed = " << number(arithmetic_speed, 6) << " flop/s and edge_term_speed = "
         << number(edge_term_speed, 6) << " flop/s (" << number(1e9 * costs.flops_per_element_update /
@@ -646,13 +657,13 @@ int machine_probe(int argc, char** argv) {
         << "       same shots in the same rooms, the relative least squares fit of the median time =\n"
         << "       arithmetic flops / arithmetic_speed + edge-term flops / edge_term_speed,\n"
         << "       root mean square residual "
-        << number(100 * gather_fit.rms_relative_residual, 2) << " %:\n";
+        << percent(gather_fit.rms_relative_residual) << " %:\n";
   for (std::size_t k = 0; k < gathers.size(); ++k) {
     const Timing& t = gathers[k];
     about << "       " << t.what << ": " << counts_text(t.counts) << "; "
-          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << number(median(t.seconds), 4) << " s, spread " << percent(spread(t.seconds))
           << " %, residual " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
-          << number(100 * gather_fit.relative_residuals[k], 2) << " %.\n";
+          << percent(gather_fit.relative_residuals[k]) << " %.\n";
   }
   about << "     projection_speed = " << number(projection_speed, 6) << " flop/s ("
         << number(1e9 * costs.flops_per_hemicube_vertex_transformed / projection_speed, 3)
@@ -663,13 +674,13 @@ int machine_probe(int argc, char** argv) {
         << "       room from " << kShooters << " eyes) in " << hemicubes.size()
         << " runs, the relative least squares fit of the median time = projection\n"
         << "       flops / projection_speed + raster flops / raster_speed, root mean square "
-        << "residual " << number(100 * hemicube_fit.rms_relative_residual, 2) << " %:\n";
+        << "residual " << percent(hemicube_fit.rms_relative_residual) << " %:\n";
   for (std::size_t k = 0; k < hemicubes.size(); ++k) {
     const Timing& t = hemicubes[k]->timing;
     about << "       " << t.what << ": " << counts_text(t.counts) << "; "
-          << number(median(t.seconds), 4) << " s, spread " << number(100 * spread(t.seconds), 2)
+          << number(median(t.seconds), 4) << " s, spread " << percent(spread(t.seconds))
           << " %, residual " << (hemicube_fit.relative_residuals[k] >= 0 ? "+" : "")
-          << number(100 * hemicube_fit.relative_residuals[k], 2) << " %.\n";
+          << percent(hemicube_fit.relative_residuals[k]) << " %.\n";
   }
   about << "     ";
   const std::string text = probed_platform(network_file, network, rates, about.str());
@@ -677,7 +688,7 @@ int machine_probe(int argc, char** argv) {
   outputs.commit();
   for (const auto& [rate, value] : rates) std::cout << rate << " " << number(value, 6) << " flop/s\n";
   std::cout << "visibility loop fit over " << loops.size() << " runs: root mean square residual "
-            << number(100 * fit.rms_relative_residual, 2) << " %\n";
+            << percent(fit.rms_relative_residual) << " %\n";
   for (std::size_t k = 0; k < gathers.size(); ++k)
     std::cout << "room of " << gathers[k].patches << " patches: gather "
               << number(1e9 * median(gathers[k].seconds) /
@@ -686,9 +697,9 @@ int machine_probe(int argc, char** argv) {
               << number(double(gathers[k].counts.form_factor_edge_terms) /
                         double(std::max<std::uint64_t>(1, gathers[k].counts.element_updates)), 3)
               << " edge terms a receiver, fit " << (gather_fit.relative_residuals[k] >= 0 ? "+" : "")
-              << number(100 * gather_fit.relative_residuals[k], 2) << " %\n";
+              << percent(gather_fit.relative_residuals[k]) << " %\n";
   std::cout << "gather fit over " << gathers.size() << " runs: root mean square residual "
-            << number(100 * gather_fit.rms_relative_residual, 2) << " %\n";
+            << percent(gather_fit.rms_relative_residual) << " %\n";
   for (std::size_t k = 0; k < hemicubes.size(); ++k) {
     const Timing& t = hemicubes[k]->timing;
     std::cout << "hemicube, " << t.what << ": " << number(median(t.seconds), 4) << " s, "
@@ -696,10 +707,10 @@ int machine_probe(int argc, char** argv) {
                             (kind_flops(costs, t.counts, "raster_speed") +
                              kind_flops(costs, t.counts, "projection_speed")), 3)
               << " % raster flops, fit " << (hemicube_fit.relative_residuals[k] >= 0 ? "+" : "")
-              << number(100 * hemicube_fit.relative_residuals[k], 2) << " %\n";
+              << percent(hemicube_fit.relative_residuals[k]) << " %\n";
   }
   std::cout << "hemicube fit over " << hemicubes.size() << " runs: root mean square residual "
-            << number(100 * hemicube_fit.rms_relative_residual, 2) << " %\n";
+            << percent(hemicube_fit.rms_relative_residual) << " %\n";
   return ncube::kExitOk;
 }
 
