@@ -1,7 +1,10 @@
 #include "simulation/parallelisations.h"
 
 #include <algorithm>
+#include <deque>
 #include <numeric>
+#include <string>
+#include <vector>
 
 #include <simgrid/s4u/Actor.hpp>
 
@@ -106,26 +109,40 @@ void check_shooters(const Scene&, const SimulationConfig& config) {
                          "every node holds every patch"});
 }
 
-void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
-                     const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
+// Launches the R nodes of a shooter-centred scheme, each holding the whole scene (an engine
+// over every patch) and sharing the host's fast occluders over it, read-only, as the paper's
+// program without visibility processors has them. `make(rank, engine, occluders)` builds
+// rank's node program into `nodes` (a deque of programs, in rank order) and returns it.
+template <class Node, class Make>
+void launch_whole_scene_nodes(NodePrograms& programs, const ProgramSetup& setup,
+                              const SimulationConfig& config,
+                              const std::vector<simgrid::s4u::Host*>& hosts,
+                              std::deque<Node>& nodes, const std::string& actor_name, Make make) {
   const Scene& scene = setup.scene;
   const int R = setup.placement.radiosity_processors;
   std::vector<int> all(scene.patches.size());
   std::iota(all.begin(), all.end(), 0);
-  // The host's fast occluders over the whole scene, shared by every node (read-only), as
-  // the paper's program without visibility processors has them.
   build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
   const OccluderSet& occluders = *programs.host.occluders.front();
   reserve_actor_stacks(std::size_t(R));
   for (int rank = 0; rank < R; ++rank) {
     RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
     engine.use_host_assist(programs.host.assist.get(), rank);
-    ShooterProcessor& node = programs.shooters.emplace_back(
-        setup, rank, programs.runtimes[std::size_t(rank)], engine, occluders);
-    create_actor("shooter-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
+    Node& node = make(rank, engine, occluders);
+    create_actor(actor_name + "-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
                  programs.exceptions.guard([&node] { node.run(); }));
   }
-  report_iterations(programs.shooters.front(), config, setup.emitted_power);
+  report_iterations(nodes.front(), config, setup.emitted_power);
+}
+
+void launch_shooters(NodePrograms& programs, const ProgramSetup& setup,
+                     const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
+  launch_whole_scene_nodes(
+      programs, setup, config, hosts, programs.shooters, "shooter",
+      [&](int rank, RadiosityEngine& engine, const OccluderSet& occluders) -> ShooterProcessor& {
+        return programs.shooters.emplace_back(setup, rank, programs.runtimes[std::size_t(rank)],
+                                              engine, occluders);
+      });
 }
 
 void collect_shooters(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
@@ -163,23 +180,13 @@ void check_circulation(const Scene&, const SimulationConfig& config) {
 
 void launch_circulation(NodePrograms& programs, const ProgramSetup& setup,
                         const SimulationConfig& config, const std::vector<simgrid::s4u::Host*>& hosts) {
-  const Scene& scene = setup.scene;
-  const int R = setup.placement.radiosity_processors;
-  std::vector<int> all(scene.patches.size());
-  std::iota(all.begin(), all.end(), 0);
-  build_host_machinery(programs.host, scene, {all}, setup.options, 0, R, setup.block_size, false);
-  const OccluderSet& occluders = *programs.host.occluders.front();
   const std::vector<std::vector<int>> owned = owned_patches(setup);
-  reserve_actor_stacks(std::size_t(R));
-  for (int rank = 0; rank < R; ++rank) {
-    RadiosityEngine& engine = programs.engines.emplace_back(scene, all);
-    engine.use_host_assist(programs.host.assist.get(), rank);
-    CirculationProcessor& node = programs.circulation.emplace_back(
-        setup, rank, owned, programs.runtimes[std::size_t(rank)], engine, occluders);
-    create_actor("circulation-" + std::to_string(rank), hosts[setup.placement.radiosity_node(rank)],
-                 programs.exceptions.guard([&node] { node.run(); }));
-  }
-  report_iterations(programs.circulation.front(), config, setup.emitted_power);
+  launch_whole_scene_nodes(
+      programs, setup, config, hosts, programs.circulation, "circulation",
+      [&](int rank, RadiosityEngine& engine, const OccluderSet& occluders) -> CirculationProcessor& {
+        return programs.circulation.emplace_back(
+            setup, rank, owned, programs.runtimes[std::size_t(rank)], engine, occluders);
+      });
 }
 
 void collect_circulation(const Scene& scene, const NodePrograms& programs, const PlatformConfig&,
