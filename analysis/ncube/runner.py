@@ -64,6 +64,28 @@ def discard_unfinished(cells, results_dir="."):
     return rejected
 
 
+def adopt_legacy_names(cells, results_dir="."):
+    """A result written under a cell's former name (the scene, R and V only:
+    ncube.cell_names.legacy_file) gets the cell's present name when none is there, its trace
+    too; discard_unfinished then checks it as any other. So a results folder of an earlier
+    version goes on where it stopped, and nothing is run again for the new names."""
+    adopted = 0
+    for cell in cells:
+        old, new = Path(results_dir) / cell.legacy_file, Path(results_dir) / cell.file
+        if old == new or new.exists() or not old.exists():
+            continue
+        if cell.trace:
+            old_trace = old.with_name(old.name[:-len(".json")] + ".trace.json")
+            if old_trace.exists():
+                os.replace(old_trace, Path(results_dir) / cell.trace_file)
+        os.replace(old, new)
+        adopted += 1
+    if adopted:
+        print(f"sweep: {adopted} result file(s) of an earlier naming renamed to their cells' "
+              f"present names (docs/sweeps.md, \"A cell's identity\")", file=sys.stderr)
+    return adopted
+
+
 def cells_to_run(sweeps, results_dir, rerun_all=False):
     """The sweep's own decision of what runs, made from the result files before Snakemake
     starts: a cell runs unless its verified result file is there (discard_unfinished moves any
@@ -73,6 +95,7 @@ def cells_to_run(sweeps, results_dir, rerun_all=False):
     again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or
     --forcerun asked for) hands every cell to Snakemake, which then decides."""
     cells = list({c.id: c for s in sweeps for c in s.cells}.values())
+    adopt_legacy_names(cells, results_dir)
     discard_unfinished(cells, results_dir)
     missing = {c.file for c in cells if not (Path(results_dir) / c.file).exists()}
     for sweep in sweeps:

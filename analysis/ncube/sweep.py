@@ -17,7 +17,7 @@ import subprocess
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
-from . import input_file
+from . import cell_names, input_file, sweep_keys
 from . import options as opts
 from . import paths
 from .results import MEASURES
@@ -138,9 +138,12 @@ class Cell:
     @property
     def file(self):
         """The result file, relative to the results folder."""
-        folder = "traced" if self.trace else "cells"
-        scene = re.sub(r"[^A-Za-z0-9_-]", "_", self.scene)
-        return f"{folder}/{scene}-R{self.R}-V{self.V}-{self.id}.json"
+        return cell_names.file(self)
+
+    @property
+    def legacy_file(self):
+        """The result file's name before the varied keys were in it (ncube.cell_names)."""
+        return cell_names.legacy_file(self)
 
     @property
     def trace_file(self):
@@ -487,10 +490,9 @@ def load(path):
     document = read_document(path)
     if not isinstance(document, dict):
         raise SweepError(f"{where}: expected a mapping at the top")
-    for key in document:
-        if key not in SWEEP_KEYS:
-            raise SweepError(f"{where}: key {key!r}: unknown key (known: "
-                             + ", ".join(sorted(SWEEP_KEYS)) + ")")
+    misspelt = sweep_keys.problem(document, where, SWEEP_KEYS, CELL_KEYS, path.parent)
+    if misspelt:
+        raise SweepError(misspelt)
     name = document.get("name", path.stem)
     if not isinstance(name, str) or not SWEEP_NAME.fullmatch(name):
         raise SweepError(f"{where}: key 'name': {name!r} must be a plain name: letters, digits "
