@@ -72,32 +72,58 @@ def say_interrupted(signum):
 
 
 class SnakemakeMessages:
-    """Passes Snakemake's messages (and its jobs') on to stderr as they come, except the
-    "--- Logging error ---" blocks Python's logging prints when Snakemake cannot write its own
-    log (a full disk): they say nothing the plain line at the end does not. Notes what the
-    failure classes need: a lock refusal, a full file system."""
+    """Snakemake's messages (and its jobs'), as they come: all into `log` (a binary stream, the
+    results folder's logs/snakemake.log) and, with `verbose`, on to stderr; without it only a
+    cell job's own failure (from its "run_cell:" line to its "  command:" line) reaches stderr,
+    the progress line saying the rest (ncube.progress). Never shown: the "--- Logging error
+    ---" blocks Python's logging prints when Snakemake cannot write its own log (a full disk),
+    which say nothing the plain line at the end does not. Notes what the failure classes need
+    (a lock refusal, a full file system) and counts the cell jobs that failed."""
 
-    def __init__(self, stream):
+    FAILED_CELL = ("Error in rule cell:", "Error in rule traced_cell:")
+
+    def __init__(self, stream, log=None, verbose=True, show=None):
         self.stream = stream
+        self.log = log
+        self.verbose = verbose
+        self.show = show or self._write
         self.locked = False
         self.full = False
+        self.failed_cells = 0
         self.thread = threading.Thread(target=self._pass_on, daemon=True)
         self.thread.start()
 
+    @staticmethod
+    def _write(text):
+        sys.stderr.write(text)
+        sys.stderr.flush()
+
     def _pass_on(self):
         dropping = False
+        job_failure = False
         for line in iter(self.stream.readline, b""):
             text = line.decode(errors="replace")
             if "No space left on device" in text or "Disk quota exceeded" in text:
                 self.full = True
             if "Directory cannot be locked" in text:
                 self.locked = True
+            if text.startswith(self.FAILED_CELL):
+                self.failed_cells += 1
             if text.startswith("--- Logging error ---"):
                 dropping = True
-            if not dropping:
-                sys.stderr.write(text)
-                sys.stderr.flush()
-            elif text.startswith("Arguments:"):   # the block's last line
+            if self.log is not None:
+                try:
+                    self.log.write(line)
+                    self.log.flush()
+                except OSError:   # a full disk: the plain line at the end says so
+                    self.full = True
+            if text.startswith("run_cell:"):
+                job_failure = True
+            if not dropping and (self.verbose or job_failure):
+                self.show(text)
+            if text.startswith("  command:"):
+                job_failure = False
+            elif dropping and text.startswith("Arguments:"):   # the block's last line
                 dropping = False
 
     def wait(self):
@@ -105,7 +131,11 @@ class SnakemakeMessages:
 
 
 def snakemake_log(results_dir):
-    """Snakemake's log of the last run, None when there is none."""
+    """The log of the last run: everything Snakemake and its jobs said (logs/snakemake.log,
+    ncube.runner), else Snakemake's own; None when there is none."""
+    ours = Path(results_dir) / "logs" / "snakemake.log"
+    if ours.exists():
+        return ours
     logs = sorted((Path(results_dir) / ".snakemake" / "log").glob("*.snakemake.log"))
     return logs[-1] if logs else None
 

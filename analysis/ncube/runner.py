@@ -20,10 +20,11 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
-from . import cell_resources, outcome, output_file, paths, results, shell_words, slurm_status
+from . import cell_resources, outcome, output_file, paths, progress, results, shell_words, slurm_status
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -159,12 +160,41 @@ def slurm_arguments(results_dir):
     return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel"]
 
 
-def run_snakemake(command):
+SNAKEMAKE_LOG = Path("logs") / "snakemake.log"
+
+
+def run_snakemake(command, results_dir=None, pending=(), verbose=True):
     """Runs Snakemake in its own process group; a signal to this process stops the group, so
     no job and no simulation outlives the sweep (then outcome.Interrupted is raised). Returns
-    Snakemake's exit status and its messages (outcome.SnakemakeMessages)."""
-    process = subprocess.Popen(command, start_new_session=True, stderr=subprocess.PIPE)
-    messages = outcome.SnakemakeMessages(process.stderr)
+    Snakemake's exit status and its messages (outcome.SnakemakeMessages). Everything Snakemake
+    and its jobs say goes to <results>/logs/snakemake.log (written under a temporary name, put
+    in place by the output rule at the end); the terminal gets it too with `verbose`, else one
+    progress line (ncube.progress) over the result files of `pending` and a failed cell's own
+    message."""
+    log_stream = log_temporary = None
+    if results_dir is not None:
+        (Path(results_dir) / SNAKEMAKE_LOG.parent).mkdir(parents=True, exist_ok=True)
+        descriptor, log_temporary = tempfile.mkstemp(prefix=SNAKEMAKE_LOG.name + ".partial-",
+                                                     dir=Path(results_dir) / SNAKEMAKE_LOG.parent)
+        log_stream = os.fdopen(descriptor, "wb")
+    process = subprocess.Popen(command, start_new_session=True, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT)
+    shown = None if verbose else progress.Progress(results_dir, pending,
+                                                   lambda: messages.failed_cells)
+    messages = outcome.SnakemakeMessages(process.stdout, log_stream, verbose,
+                                         shown.show if shown else None)
+    if shown:
+        shown.begin()
+
+    def keep_log():
+        if shown:
+            shown.end()
+        if log_stream is not None:
+            log_stream.close()
+            try:
+                output_file.move(log_temporary, Path(results_dir) / SNAKEMAKE_LOG)
+            except OSError:   # a full disk: said by the plain line; the partial log stays
+                pass
 
     def stop(signum, _frame):
         for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 0.0)):
@@ -181,6 +211,7 @@ def run_snakemake(command):
         except ProcessLookupError:
             pass
         messages.wait()
+        keep_log()
         # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
         # leave its lock behind, and the next run would refuse the folder. The lock is this
         # run's own (no other sweep holds the folder while this one runs: hold_folder), so it
@@ -196,6 +227,7 @@ def run_snakemake(command):
     signal.signal(signal.SIGTERM, stop)
     status = process.wait()
     messages.wait()
+    keep_log()
     return status, messages
 
 
@@ -266,6 +298,9 @@ def run(argv=None):
     parser.add_argument("--jobs", type=bounded(1, 100_000), default=100,
                         help="cluster jobs at once, 1 to 100000 (default 100)")
     parser.add_argument("--check", action="store_true", help="validate and list the cells only")
+    parser.add_argument("--verbose", action="store_true",
+                        help="show Snakemake's messages as they come (else: one progress line; "
+                             "they are in RESULTS/logs/snakemake.log)")
     argv = sys.argv[1:] if argv is None else argv
     extra = []
     if "--" in argv:
@@ -330,7 +365,8 @@ def run(argv=None):
     states_before = slurm_status.states_size(results_dir)
     start = time.monotonic()
     try:
-        status, messages = run_snakemake(snakemake_command(plan, results_dir, args))
+        status, messages = run_snakemake(snakemake_command(plan, results_dir, args), results_dir,
+                                         [c.file for c in pending], args.verbose)
         code = outcome.OK
         if status != 0:   # a cell's file appears only verified: existing means finished
             missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
