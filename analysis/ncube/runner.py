@@ -24,7 +24,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from . import cell_resources, outcome, output_file, paths, progress, results, shell_words, slurm_status
+from . import (cell_resources, outcome, output_file, paths, progress, results, shell_words,
+               slurm_status, summary)
 from .sweep import SweepError, load_all
 
 SNAKEFILE = paths.EXPERIMENTS / "Snakefile"
@@ -96,12 +97,16 @@ def cells_to_run(sweeps, results_dir, rerun_all=False):
     again when one of its cells has no result. `rerun_all` (Snakemake's --forceall or
     --forcerun asked for) hands every cell to Snakemake, which then decides."""
     cells = list({c.id: c for s in sweeps for c in s.cells}.values())
-    adopt_legacy_names(cells, results_dir)
+    adopted = adopt_legacy_names(cells, results_dir)
     discard_unfinished(cells, results_dir)
     missing = {c.file for c in cells if not (Path(results_dir) / c.file).exists()}
     for sweep in sweeps:
-        if any(c.file in missing for c in sweep.cells):
-            (Path(results_dir) / "sweeps" / sweep.name / "cells.csv").unlink(missing_ok=True)
+        folder = Path(results_dir) / "sweeps" / sweep.name
+        # The table is made again when a cell has no result, when the answer (summary.md) is
+        # missing (a folder of an earlier version) or when results were renamed (its file column).
+        if any(c.file in missing for c in sweep.cells) or adopted or \
+                not (folder / "summary.md").exists():
+            (folder / "cells.csv").unlink(missing_ok=True)
     return [c for c in cells if rerun_all or c.file in missing]
 
 
@@ -179,7 +184,7 @@ def run_snakemake(command, results_dir=None, pending=(), verbose=True):
         log_stream = os.fdopen(descriptor, "wb")
     process = subprocess.Popen(command, start_new_session=True, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT)
-    shown = None if verbose else progress.Progress(results_dir, pending,
+    shown = None if verbose or not pending else progress.Progress(results_dir, pending,
                                                    lambda: messages.failed_cells)
     messages = outcome.SnakemakeMessages(process.stdout, log_stream, verbose,
                                          shown.show if shown else None)
@@ -360,7 +365,8 @@ def run(argv=None):
     print(f"sweep: {len(sweeps)} sweep(s), {len(cells)} distinct cells, {done} with a finished "
           f"result file in {results_dir}, " +
           ("reruns forced" if forced else f"{len(pending)} to run"), flush=True)
-    tables = [results_dir / "sweeps" / s.name / "cells.csv" for s in sweeps]
+    tables = [results_dir / "sweeps" / s.name / name for s in sweeps
+              for name in ("cells.csv", "summary.csv", "summary.md")]
     before = outcome.stamps(tables)
     states_before = slurm_status.states_size(results_dir)
     start = time.monotonic()
@@ -374,8 +380,13 @@ def run(argv=None):
                                 {c.file: cell_resources.request(c) for c in cells.values()},
                                 states_before, outcome.say)
             code = outcome.failed(status, messages, results_dir, missing, len(cells))
+        if code in (outcome.OK, outcome.CELLS_FAILED):
+            for sweep in sweeps:   # the answer; with failed cells, the summary and plots too
+                summary.conclude(sweep, results_dir)
     except outcome.Interrupted as stop:
         code = outcome.say_interrupted(stop.signum)
+    except OSError as e:
+        code = not_written(e, results_dir)
     outcome.final_line(time.monotonic() - start, outcome.tables_written(before, tables))
     return code
 
