@@ -280,6 +280,21 @@ def slurm_answers():
     return None
 
 
+HELP = """Runs the cells of sweep files (YAML or JSON: docs/sweeps.md) through Snakemake: on two
+local cores by default, on a Slurm cluster with --slurm, on any other cluster with --cluster or
+a Snakemake profile. Every file is checked first; nothing is written when one is refused."""
+
+HELP_END = """Results go to the folder given by --results, by default ./results (in the current folder):
+  RESULTS/cells/            one result file per cell, named after the cell and its identity
+  RESULTS/sweeps/NAME/      summary.md and summary.csv (the answer), cells.csv, the plots
+  RESULTS/logs/snakemake.log  everything Snakemake and the cells' jobs said (--verbose: shown)
+At the end the terminal shows each sweep's answer: its cells sorted by the measure, the best
+of each series marked. Run the same command again to go on after a stop: finished cells are
+kept. Exit codes: 0 done, 2 a sweep file refused, 4 a cell failed, 5 the results folder not
+writable, 7 Snakemake failed, 8 the folder in use, 128 + N stopped by signal N.
+After "--", arguments go to Snakemake itself (e.g. -- --dry-run)."""
+
+
 def main(argv=None):
     """experiments/sweep; a closed standard output (`--check | head`) ends it quietly, as a
     closed pipe ends any command: exit 128 + SIGPIPE, no traceback."""
@@ -291,10 +306,12 @@ def main(argv=None):
 
 
 def run(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(
+        prog="experiments/sweep", description=HELP, epilog=HELP_END,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("sweeps", nargs="+", type=Path, help="sweep files (YAML or JSON)")
     parser.add_argument("--results", type=Path, default=Path("results"),
-                        help="results folder (default: ./results)")
+                        help="results folder (default: ./results, in the current folder)")
     parser.add_argument("--cores", type=bounded(1, 1024), default=2,
                         help="local cores, 1 to 1024 (default 2)")
     parser.add_argument("--slurm", action="store_true", help="submit the cells to Slurm")
