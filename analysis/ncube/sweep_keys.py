@@ -119,9 +119,11 @@ def problem(document, where, top_keys, cell_keys, base):
                     if found:
                         return found
                 continue
-            return (unknown_key(where, "grid", key, cell_keys) + "; a grid key is a cell key, "
-                    "or names a group of keys that vary together (a list of mappings, e.g. "
-                    "{R: 4, V: 15})")
+            said = unknown_key(where, "grid", key, cell_keys)
+            if said.endswith(")"):   # no near name: what a grid key may be
+                said += ("; a grid key is a cell key, or names a group of keys that vary "
+                         "together (a list of mappings, e.g. {R: 4, V: 15})")
+            return said
     cells = document.get("cells")
     if isinstance(cells, list):
         for k, cell in enumerate(cells, 1):
