@@ -89,8 +89,9 @@ def test_folder_in_use(work):
                                                  f"({first.returncode}, {stopped})")
     check(not (results_dir / cells[0].file).exists(), "the interrupted cell has no result")
     done = run_sweep(work / "busy.yaml", "--results", results_dir)
+    folder = results_dir / 'sweeps' / 'busy'
     check(done.returncode == 0 and last_line(done).endswith(
-        f"written: {results_dir / 'sweeps' / 'busy' / 'cells.csv'}"),
+        f"written: {folder / 'cells.csv'}, {folder / 'summary.csv'}, {folder / 'summary.md'}"),
         f"the same command completes it and names its table ({last_line(done)})")
 
 
@@ -112,9 +113,12 @@ def test_cell_failing(work):
           said[0].endswith("the other cells finished and are kept; fix the cause and run the "
                            "same command again"), f"one plain line names the cell ({said[:1]})")
     check("simulate: broken for the test" in done.stderr, "the cell's own message is shown")
-    check(last_line(done).endswith("written: no table") and
-          not (results_dir / "sweeps" / "fails" / "cells.csv").exists(),
-          f"the last line names no table, none was written ({last_line(done)})")
+    folder = results_dir / "sweeps" / "fails"
+    check(last_line(done).endswith(f"written: {folder / 'summary.csv'}, {folder / 'summary.md'}")
+          and not (folder / "cells.csv").exists() and
+          "R=2 V=0 failed" in (folder / "summary.md").read_text(),
+          f"the last line names the answer (the failed cell in it), not the complete table, "
+          f"which was not written ({last_line(done)})")
     others = [c for c in cells if c is not failing]
     check(all(results.mismatch(results.read(results_dir / c.file), c) is None for c in others)
           and not (results_dir / failing.file).exists(), "the other cells finished")
@@ -153,7 +157,8 @@ def full_disk_inside(folder):
     filler.unlink()
     done = run_sweep(folder / "full.yaml", "--results", results_dir)
     check(done.returncode == 0 and f"{len(kept)} with a finished result file" in done.stdout and
-          last_line(done).endswith(f"written: {table}"),
+          last_line(done).endswith(f"written: {table}, {table.parent / 'summary.csv'}, "
+                                   f"{table.parent / 'summary.md'}"),
           f"after freeing space the same command completes the sweep ({last_line(done)})")
     return 1 if failures else 0
 

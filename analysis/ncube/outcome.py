@@ -159,7 +159,7 @@ def failed(status, messages, results_dir, missing, total=None):
         say(f"{len(missing)} cell(s) failed: {shown}; their messages are above and in {log}; "
             f"{kept}; fix the cause and run the same command again")
         return CELLS_FAILED
-    say(f"Snakemake failed (exit {status}): see the messages above and {log}")
+    say(f"Snakemake failed (exit {status}): see its messages in {log}")
     return INTERNAL
 
 
