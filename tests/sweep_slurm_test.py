@@ -139,7 +139,10 @@ def main():
         first.terminate()
         out, err = first.communicate()
     print(f"     first cluster run: {time.monotonic() - start:.1f} s", flush=True)
-    log = out + err
+    # Snakemake's messages, the jobs' submissions among them, are in the sweep's log (the
+    # terminal shows a progress line: docs/sweeps.md, "Running").
+    log_file = cluster_dir / "logs" / "snakemake.log"
+    log = out + err + (log_file.read_text() if log_file.exists() else "")
     submitted = re.findall(r"Submitted job \d+ with external jobid '(\d+)'", log)
     check(len(submitted) == 13 and len(set(submitted)) == 13,
           f"one Slurm job per cell, their ids in the sweep's log ({len(submitted)} submitted)")

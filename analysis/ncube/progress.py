@@ -20,11 +20,13 @@ def duration(seconds):
     return f"{seconds // 3600} h {seconds // 60 % 60:02d} min"
 
 
-def line(done, total, failed, elapsed):
+def line(done, total, failed, elapsed, final=False):
     """`sweep: 3 of 14 cells done, 0 failed, 12 s, about 44 s left`."""
     text = f"sweep: {done} of {total} cells done, {failed} failed, {duration(elapsed)}"
     left = total - done - failed
-    if done and left > 0:
+    if left <= 0 and not final:
+        text += "; the tables and plots"
+    elif done and left > 0:
         text += f", about {duration(elapsed / done * left)} left"
     elif left > 0:
         text += ", the estimate after the first cell"
@@ -58,7 +60,7 @@ class Progress:
     def update(self, final=False):
         done, total, failed = self.counts()
         now = time.monotonic()
-        text = line(done, total, failed, now - self.start)
+        text = line(done, total, failed, now - self.start, final)
         with self.lock:
             if self.terminal:
                 self.stream.write("\r" + text + "\x1b[K" + ("\n" if final else ""))

@@ -211,7 +211,10 @@ def answer(table):
 
 
 def _seconds(value):
-    return "-" if value is None else f"{value:.1f}"
+    """Tenths from 100 s on, else four significant digits (a small scene's 0.6868 s)."""
+    if value is None:
+        return "-"
+    return f"{value:.1f}" if value >= 100 else f"{value:.4g}"
 
 
 def headline(sweep, table, keys, rows):
