@@ -113,6 +113,11 @@ def cells_to_run(sweeps, results_dir, rerun_all=False):
 FORCING = ("-F", "--forceall", "-R", "--forcerun")
 
 
+def dry_run(snakemake_arguments):
+    """Snakemake asked only to say what it would do: no answer (no cell ran)."""
+    return any(a in ("-n", "--dry-run", "--dryrun") for a in snakemake_arguments)
+
+
 def forces_reruns(snakemake_arguments):
     return any(a in FORCING or a.startswith("--forcerun=") for a in snakemake_arguments)
 
@@ -389,7 +394,8 @@ def run(argv=None):
     start = time.monotonic()
     try:
         status, messages = run_snakemake(snakemake_command(plan, results_dir, args), results_dir,
-                                         [c.file for c in pending], args.verbose)
+                                         [c.file for c in pending],
+                                         args.verbose or dry_run(args.snakemake))
         code = outcome.OK
         if status != 0:   # a cell's file appears only verified: existing means finished
             missing = [c.file for c in cells.values() if not (results_dir / c.file).exists()]
@@ -397,7 +403,7 @@ def run(argv=None):
                                 {c.file: cell_resources.request(c) for c in cells.values()},
                                 states_before, outcome.say)
             code = outcome.failed(status, messages, results_dir, missing, len(cells))
-        if code in (outcome.OK, outcome.CELLS_FAILED):
+        if code in (outcome.OK, outcome.CELLS_FAILED) and not dry_run(args.snakemake):
             for sweep in sweeps:   # the answer; with failed cells, the summary and plots too
                 summary.conclude(sweep, results_dir)
     except outcome.Interrupted as stop:
