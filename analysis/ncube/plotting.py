@@ -42,7 +42,10 @@ CONFIGURATION = (["scene_label", "V"] + [name for name in opts.OPTIONS if name n
                  ["platform", "cost_model", "cfg", "scene_file"])
 OTHER_KEYS = CONFIGURATION[2:-1]   # named in the legend when they vary between the series
 # The keys of a series when the node count is fixed: all but R and V (the configuration).
-SERIES = ["scene_label"] + OTHER_KEYS + ["scene_file"]
+# (The scene's label is unique per file, so it stands for the file.)
+SERIES = ["scene_label"] + OTHER_KEYS
+# How a key is named in a table's header or a sentence.
+KEY_NAMES = {"scene_label": "scene"}
 
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">", "p", "h", "*", "d", "8", "H"]
 NOT_RUN = {"out_of_memory": "out of memory", "failed": "failed", "missing": "failed"}

@@ -220,13 +220,14 @@ def _seconds(value):
 def headline(sweep, table, keys, rows):
     """The sentences that answer the sweep's question: the fastest configuration of each
     series, the next one and by how much; whether the fastest is the same in every series."""
+    from . import plotting
     label = MEASURE_TEXT[sweep.measure]
     iterations = {row.get("iterations") for row in table}
     nodes = fixed_nodes(table)
     shape = (f"{nodes} nodes in every cell" if nodes is not None
              else f"{min(r['nodes'] for r in table)} to {max(r['nodes'] for r in table)} nodes")
-    length = (f", {iterations.pop()} iterations" if len(iterations) == 1 and -1 not in iterations
-              else "")
+    count = iterations.pop() if len(iterations) == 1 else -1
+    length = "" if count == -1 else f", {count} iteration{'s' if count != 1 else ''}"
     lines = [f"{sweep.name}: {label} (lower is better), {len(table)} cells, {shape}{length}."]
     winners = {}
     for name in dict.fromkeys(r["series"] for r in rows):
@@ -252,7 +253,8 @@ def headline(sweep, table, keys, rows):
         same = len(set(winners.values())) == 1
         lines.append(("The same configuration is fastest for every " if same else
                       "The fastest configuration differs between the values of ")
-                     + ", ".join(keys) + "." + _one_factor(rows, winners))
+                     + ", ".join(plotting.KEY_NAMES.get(k, k) for k in keys) + "."
+                     + _one_factor(rows, winners))
     return lines
 
 
@@ -276,9 +278,11 @@ def _one_factor(rows, winners):
 
 def answer_text(sweep, table):
     """The terminal's and summary.md's table, plain text, the headline first."""
+    from . import plotting
     keys, rows = answer(table)
     columns = [*keys, "R", "V"] + ([] if fixed_nodes(table) is not None else ["nodes"]) + \
               ["status", MEASURE_TEXT[sweep.measure], "x best", ""]
+    columns = [plotting.KEY_NAMES.get(c, c) for c in columns]
     body = []
     for row in rows:
         body.append([str(row["keys"][k]) for k in keys] + [str(row["R"]), str(row["V"])] +
@@ -299,10 +303,11 @@ def answer_text(sweep, table):
 
 def write_answer(sweep, table, folder, figures):
     """summary.csv and summary.md beside cells.csv (through the output rule)."""
+    from . import plotting
     keys, rows = answer(table)
     out = io.StringIO(newline="")
     writer = csv.writer(out)
-    writer.writerow([*keys, "R", "V", "nodes", "status", "measure", "value", "x_best", "best",
+    writer.writerow([plotting.KEY_NAMES.get(k, k) for k in keys] + ["R", "V", "nodes", "status", "measure", "value", "x_best", "best",
                      "file"])
     for row in rows:
         writer.writerow([row["keys"][k] for k in keys] +
