@@ -8,7 +8,8 @@ here on their own.
   memory on the nCube2 (scene2 needs more than one node's 4 MB: docs/model.md) listed as such;
   by_configuration.png and node_breakdown.png only (no speedup against a cell of the same node
   count); two series of distinct colours and markers, joined by lines, the out-of-memory cell
-  marked, the legend outside the axes; cell files named with the platform;
+  marked, the legend outside the axes; cell files named with the platform, and results under
+  the earlier names (without it) renamed, not run again;
 * a varying node count (scene2, R = 1, 2, 4, 8, V = 0; R=1 out of memory, R=8 failed by a
   wrapper of ./simulate): time_vs_R, speedup and efficiency against R=2, the smallest node
   count that ran, named in the legend; the failed cell in the table and the plot; the progress
@@ -182,6 +183,24 @@ def test_fixed_nodes(work):
               f"node_breakdown names each bar with its platform, no two alike ({ticks[:2]})")
 
 
+def test_earlier_names(work):
+    """A results folder of the earlier naming (<scene>-R<R>-V<V>-<id>.json) goes on: its
+    results are renamed, not run again (docs/sweeps.md, "A cell's identity")."""
+    results_dir = work / "fixed-res"
+    renamed = {}
+    for path in sorted((results_dir / "cells").glob("*-cm5-*.json")):
+        legacy = path.with_name(path.name.replace("-cm5-", "-"))
+        renamed[path] = path.read_bytes()
+        path.rename(legacy)
+    done = run_sweep(work / "fixed.yaml", "--results", results_dir)
+    check(len(renamed) == 3 and done.returncode == 0 and "0 to run" in done.stdout and
+          "3 result file(s) of an earlier naming renamed" in done.stderr and
+          all(p.exists() and p.read_bytes() == b for p, b in renamed.items()) and
+          not any(p.with_name(p.name.replace("-cm5-", "-")).exists() for p in renamed),
+          f"results under the earlier names are renamed, none runs again "
+          f"({done.stdout.splitlines()[:1]})")
+
+
 def test_varying_nodes(work):
     (work / "varying.yaml").write_text(
         "options: {scene: scene2, iterations: 1}\ngrid: {R: [1, 2, 4, 8], V: [0]}\n")
@@ -234,6 +253,7 @@ def test_varying_nodes(work):
 def main():
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-summary-test-") as folder:
         test_fixed_nodes(Path(folder))
+        test_earlier_names(Path(folder))
         test_varying_nodes(Path(folder))
     print(f"sweep_summary_test: {len(failures)} failure(s)")
     return 1 if failures else 0

@@ -68,3 +68,47 @@ def legacy_file(cell):
     folder = "traced" if cell.trace else "cells"
     scene = re.sub(r"[^A-Za-z0-9_-]", "_", cell.scene)
     return f"{folder}/{scene}-R{cell.R}-V{cell.V}-{cell.id}.json"
+
+
+def rename_legacy(cells, folder):
+    """In `folder`, every file named after a cell's former name (its stem, then any suffix:
+    .json, .trace.json, .ply) renamed to the cell's present name, unless a file has that name
+    already; returns [(old, new)]. For folders no sweep reads (analysis/claims.py keeps each
+    cell's result and mesh under <stem>.json and <stem>.ply): a sweep renames its own results
+    itself (ncube.runner.adopt_legacy_names)."""
+    folder = Path(folder)
+    renamed = []
+    names = {Path(legacy_file(c)).stem: Path(file(c)).stem for c in cells}
+    for path in sorted(folder.iterdir()) if folder.is_dir() else []:
+        for old, new in names.items():
+            if old != new and path.name.startswith(old + "."):
+                target = folder / (new + path.name[len(old):])
+                if not target.exists():
+                    path.rename(target)
+                    renamed.append((path.name, target.name))
+    return renamed
+
+
+def main(argv=None):
+    """python3 -m ncube.cell_names FOLDER SWEEP_FILE...: renames the files of FOLDER named after
+    the former names of the sweep files' cells (docs/sweeps.md, "A cell's identity")."""
+    import sys
+    from .sweep import SweepError, load_all
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) < 2:
+        print("usage: python3 -m ncube.cell_names FOLDER SWEEP_FILE...", file=sys.stderr)
+        return 2
+    try:
+        sweeps = load_all(argv[1:])
+    except SweepError as e:
+        print(f"cell_names: {e}", file=sys.stderr)
+        return 2
+    renamed = rename_legacy([c for s in sweeps for c in s.cells], argv[0])
+    for old, new in renamed:
+        print(f"{old} -> {new}")
+    print(f"cell_names: {len(renamed)} file(s) renamed in {argv[0]}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
