@@ -250,7 +250,26 @@ def test_varying_nodes(work):
         distinct_styles("time_vs_R.png", plot.axes[0])
 
 
+def test_messages():
+    """Without --verbose only a failed cell's own message reaches the terminal, found where a
+    job's line starts inside one of Snakemake's (one pipe, two writers); failed cells counted
+    for the progress line."""
+    import io
+    from ncube import outcome
+    stream = io.BytesIO(b"Building DAG of jobs...\nError in rule cell:run_cell: cells/x.json: "
+                        b"simulate exited with 4:\nsimulate: broken\n  command: a b\n"
+                        b"    jobid: 3\nError in rule traced_cell:\n")
+    log, shown = io.BytesIO(), []
+    messages = outcome.SnakemakeMessages(stream, log, False, shown.append)
+    messages.wait()
+    check(shown == ["run_cell: cells/x.json: simulate exited with 4:\n", "simulate: broken\n",
+                    "  command: a b\n"] and messages.failed_cells == 2 and
+          log.getvalue() == stream.getvalue(),
+          f"the terminal gets the failed cell's message only, the log everything ({shown})")
+
+
 def main():
+    test_messages()
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-summary-test-") as folder:
         test_fixed_nodes(Path(folder))
         test_earlier_names(Path(folder))

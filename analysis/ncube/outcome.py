@@ -107,8 +107,9 @@ class SnakemakeMessages:
                 self.full = True
             if "Directory cannot be locked" in text:
                 self.locked = True
-            if text.startswith(self.FAILED_CELL):
-                self.failed_cells += 1
+            # Snakemake's lines and the jobs' share one pipe: a job's line may start inside one
+            # of Snakemake's ("Error in rule cell:run_cell: ..."), so both are looked for anywhere.
+            self.failed_cells += sum(text.count(mark) for mark in self.FAILED_CELL)
             if text.startswith("--- Logging error ---"):
                 dropping = True
             if self.log is not None:
@@ -117,10 +118,12 @@ class SnakemakeMessages:
                     self.log.flush()
                 except OSError:   # a full disk: the plain line at the end says so
                     self.full = True
-            if text.startswith("run_cell:"):
+            shown = text
+            if "run_cell:" in text and not job_failure:
                 job_failure = True
+                shown = text if self.verbose else text[text.index("run_cell:"):]
             if not dropping and (self.verbose or job_failure):
-                self.show(text)
+                self.show(shown)
             if text.startswith("  command:"):
                 job_failure = False
             elif dropping and text.startswith("Arguments:"):   # the block's last line
