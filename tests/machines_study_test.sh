@@ -75,7 +75,7 @@ printf 'grid:\n  scene: [scene0]\n  Rs: [2, 4]\n' >"$work/typo.yaml"
 if /usr/bin/python3 "$root/experiments/sweep" "$work/typo.yaml" --check >"$work/out" 2>&1; then
   fail "a grid key that is neither a cell key nor a group was taken"
 fi
-grep -q "key 'Rs': not a cell key" "$work/out" || fail "unclear message: $(cat "$work/out")"
+grep -q "grid: unknown key 'Rs'; did you mean 'R'?" "$work/out" || fail "unclear message: $(cat "$work/out")"
 
 # 3. The analysis on canned results. Seconds per iteration (OOM: out of memory), worked out:
 #            brute force R4/R16/R64   octree R4/R16/R64
