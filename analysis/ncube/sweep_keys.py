@@ -29,7 +29,7 @@ def _spelt_as_option(name, known):
 
 def unknown_key(where, place, key, known, what="key"):
     """The one line for an unknown `key` at `place` of the sweep file `where`."""
-    key_text = repr(key)
+    key_text = repr(key) if len(repr(key)) <= 80 else repr(str(key)[:60]) + f" (cut; {len(str(key)):,} characters)"
     option = _spelt_as_option(key, known)
     if option is not None and option != key:
         if "-" in str(key):
