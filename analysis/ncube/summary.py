@@ -149,7 +149,7 @@ def plots(sweep, table, loaded, folder):
     folder.mkdir(parents=True, exist_ok=True)
     label = MEASURE_TEXT[sweep.measure]
     nodes = fixed_nodes(table)
-    names = cell_names(sweep, table)
+    names = bar_names(table)
     if nodes is not None:
         written = [plotting.by_configuration(
             table, label, f"{sweep.name}: {label}, {nodes} nodes in every cell (R x (V + 1))",
@@ -170,7 +170,7 @@ PLOTS = ("by_configuration.png", "time_vs_R.png", "speedup.png", "efficiency.png
          "node_breakdown.png")
 
 
-def cell_names(sweep, table):
+def bar_names(table):
     """{cell id: the scene's label, every other key that varies, R and V}."""
     from . import plotting
     keys = plotting.varied(table, plotting.SERIES)
