@@ -5,11 +5,15 @@ import json
 import numpy as np
 
 from .. import findings as f
+from .. import headline as hl
 from .. import results
 from ..paths import ANALYSIS
-from .cells import unique_cells
+from .cells import Cell, find, unique_cells
 from .figures import figure_scatter
 from .text import markdown_table, megabytes, out_of_memory_text, percent, relative, seconds
+
+EMPTY = Cell(0, "", "", 0, 0, 0)   # a cell with no value, for one a table does not have
+
 
 def fitted_parameters(inputs):
     return [(file, name, parameter) for file, parameters in inputs.platform_files.items()
@@ -280,3 +284,115 @@ def findings_section(inputs):
     out += [f"**{tally['reproduced']} of {len(findings)} findings reproduced**, "
             f"{tally['not reproduced']} not reproduced, {tally['not checked']} not checked.", ""]
     return out, findings
+
+
+# ---------------------------------------------------------------------------------------------
+# The paper's headline comparison (ncube.headline) and the findings over the unknowns' worlds.
+
+WORLDS = ANALYSIS / "unknowns-worlds.json"
+SIZING = ANALYSIS / "headline.json"
+FINDING_NAMES = ["F1", "F2", "F3", "F4", "F5", "F6"]
+
+
+def decision_text(decision):
+    if decision is None:
+        return "–", "–", "–"
+    return (f"{hl.row_text(decision.best_visibility)} {seconds(decision.visibility_seconds)}",
+            f"{hl.row_text(decision.best_naive)} {seconds(decision.naive_seconds)}",
+            "yes" if decision.holds else "**no**")
+
+
+def worlds_section(findings, summary):
+    """The error and the findings in the default world next to their spread over the unknowns
+    study's worlds (analysis/unknowns.md): how sure the report's figures are."""
+    if summary is None:
+        return []
+    worlds = summary["worlds"][1:]
+    n = len(worlds)
+    medians = np.array([w["stats"]["median"] for w in worlds])
+    rows = [["median |error| of the 40 cells",
+             percent(summary["worlds"][0]["stats"]["median"], False),
+             f"{percent(float(np.percentile(medians, 5)), False)} – "
+             f"{percent(float(np.percentile(medians, 95)), False)}"]]
+    for finding in findings:
+        holds = sum(w["findings"][finding.name] == "reproduced" for w in worlds)
+        rows.append([finding.name, finding.status, f"reproduced in {holds} of {n}"])
+    return ["### Over the unknowns' worlds", "",
+            f"The same figures over the {n} drawn worlds of `analysis/unknowns.md` (the "
+            "choices the paper leaves open drawn from their ranges, the two costs refitted in "
+            "each): the 5th to 95th percentile of the median |error| (its 40 cells, the "
+            "report's distinct cells but the timeline), and in how many worlds each finding is "
+            "reproduced by the same definitions.", "",
+            markdown_table(["figure", "this report (the default world)", f"over {n} worlds"],
+                           rows, ["---", "---", "---"]), ""]
+
+
+def headline_section(inputs, findings):
+    """The paper's conclusion, per scene of Tables 4 and 5: does a configuration with
+    visibility processors beat the naive parallelisation? Paper, simulation, worlds; then what
+    would flip scene2 back (analysis/headline.json, written by analysis/headline.py)."""
+    summary = json.loads(WORLDS.read_text()) if WORLDS.exists() else None
+    out = ["## The paper's headline: visibility processors against the naive parallelisation",
+           "",
+           "The paper's conclusion (section 7): \"for certain processor configurations the "
+           "method also outperforms the naive parallelization of the progressive radiosity "
+           "method\". Per scene: the fastest configuration with visibility processors (V > 0) "
+           "against the fastest naive one (V = 0 on more than one node) among the table's "
+           "configurations (Table 4: the five splits of 64 nodes, seconds per iteration; Table "
+           "5: scene0's parallel rows, total seconds); it holds when the first is faster "
+           "(`analysis/ncube/headline.py`). *Worlds where it holds*: over the drawn worlds of "
+           "`analysis/unknowns.md`.", ""]
+    rows = []
+    for table, scene, configurations in hl.SCENES:
+        paper = hl.decide(hl.paper_times(inputs.paper, table, scene, configurations))
+        sim = hl.decide({(R, V): (find(inputs.cells, table, scene, R, V) or EMPTY).sim
+                         for R, V in configurations})
+        if summary:
+            holds, decided, drawn = hl.frequency(summary, table, scene, configurations)
+            worlds = f"{holds} of {decided}" + (f" ({drawn - decided} undecided)"
+                                                if decided < drawn else "")
+        else:
+            worlds = "–"
+        rows.append([scene, table, *decision_text(paper), *decision_text(sim), worlds])
+    out.append(markdown_table(
+        ["scene", "table", "paper: fastest with V > 0", "paper: fastest naive", "paper: holds",
+         "simulation: fastest with V > 0", "simulation: fastest naive", "simulation: holds",
+         "worlds where it holds"], rows,
+        ["---", "--:", "---", "---", "---", "---", "---", "---", "--:"]))
+    out += [""] + sizing_section() + worlds_section(findings, summary)
+    return out
+
+
+def sizing_section():
+    if not SIZING.exists():
+        return []
+    study = json.loads(SIZING.read_text())
+    out = ["### What would flip scene2 back", "",
+           f"Each of three model parameters alone scaled by a factor, every other as committed, "
+           f"in what-if runs of {study['scene']}'s Table 4 configurations (`analysis/headline.py` "
+           "writes `analysis/headline.json`; the model and every figure above stay as they "
+           "are): the factor at which the fastest configuration with visibility processors "
+           "overtakes R=64 V=0, from each configuration's slope between the committed value and "
+           f"{study['probe_factor']:g} times it, then checked by running every configuration "
+           f"{(study['check_factor'] - 1) * 100:.0f} % past that factor and "
+           f"{(study['check_factor'] - 1) * 100:.0f} % short of it.", ""]
+    rows = []
+    for name, entry in sorted(study["parameters"].items()):
+        scaled = ", ".join(f"`{n}`" for n in entry["scaled"])
+        what = f"{scaled} ({'multiplied' if entry['applied'] == 'times' else 'divided'})"
+        if entry["flip_factor"] is None:
+            rows.append([name, what, "none (no positive factor)", "–", "–", "–"])
+            continue
+        checks = entry["checks"]
+        rows.append([name, what, f"{entry['flip_factor']:.3g}", entry["overtaking"],
+                     check_text(checks["past"]), check_text(checks["short"])])
+    out.append(markdown_table(["parameter", "scaled", "flip factor", "overtaking R=64 V=0",
+                               "check past it", "check short of it"], rows,
+                              ["---", "---", "--:", "---", "---", "---"]))
+    return out + [""]
+
+
+def check_text(check):
+    verdict = "holds" if check["holds"] else "does not hold"
+    return (f"x{check['factor']:.3g}: {verdict} ({check['best_visibility']} "
+            f"{seconds(check['visibility_seconds'])} vs R=64 V=0 {seconds(check['naive_seconds'])})")
