@@ -99,7 +99,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--jobs", type=int, default=2, help="simulations run at once")
     args = parser.parse_args()
-    page.will_run("headline.py", f"{len(PARAMETERS) * 3 * len(ROWS)} what-if runs of {SCENE}")
+    page.will_run("headline.py", "what-if runs", announce=False)
+    print(f"headline.py: runs up to {len(PARAMETERS) * 3 * len(ROWS)} what-if runs of {SCENE} "
+          "(none is kept: the study starts afresh each time)", flush=True)
     study = {"scene": SCENE, "table": TABLE, "options": OPTIONS, "probe_factor": PROBE,
              "check_factor": CHECK, "parameters": {}}
     with tempfile.TemporaryDirectory() as folder, \

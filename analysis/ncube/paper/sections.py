@@ -359,16 +359,68 @@ def headline_section(inputs, findings):
          "simulation: fastest with V > 0", "simulation: fastest naive", "simulation: holds",
          "worlds where it holds"], rows,
         ["---", "--:", "---", "---", "---", "---", "---", "---", "--:"]))
-    out += [""] + sizing_section() + worlds_section(findings, summary)
+    out += [""] + flip_section(inputs, summary) + sizing_section() + \
+        worlds_section(findings, summary)
     return out
+
+
+def flip_section(inputs, summary):
+    """For each scene where the paper's headline holds and the simulation's does not: the size of
+    the gap (as analysis/unknowns.md sizes its misses: one cost on the naive side, one factor on
+    the other) and the worlds by their patch order, the unknown that moves it most."""
+    out = []
+    for table, scene, configurations in hl.SCENES:
+        paper = hl.decide(hl.paper_times(inputs.paper, table, scene, configurations))
+        sim = hl.decide({(R, V): (find(inputs.cells, table, scene, R, V) or EMPTY).sim
+                         for R, V in configurations})
+        if paper is None or sim is None or not paper.holds or sim.holds:
+            continue
+        gap = sim.visibility_seconds - sim.naive_seconds
+        naive, visibility = hl.row_text(sim.best_naive), hl.row_text(sim.best_visibility)
+        out += [f"### What would flip {scene} back", "",
+                "From the simulated times, as `analysis/unknowns.md` sizes its misses: one cost "
+                "on one side, or one factor on the other. The paper has the naive "
+                f"{percent(paper.naive_seconds / paper.visibility_seconds - 1)} slower than "
+                f"{hl.row_text(paper.best_visibility)}.", "",
+                markdown_table(["what would do it", "how much", "against"], [
+                    [f"a cost only the naive {naive} pays", f"{seconds(gap)} s per iteration",
+                     f"{percent(gap / sim.naive_seconds)} of its {seconds(sim.naive_seconds)} s"],
+                    [f"{visibility} faster", percent(1 - sim.naive_seconds / sim.visibility_seconds,
+                                                     False),
+                     f"of its {seconds(sim.visibility_seconds)} s"]],
+                    ["---", "--:", "---"]), ""]
+        if summary:
+            out += patch_order_table(summary, table, scene, configurations) + [""]
+    return out
+
+
+def patch_order_table(summary, table, scene, configurations):
+    """The drawn worlds by their patch order: where the headline holds, and the fastest
+    configuration with visibility processors over the fastest naive one."""
+    groups = {}
+    for world in summary["worlds"][1:]:
+        decision = hl.decide(hl.world_times(world, table, scene, configurations))
+        if decision is not None:
+            groups.setdefault(world["values"]["patch_order"], []).append(decision)
+    rows = []
+    for order, decisions in sorted(groups.items()):
+        ratios = sorted(d.visibility_seconds / d.naive_seconds for d in decisions)
+        best = sorted({hl.row_text(d.best_visibility) for d in decisions})
+        rows.append([order, len(decisions), sum(d.holds for d in decisions),
+                     f"{float(np.median(ratios)):.3f} ({ratios[0]:.3f} – {ratios[-1]:.3f})",
+                     ", ".join(best)])
+    return [f"The unknowns' worlds by their patch order (the order in which the patches are "
+            "dealt to the radiosity processors; `analysis/patch-order.md`):", "",
+            markdown_table(["patch order", "worlds", "holds", "fastest V > 0 / fastest naive, "
+                            "median (range)", "fastest V > 0"], rows,
+                           ["---", "--:", "--:", "--:", "---"])]
 
 
 def sizing_section():
     if not SIZING.exists():
         return []
     study = json.loads(SIZING.read_text())
-    out = ["### What would flip scene2 back", "",
-           f"Each of three model parameters alone scaled by a factor, every other as committed, "
+    out = [f"Each of three model parameters alone scaled by a factor, every other as committed, "
            f"in what-if runs of {study['scene']}'s Table 4 configurations (`analysis/headline.py` "
            "writes `analysis/headline.json`; the model and every figure above stay as they "
            "are): the factor at which the fastest configuration with visibility processors "
@@ -380,15 +432,24 @@ def sizing_section():
     for name, entry in sorted(study["parameters"].items()):
         scaled = ", ".join(f"`{n}`" for n in entry["scaled"])
         what = f"{scaled} ({'multiplied' if entry['applied'] == 'times' else 'divided'})"
+        slope = entry["slope_seconds_per_unit_factor"]
+        slopes = ", ".join(f"{rv} {slope[rv]:.3g}" for rv in sorted(
+            slope, key=lambda rv: study["committed"][rv]) if rv != "R=32 V=1")
         if entry["flip_factor"] is None:
-            rows.append([name, what, "none (no positive factor)", "–", "–", "–"])
+            rows.append([name, what, slopes, "none (no positive factor)", "–", "–", "–"])
             continue
         checks = entry["checks"]
-        rows.append([name, what, f"{entry['flip_factor']:.3g}", entry["overtaking"],
+        rows.append([name, what, slopes, f"{entry['flip_factor']:.3g}", entry["overtaking"],
                      check_text(checks["past"]), check_text(checks["short"])])
-    out.append(markdown_table(["parameter", "scaled", "flip factor", "overtaking R=64 V=0",
-                               "check past it", "check short of it"], rows,
-                              ["---", "---", "--:", "---", "---", "---"]))
+    out.append(markdown_table(["parameter", "scaled", "s per iteration per unit of factor",
+                               "flip factor", "overtaking R=64 V=0", "check past it",
+                               "check short of it"], rows,
+                              ["---", "---", "---", "--:", "---", "---", "---"]))
+    out += ["", "Per unit of factor: each configuration's seconds per iteration grow so much "
+            "when the parameter's factor grows by one (R=32 V=1, far behind, left out). No "
+            "positive factor flips it where every line with visibility processors starts above "
+            "R=64 V=0's and rises at least as fast, or falls so slowly that it stays above it "
+            "down to a factor of zero."]
     return out + [""]
 
 
