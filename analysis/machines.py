@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 
-from ncube import opening as op
+from ncube import opening as op  # noqa: E402
 from ncube import page, results  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
 from ncube.sweep import SweepError, load  # noqa: E402
@@ -921,7 +921,7 @@ def opening(found):
             "communication: " + "; ".join(f"{m} {span(m)}, the factor differing "
                                           f"{max(ratios[m]) / min(ratios[m]):.2f} times "
                                           "between splits" for m in balance),
-            "their platform files give rates per kind of work (or other networks), so this is "
+            "their platform files give rates per kind of work, so this is "
             "the model's result; one deterministic run per cell, no interval over the rates"))
     sentences.append(op.Sentence(
         f"The best configuration of each scene is {'the same' if same_best else 'not the same'} "
