@@ -36,7 +36,9 @@ SCRIPT = "analysis/report.py"
 
 
 def configuration(cell):
-    """("R=8 V=7", 249.0) of a headline cell "R=8 V=7 249"."""
+    """("R=8 V=7", 249.0) of a headline cell "R=8 V=7 249"; None for "–" (cells not run)."""
+    if len(cell.split()) != 3:
+        return None
     R, V, value = cell.split()
     return f"{R} {V}", op.number(value)
 
@@ -51,7 +53,10 @@ def opening(found):
     error_span = worlds[0][over]
     findings = worlds[1:]
     reproduced = [r["figure"] for r in findings if r["this report (the default world)"] == "reproduced"]
-    missed = [r["figure"] for r in findings if r["this report (the default world)"] != "reproduced"]
+    missed = [r["figure"] for r in findings
+              if r["this report (the default world)"] == "not reproduced"]
+    unchecked = [r["figure"] for r in findings
+                 if r["this report (the default world)"] not in ("reproduced", "not reproduced")]
     counts = "; ".join(f"{r['figure']} {op.number(r[over]):.0f}" for r in findings)
     n_worlds = over.split()[1]
     sentences = [op.Sentence(
@@ -63,16 +68,20 @@ def opening(found):
         "95th percentile)"),
         op.Sentence(
         f"{len(reproduced)} of the paper's {len(findings)} findings are reproduced "
-        f"({', '.join(reproduced) or 'none'}), {len(missed)} not ({', '.join(missed) or 'none'})",
+        f"({', '.join(reproduced) or 'none'}), {len(missed)} not ({', '.join(missed) or 'none'})"
+        + (f", {len(unchecked)} not checked ({', '.join(unchecked)})" if unchecked else ""),
         f"each decided by its stated thresholds in the default world; reproduced in how many of "
         f"the {n_worlds} worlds: {counts}")]
     rows = op.table(found, "The paper's headline", "simulation: holds")
     by_scene = {r["scene"]: r for r in rows}
-    agreeing = []
+    agreeing, undecided = [], []
     for scene in ("scene2", "scene0", "scene1", "scene3"):
         r = by_scene[scene]
         paper_v, paper_n = configuration(r["paper: fastest with V > 0"]), configuration(r["paper: fastest naive"])
         sim_v, sim_n = configuration(r["simulation: fastest with V > 0"]), configuration(r["simulation: fastest naive"])
+        if None in (paper_v, paper_n, sim_v, sim_n):
+            undecided.append(scene)
+            continue
         paper_holds, sim_holds = r["paper: holds"] == "yes", r["simulation: holds"] == "yes"
         unit = "s per iteration" if r["table"] == "4" else "s to convergence"
         paper_best = paper_v if paper_holds else paper_n
@@ -106,6 +115,12 @@ def opening(found):
             "), so the paper's conclusion rests on " +
             " and ".join(r["scene"] for r in rows if r["paper: holds"] == "yes"),
             "; ".join(f"{s}: {w}" for s, _, _, _, w in agreeing)))
+    if undecided:
+        sentences.append(op.Sentence(
+            f"The paper's headline is not decided on {', '.join(undecided)}: cells of its "
+            "table have no result (a partial report)", "not run"))
+    if len(sentences) >= 6:
+        return sentences
     try:
         needed = op.table(found, "What would flip scene2 back", "what would do it")
         orders = op.table(found, "What would flip scene2 back", "patch order")
