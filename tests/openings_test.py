@@ -201,6 +201,22 @@ check(f"{min(ratios):.2f} to {max(ratios):.2f} times as fast" in first and
       "built into the model" in first and "CM-5" in first,
       f"machines.md's first sentence does not say the CM-5's factor is built into the model: {first}")
 
+# --- README.md's "What it found": every figure of a line is in the openings of the pages that
+# line links to.
+readme = (root / "README.md").read_text()
+found_block = readme.split("## What it found", 1)[1].split("\n## ", 1)[0]
+bullets = re.split(r"\n\* ", found_block)[1:]
+check(len(bullets) >= 5, f"README.md's 'What it found' has {len(bullets)} lines")
+for bullet in bullets:
+    linked = re.findall(r"`(analysis/[\w-]+\.md)`", bullet)
+    check(linked, f"README.md: a finding without its page: {bullet[:60]}")
+    # The figures a user reads first are the openings' (the README quotes them).
+    pages_text = " ".join(" ".join(op.sentences_of((root / page).read_text())) for page in linked)
+    page_numbers = set(re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w])", pages_text))
+    for number in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w])", bullet):
+        check(number in page_numbers,
+              f"README.md: {number} ({bullet[:50]}...) is not a figure of {', '.join(linked)}")
+
 if failures:
     print("\n".join(f"FAIL: {f}" for f in failures))
     sys.exit(1)
