@@ -88,14 +88,16 @@ def opening(found):
         sim_best = sim_v if sim_holds else sim_n
         worlds_text = f"it holds in {r['worlds where it holds']} worlds"
         if paper_holds != sim_holds:
+            sim_order = (sim_v, sim_n) if sim_holds else (sim_n, sim_v)
+            paper_order = (paper_v, paper_n) if paper_holds else (paper_n, paper_v)
             sentences.append(op.Sentence(
                 f"The paper's headline, that a configuration with visibility processors beats the "
                 f"naive parallelisation (V = 0), {'holds' if sim_holds else 'flips'} on {scene} "
-                f"(Table {r['table']}): in the simulation {sim_best[0]} is fastest, "
-                f"{sim_n[0]} {sim_n[1]:g} {unit} against {sim_v[0]} {sim_v[1]:g}, where the paper "
-                f"has {paper_best[0]} ahead, {paper_v[0]} {paper_v[1]:g} against {paper_n[0]} "
-                f"{paper_n[1]:g}; F4 below compares only the configurations with visibility "
-                "processors", worlds_text))
+                f"(Table {r['table']}): the simulation's best is {sim_order[0][0]} "
+                f"{sim_order[0][1]:g} {unit} against {sim_order[1][0]} {sim_order[1][1]:g}, where "
+                f"the paper's best is {paper_order[0][0]} {paper_order[0][1]:g} against "
+                f"{paper_order[1][0]} {paper_order[1][1]:g}; F4 below compares only the "
+                "configurations with visibility processors", worlds_text))
         elif paper_holds:
             differs = (f", with another best configuration than the paper's {paper_best[0]} "
                        f"({paper_v[1]:g} against {paper_n[1]:g} for {paper_n[0]})"
