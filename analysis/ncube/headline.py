@@ -1,5 +1,6 @@
 """The paper's headline comparison, decided: "for certain processor configurations the method
-also outperforms the naive parallelization of the progressive radiosity method" (section 7).
+also outperforms the naive parallelization of the progressive radiosity method" (section 6,
+the conclusion).
 
 Per scene of Tables 4 and 5: the fastest configuration with visibility processors (V > 0)
 against the fastest naive one (V = 0 on more than one node), over the table's configurations

@@ -334,7 +334,7 @@ def headline_section(inputs, findings):
     summary = json.loads(WORLDS.read_text()) if WORLDS.exists() else None
     out = ["## The paper's headline: visibility processors against the naive parallelisation",
            "",
-           "The paper's conclusion (section 7): \"for certain processor configurations the "
+           "The paper's conclusion (section 6): \"for certain processor configurations the "
            "method also outperforms the naive parallelization of the progressive radiosity "
            "method\". Per scene: the fastest configuration with visibility processors (V > 0) "
            "against the fastest naive one (V = 0 on more than one node) among the table's "
