@@ -71,6 +71,10 @@ for name in openings.PAGES:
         check(re.search(r"\. \*[^*]+\.\*$", s), f"{name}: a sentence without its italic how-sure: {s[:80]}")
     check(openings.reopened(path) == text,
           f"{name}: its opening is not what its tables give (analysis/openings.py rewrites it)")
+    # Its script writes the same opening when it writes the whole page.
+    source = (root / "analysis" / f"{openings.PAGES[name]}.py").read_text()
+    check(re.search(r"op\.with_opening\(body, opening\(op\.tables\(body\)\)", source),
+          f"analysis/{openings.PAGES[name]}.py does not open its page from its own tables")
 
 
 def mutated(name, old, new):
