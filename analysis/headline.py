@@ -1,6 +1,8 @@
 #!/usr/bin/python3
-"""What the model would need for the paper's headline to hold on scene2: writes
-analysis/headline.json, which analysis/report.py reads (its section "The paper's headline").
+"""What the model would need for the paper's headline to hold again on scene2 (what-if runs).
+
+Writes analysis/headline.json, which analysis/report.py reads (its section "The paper's
+headline").
 
 usage: /usr/bin/python3 analysis/headline.py [--jobs N]
 
@@ -130,8 +132,9 @@ def main():
             else:
                 entry["flip_factor"] = None
             study["parameters"][parameter] = entry
-            print(f"headline.py: {parameter}: " + (f"flips at x{found[0]:.3g} ({headline.row_text(found[1])})"
-                                                  if found else "no positive factor flips it"))
+            said = (f"flips at x{found[0]:.3g} ({headline.row_text(found[1])})" if found
+                    else "no positive factor flips it")
+            print(f"headline.py: {parameter}: {said}", flush=True)
     output_file.write(OUTPUT, json.dumps(study, indent=1, sort_keys=True) + "\n")
     print(f"headline.py: wrote {OUTPUT.relative_to(ROOT)}")
 

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Writes each results page's opening (what it found, with figures and how sure) from the page's
-own tables, without its results or the simulator: the sentences its script writes when it
-writes the whole page (ncube.opening).
+"""Writes each results page's opening from the page's own tables, without results or simulator.
+
+The opening says what the page found, with figures and how sure: the sentences its script
+writes when it writes the whole page (ncube.opening).
 
 usage: /usr/bin/python3 analysis/openings.py [--check] [PAGE ...]
 

@@ -52,11 +52,11 @@ def opening(found):
     over = next(k for k in worlds[0] if k.startswith("over "))
     error_span = worlds[0][over]
     findings = worlds[1:]
-    reproduced = [r["figure"] for r in findings if r["this report (the default world)"] == "reproduced"]
-    missed = [r["figure"] for r in findings
-              if r["this report (the default world)"] == "not reproduced"]
+    verdict = "this report (the default world)"
+    reproduced = [r["figure"] for r in findings if r[verdict] == "reproduced"]
+    missed = [r["figure"] for r in findings if r[verdict] == "not reproduced"]
     unchecked = [r["figure"] for r in findings
-                 if r["this report (the default world)"] not in ("reproduced", "not reproduced")]
+                 if r[verdict] not in ("reproduced", "not reproduced")]
     counts = "; ".join(f"{r['figure']} {op.number(r[over]):.0f}" for r in findings)
     n_worlds = over.split()[1]
     sentences = [op.Sentence(
@@ -77,8 +77,10 @@ def opening(found):
     agreeing, undecided = [], []
     for scene in ("scene2", "scene0", "scene1", "scene3"):
         r = by_scene[scene]
-        paper_v, paper_n = configuration(r["paper: fastest with V > 0"]), configuration(r["paper: fastest naive"])
-        sim_v, sim_n = configuration(r["simulation: fastest with V > 0"]), configuration(r["simulation: fastest naive"])
+        paper_v = configuration(r["paper: fastest with V > 0"])
+        paper_n = configuration(r["paper: fastest naive"])
+        sim_v = configuration(r["simulation: fastest with V > 0"])
+        sim_n = configuration(r["simulation: fastest naive"])
         if None in (paper_v, paper_n, sim_v, sim_n):
             undecided.append(scene)
             continue
@@ -131,8 +133,8 @@ def opening(found):
         return sentences
     flips = [r for r in sizing if not r["flip factor"].startswith("none")]
     none = [r["parameter"] for r in sizing if r not in flips]
-    closest = min(orders, key=lambda r: op.number(r[next(k for k in r if k.startswith("fastest V > 0 /"))]))
-    ratio_column = next(k for k in closest if k.startswith("fastest V > 0 /"))
+    ratio_column = next(k for k in orders[0] if k.startswith("fastest V > 0 /"))
+    closest = min(orders, key=lambda r: op.number(r[ratio_column]))
     parts = []
     if none:
         parts.append(f"no factor on the {', the '.join(none[:-1])}"

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
-"""The reproduction with intervals over what the paper does not tell: writes
-analysis/unknowns.md, analysis/unknowns-worlds.json and analysis/figures/unknowns_intervals.png.
+"""The reproduction with intervals over what the paper does not tell (analysis/unknowns.md).
+
+Writes analysis/unknowns.md, analysis/unknowns-worlds.json and
+analysis/figures/unknowns_intervals.png.
 
 usage: analysis/unknowns.py [--run] [--worlds N] [--seed S] [--results DIR] [--cores N]
                             [--slurm] [--summary FILE] [--out-dir DIR]
