@@ -114,6 +114,7 @@ def opening(found):
     rows = found[0][1]
     gain_column = "gain"
     elements = {r["scene"]: r["elements start → end"] for r in rows}
+    same = all(r["elements start → end"] == elements[r["scene"]] for r in rows)
     moved = [r for r in rows if op.number(r["patches moved"])]
     still = [r for r in rows if not op.number(r["patches moved"])]
     one_run = "one run with and one without balancing per configuration, deterministic; no interval"
@@ -121,8 +122,10 @@ def opening(found):
         "Adaptive subdivision over the run grows " +
         "; ".join(f"{scene} from {span.replace(' → ', ' to ')} elements"
                   for scene, span in elements.items()) +
-        ", the same at every R and V", "counted, deterministic: the parallel runs make the cuts "
-        "the sequential one makes (tested bit for bit)")]
+        (", the same at every R and V" if same else " (at the last R and V of the table; "
+                                                         "they differ between R and V)"),
+        "counted, deterministic: the parallel runs make the cuts the sequential one makes "
+        "(tested bit for bit)")]
     if moved:
         sentences.append(op.Sentence(
             "Load balancing makes the iterations after the cuts faster where it moves patches: " +
