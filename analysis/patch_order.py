@@ -174,6 +174,8 @@ def opening(found):
     moving = [f for f in findings if f not in robust]
     spread = f"the spread over {len(shuffled)} seeded random orders, each refitted; no wider interval"
     medians = [op.number(r[error]) for r in shuffled]
+    moved = max(abs(op.number(r[c]) / op.number(generator[c]) - 1) * 100
+                for r in shuffled for c in costs)
     sentences = [
         op.Sentence(f"Over {len(shuffled)} random patch orders the median |error| is "
                     f"{min(medians):.1f} to {max(medians):.1f} % against "
@@ -183,7 +185,7 @@ def opening(found):
                         f"{f} ({generator[f]} with the generator's order, "
                         f"{sum(r[f] == generator[f] for r in shuffled)} of {len(shuffled)} random "
                         "orders agree)" for f in moving) or "none"), spread),
-        op.Sentence("The fitted costs move little: " + "; ".join(
+        op.Sentence(f"The fitted costs move by at most {moved:.1f} %: " + "; ".join(
             f"{c} {min(op.number(r[c]) for r in shuffled):.2f} to "
             f"{max(op.number(r[c]) for r in shuffled):.2f} (committed {generator[c]})"
             for c in costs), spread)]
