@@ -409,7 +409,7 @@ def patch_order_table(summary, table, scene, configurations):
         rows.append([order, len(decisions), sum(d.holds for d in decisions),
                      f"{float(np.median(ratios)):.3f} ({ratios[0]:.3f} – {ratios[-1]:.3f})",
                      ", ".join(best)])
-    return [f"The unknowns' worlds by their patch order (the order in which the patches are "
+    return ["The unknowns' worlds by their patch order (the order in which the patches are "
             "dealt to the radiosity processors; `analysis/patch-order.md`):", "",
             markdown_table(["patch order", "worlds", "holds", "fastest V > 0 / fastest naive, "
                             "median (range)", "fastest V > 0"], rows,
