@@ -27,6 +27,7 @@ import sys
 import tempfile
 
 from ncube import input_file, page  # noqa: E402
+from ncube import opening as op  # noqa: E402
 
 SCENE_BYTES = 256 << 20  # the scene files' size limit of ./simulate's read gate
 
@@ -105,6 +106,40 @@ def plot_figure(rows, path):
     plt.close(fig)
     page.write(path, picture.getvalue())  # the output rule, as the page
     return path
+
+
+def opening(found):
+    """The page's opening, from its own table: the elements subdivision makes, what balancing
+    gains where it moves patches, where it moves none."""
+    rows = found[0][1]
+    gain_column = "gain"
+    elements = {r["scene"]: r["elements start → end"] for r in rows}
+    same = all(r["elements start → end"] == elements[r["scene"]] for r in rows)
+    moved = [r for r in rows if op.number(r["patches moved"])]
+    still = [r for r in rows if not op.number(r["patches moved"])]
+    one_run = "one run with and one without balancing per configuration, deterministic; no interval"
+    sentences = [op.Sentence(
+        "Adaptive subdivision over the run grows " +
+        "; ".join(f"{scene} from {span.replace(' → ', ' to ')} elements"
+                  for scene, span in elements.items()) +
+        (", the same at every R and V" if same else " (at the last R and V of the table; "
+                                                         "they differ between R and V)"),
+        "counted, deterministic: the parallel runs make the cuts the sequential one makes "
+        "(tested bit for bit)")]
+    if moved:
+        sentences.append(op.Sentence(
+            "Load balancing makes the iterations after the cuts faster where it moves patches: " +
+            ", ".join(f"{r['scene']} R={r['R']} V={r['V']} {r[gain_column]} "
+                      f"({r['patches moved']} patches moved, element imbalance "
+                      f"{r['element imbalance (off → on)']})" for r in moved), one_run))
+    if still:
+        sentences.append(op.Sentence(
+            "It moves nothing in " + ", ".join(f"{r['scene']} R={r['R']} V={r['V']}"
+                                               for r in still) +
+            f" (element imbalance without it {min(op.number(r['element imbalance (off → on)']) for r in still):.2f}"
+            f" to {max(op.number(r['element imbalance (off → on)']) for r in still):.2f}: below "
+            "the threshold, or no patch small enough to move without overshooting)", one_run))
+    return sentences
 
 
 @page.refusing_outputs("adaptive.py")
@@ -225,7 +260,8 @@ def main():
                       "fewer patches per processor (large R) the element counts are more uneven "
                       "to start with, and the patches left to move are too few to even them out "
                       "fully (see the imbalance with balancing)."]
-    page.write(args.output, "\n".join(lines) + "\n")
+    body = "\n".join(lines) + "\n"
+    page.write(args.output, op.with_opening(body, opening(op.tables(body)), "analysis/adaptive.py"))
     print("wrote", args.output, file=sys.stderr)
 
 

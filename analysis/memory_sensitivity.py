@@ -32,6 +32,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from ncube import opening as op  # noqa: E402
 from ncube import page  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -160,6 +161,45 @@ def figure(cells, models, base_values, capacity, path):
     page.write(path, picture.getvalue())  # the output rule, as the page
 
 
+def opening(found):
+    """The page's opening, from its own tables: whether the paper's memory observations hold at
+    the committed sizes, and the range of each size over which they all still hold."""
+    observed = op.table(found, "The observations", "paper")
+    failed = [r for r in observed if r["paper"] != "ran"]
+    capacity = json.loads((ROOT / "platforms" / "ncube2.json").read_text())[
+        "parameters"]["node_memory"]["value"]
+    busiest = next(k for k in observed[0] if k.startswith("busiest node"))
+    agree = sum((op.number(r[busiest]) <= capacity) == (r["paper"] == "ran") for r in observed)
+    sizes = op.table(found, "One size at a time", "size")
+
+    def margin(r, column):
+        return op.number(r[column]) if op.number(r[column]) is not None else float("inf")
+
+    tight = sorted(sizes, key=lambda r: min(margin(r, "margin below"), margin(r, "margin above")))
+    exact = ("exact for these sizes: each node's bytes counted by the simulator's memory plan, "
+             "affine in every size")
+    sentences = [op.Sentence(
+        f"At the record sizes of platforms/cost_model.json {agree} of the paper's "
+        f"{len(observed)} memory observations hold (its busiest node against the "
+        f"{capacity:,} bytes of a node): the paper ran {len(observed) - len(failed)} of these "
+        "configurations and ran out of memory on " +
+        ", ".join(f"{r['scene']} R={r['R']} V={r['V']}" for r in failed), exact)]
+    for r in tight[:2]:
+        sentences.append(op.Sentence(
+            f"{r['size']} (now {r['current']}) may lie from {r['holds from']} to {r['to']} bytes "
+            f"for every observation to hold, {r['margin below']} below and {r['margin above']} "
+            "above its value",
+            "solved exactly; the size itself is a modelling assumption (docs/model.md), not a "
+            "measured fact of the nCube2 program"))
+    rest = tight[2:]
+    if rest:
+        sentences.append(op.Sentence(
+            "The other sizes (" + ", ".join(r["size"] for r in rest) + ") would have to grow by "
+            f"at least {min(margin(r, 'margin above') for r in rest):.0f} % to change any "
+            "observation", exact))
+    return sentences
+
+
 @page.refusing_outputs("memory_sensitivity.py")
 def main():
     argparse.ArgumentParser(description=__doc__.splitlines()[0]).parse_args()
@@ -239,7 +279,9 @@ def main():
               "conclusion of the report should be read as holding outside them."]
     (ANALYSIS / "figures").mkdir(exist_ok=True)
     figure(cells, models, base_values, capacity, ANALYSIS / "figures" / "memory_sensitivity.png")
-    page.write(ANALYSIS / "memory-sensitivity.md", "\n".join(lines) + "\n")
+    body = "\n".join(lines) + "\n"
+    page.write(ANALYSIS / "memory-sensitivity.md",
+               op.with_opening(body, opening(op.tables(body)), "analysis/memory_sensitivity.py"))
     page.write(ANALYSIS / "memory-sensitivity.json", json.dumps(summary, indent=1) + "\n")
     print("wrote analysis/memory-sensitivity.md: " +
           ", ".join(f"{k} {v[0]:.0f}..{v[1] if v[1] is None else round(v[1])}"

@@ -32,6 +32,7 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 import argparse
 import json
 import random
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -44,6 +45,7 @@ from ncube import sweep as sweeps  # noqa: E402
 from ncube.paper.cells import load_inputs, unique_cells  # noqa: E402
 from ncube.paper.sections import error_statistics  # noqa: E402
 from ncube import findings as fnd  # noqa: E402
+from ncube import opening as op  # noqa: E402
 from ncube import page  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, PLATFORMS, ROOT, SCENES  # noqa: E402
 
@@ -160,6 +162,36 @@ def judge(results_dir):
     return stats, verdicts
 
 
+def opening(found):
+    """The page's opening, from its own table: the error, the verdicts and the fitted costs
+    under the random orders against the generator's."""
+    rows = found[0][1]
+    generator, shuffled = rows[0], rows[1:]
+    error = "median |error|"
+    findings = [k for k in generator if re.fullmatch(r"F\d", k)]
+    costs = [k for k in generator if k.startswith("`")]
+    robust = [f for f in findings if all(r[f] == generator[f] for r in shuffled)]
+    moving = [f for f in findings if f not in robust]
+    spread = f"the spread over {len(shuffled)} seeded random orders, each refitted; no wider interval"
+    medians = [op.number(r[error]) for r in shuffled]
+    moved = max(abs(op.number(r[c]) / op.number(generator[c]) - 1) * 100
+                for r in shuffled for c in costs)
+    sentences = [
+        op.Sentence(f"Over {len(shuffled)} random patch orders the median |error| is "
+                    f"{min(medians):.1f} to {max(medians):.1f} % against "
+                    f"{generator[error]} with the order of scenes/generate.py", spread),
+        op.Sentence("The verdicts that stay under every order: " + (", ".join(robust) or "none") +
+                    "; that depend on it: " + (", ".join(
+                        f"{f} ({generator[f]} with the generator's order, "
+                        f"{sum(r[f] == generator[f] for r in shuffled)} of {len(shuffled)} random "
+                        "orders agree)" for f in moving) or "none"), spread),
+        op.Sentence(f"The fitted costs move by at most {moved:.1f} %: " + "; ".join(
+            f"{c} {min(op.number(r[c]) for r in shuffled):.2f} to "
+            f"{max(op.number(r[c]) for r in shuffled):.2f} (committed {generator[c]})"
+            for c in costs), spread)]
+    return sentences
+
+
 @page.refusing_outputs("patch_order.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -225,7 +257,9 @@ def main():
         values = [r["parameters"][name] for r in shuffled]
         lines.append(f"`{name}`: {min(values):.2f} to {max(values):.2f} over the random "
                      f"orders (committed {fitted_now[name]:.2f}).")
-    page.write(ANALYSIS / "patch-order.md", "\n".join(lines) + "\n")
+    body = "\n".join(lines) + "\n"
+    page.write(ANALYSIS / "patch-order.md",
+               op.with_opening(body, opening(op.tables(body)), "analysis/patch_order.py"))
     page.write(ANALYSIS / "patch-order.json", json.dumps(rows, indent=1, sort_keys=True) + "\n")
     print("wrote analysis/patch-order.md")
     return 0

@@ -25,6 +25,7 @@ import sys
 from pathlib import Path
 
 
+from ncube import opening as op  # noqa: E402
 from ncube import options as opts  # noqa: E402
 from ncube import page, results, summary  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
@@ -222,6 +223,72 @@ def render_section(sweep, loaded):
     return lines + [""]
 
 
+UNSURE = "one deterministic run per cell, no interval (a prediction)"
+FIRST_UNSURE = ("one deterministic run per cell and no interval: a prediction, stated before any "
+                "measurement; the model's error on the paper's own cells (analysis/report.md) is "
+                "the nearest measure of how far to trust it")
+
+
+def opening(found):
+    """The page's opening, from its own tables: the octree against brute force and whether it
+    makes visibility processors pay at 64 nodes (section 1), scene4 on the largest hypercube
+    (section 2), the fastest rendering and its share of an iteration (section 3)."""
+    octree = op.table(found, "1. The octree", "octree")
+    scenes = sorted({r["scene"] for r in octree})
+    full = [r for r in octree if 60 <= int(r["nodes"]) <= 64]
+    best, best_v = {}, {}
+    for scene in scenes:
+        mine = [r for r in full if r["scene"] == scene and op.number(r["octree"]) is not None]
+        best[scene] = min(mine, key=lambda r: op.number(r["octree"]))
+        middle = [r for r in mine if 3 <= int(r["V"]) <= 7]
+        best_v[scene] = min(middle, key=lambda r: op.number(r["octree"])) if middle else None
+    slower = all(op.number(best_v[s]["octree"]) > op.number(best[s]["octree"])
+                 for s in scenes if best_v[s])
+    ratios = {v0: [op.number(r["ratio"]) for r in octree
+                   if (r["V"] == "0" if v0 else 3 <= int(r["V"]) <= 7) and
+                   op.number(r["ratio"]) is not None] for v0 in (True, False)}
+    sentences = [op.Sentence(
+        "With the octree of section 6 the fastest configuration of about 64 nodes is " +
+        "; ".join(f"{s}: R={best[s]['R']} V={best[s]['V']} ({best[s]['octree']} s per iteration, "
+                  f"brute force {best[s]['brute force']})" for s in scenes) +
+        f"; the best with V = 3..7 is {'slower' if slower else 'not slower'} on every scene (" +
+        "; ".join(f"{s} R={best_v[s]['R']} V={best_v[s]['V']} {best_v[s]['octree']} s"
+                  for s in scenes if best_v[s]) + ")" +
+        (", so section 6's \"substantially better\" does not come true against V = 0"
+         if slower else ""), FIRST_UNSURE),
+        op.Sentence(
+        f"The octree is {min(ratios[True]):.2f} to {max(ratios[True]):.2f} times as fast as brute "
+        f"force at V = 0 and {min(ratios[False]):.2f} to {max(ratios[False]):.2f} times at "
+        "V = 3..7 (every cell of Tables 1-4): it speeds up V = 3..7 substantially, V = 0 more",
+        UNSURE)]
+    scene4 = op.table(found, "2. scene4", "seconds per iteration")
+    sizes = {}
+    for r in scene4:
+        if op.number(r["seconds per iteration"]) is not None and \
+                not r["seconds per iteration"].startswith("out"):
+            n = op.number(r["nodes"])
+            if n not in sizes or op.number(r["seconds per iteration"]) < \
+                    op.number(sizes[n]["seconds per iteration"]):
+                sizes[n] = r
+    small, large = sizes[min(sizes)], sizes[max(sizes)]
+    sentences.append(op.Sentence(
+        f"scene4 (51,200 patches) takes {large['seconds per iteration']} s for its first "
+        f"iteration on {large['nodes']} nodes at R={large['R']} V={large['V']}, "
+        f"{op.number(small['seconds per iteration']) / op.number(large['seconds per iteration']):.0f}"
+        f" times as fast as the best of {small['nodes']} nodes (R={small['R']} V={small['V']}, "
+        f"{small['seconds per iteration']} s)", UNSURE))
+    render = op.table(found, "3. Parallel rendering", "rendering s")
+    timed = [r for r in render if op.number(r["rendering / iteration"]) is not None]
+    shares = [op.number(r["rendering / iteration"]) for r in timed if r["scene"] == "scene2"]
+    fastest = min((r for r in timed if r["scene"] == "scene2"),
+                  key=lambda r: op.number(r["rendering s"]))
+    sentences.append(op.Sentence(
+        f"Rendering scene2 at 800 x 600 takes {min(shares):.3g} to {max(shares):.3g} of a "
+        f"radiosity iteration; fastest {fastest['partition']} with {fastest['distribution']} at "
+        f"R={fastest['R']} V={fastest['V']} ({fastest['rendering s']} s)", UNSURE))
+    return sentences
+
+
 @page.refusing_outputs("predictions.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -244,7 +311,8 @@ def main():
     for sweep in sweeps:
         _, loaded = summary.rows(sweep, results_dir)
         lines += sections[sweep.name](sweep, loaded)
-    page.write(OUTPUT, "\n".join(lines).rstrip() + "\n")
+    body = "\n".join(lines).rstrip() + "\n"
+    page.write(OUTPUT, op.with_opening(body, opening(op.tables(body)), "analysis/predictions.py"))
     print(f"wrote {rel(OUTPUT)}")
 
 

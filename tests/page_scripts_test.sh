@@ -49,15 +49,17 @@ grep -q "no result of its" <(cd "$clone" && /usr/bin/python3 analysis/report.py 
 refuses analysis/machines.py
 # No simulator built: the scripts that run their own cells refuse (before running anything).
 refuses analysis/unknowns.py
-for script in predictions claims claims_schemes adaptive calibrate memory_sensitivity patch_order; do
+for script in predictions claims claims_schemes adaptive calibrate memory_sensitivity patch_order \
+              headline; do
   refuses "analysis/$script.py"
 done
 refuses analysis/machines.py --run
 grep -q "build/simulate, which is not built" <(cd "$clone" && /usr/bin/python3 analysis/claims.py 2>&1) \
   || fail "claims.py does not name the simulator it lacks"
-# The docs' table generators and the platform and scene generators write committed files from
-# committed inputs: run in the clean clone, they change nothing.
-for script in docs/model_tables.py docs/options_table.py docs/platform_tables.py \
+# The docs' table generators, the platform and scene generators and the pages' openings
+# (analysis/openings.py, from each page's own tables) write committed files from committed
+# inputs: run in the clean clone, they change nothing.
+for script in analysis/openings.py docs/model_tables.py docs/options_table.py docs/platform_tables.py \
               docs/machines/index_table.py platforms/generate.py platforms/machines/generate.py \
               scenes/generate.py; do
   unchanged "$script"

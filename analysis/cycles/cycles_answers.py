@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Blender's Cycles path tracer as the accuracy reference's anchor (issue 38, docs/accuracy.md):
+"""Blender's Cycles path tracer as the accuracy reference's anchor (docs/accuracy.md):
 for every patch of a scene file, its mean radiosity B = E + rho H (H the patch's mean
 irradiance) with its Monte Carlo standard error, per colour.
 

@@ -12,6 +12,8 @@ sys.path (experiments/sweep, tests/ and the Snakefile do).
     ncube.runner    running sweeps through Snakemake (local cores, Slurm, any cluster)
     ncube.summary   a sweep's CSV table and plots
     ncube.findings  the one definition of each of the paper's findings F1-F6
+    ncube.headline  the paper's headline (visibility processors against the naive V = 0), decided
+    ncube.opening   every results page's opening: what it found, from the page's own tables
     ncube.paper     the paper report (analysis/report.py)
     ncube.interpreter  which Python runs a script (Debian's /usr/bin/python3, restarted into)
     ncube.page      a page script's refusal without results, or its word that it runs its cells

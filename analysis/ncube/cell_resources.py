@@ -8,7 +8,7 @@ peak resident sizes measured with /usr/bin/time -f %M on the Release build (Nove
   scene0, R=1 V=1, ncube2.json (64 nodes)         55 MB
   scene0, R=16 V=63, ncube2-d10.json (1,024)     117 MB
   scene0, R=8 V=63, ncube2-d13.json (8,192)      229 MB
-and the 2 GB a prediction sweep's 8,192-node cell of a large scene takes (issue 33). The
+and the 2 GB a prediction sweep's 8,192-node cell of a large scene takes. The
 request is that bound with a margin: a base (the job runs a Snakemake and ncube.run_cell too) and a quarter MB per platform node (about eight
 times the measured growth, which also covers larger scenes' elements), rounded up to 64 MB."""
 import math

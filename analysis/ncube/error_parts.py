@@ -1,5 +1,5 @@
 """The error of a solution taken apart, with 95 % intervals (docs/accuracy.md, "The error taken
-apart"; issue 38 items 3 and 4).
+apart").
 
 For a solution of the scene's elements (./simulate's --mesh of a run without --subdivide, or any
 file of the reference's layout):

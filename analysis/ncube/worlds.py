@@ -1,5 +1,5 @@
 """Plausible worlds: the paper's reproduction with every unknown of analysis/unknowns.json drawn
-(issue 41; analysis/unknowns.py writes the page, docs/reproduce.md says how to run it).
+(analysis/unknowns.py writes the page, docs/reproduce.md says how to run it).
 
 A world is one draw of the unknowns: the four scenes regenerated with their drawn free choices
 at the paper's exact patch and element counts (scenes/generator/variant.py), the drawn samples,

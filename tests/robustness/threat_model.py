@@ -241,6 +241,7 @@ PAGE_SCRIPTS = {
     "report.py": "held", "predictions.py": "held", "adaptive.py": "held",
     "patch_order.py": "held", "memory_sensitivity.py": "held", "calibrate.py": "held",
     "claims.py": "held", "claims_schemes.py": "held", "claims_hemicube.py": "held", "machines.py": "held", "unknowns.py": "held",
+    "headline.py": "held", "openings.py": "held",
 }
 
 TOOL_OUTPUT_KINDS = ["new", "regular", "link", "dangling link", "link loop", "fifo",

@@ -5,11 +5,15 @@ import json
 import numpy as np
 
 from .. import findings as f
+from .. import headline as hl
 from .. import results
 from ..paths import ANALYSIS
-from .cells import unique_cells
+from .cells import Cell, find, unique_cells
 from .figures import figure_scatter
 from .text import markdown_table, megabytes, out_of_memory_text, percent, relative, seconds
+
+EMPTY = Cell(0, "", "", 0, 0, 0)   # a cell with no value, for one a table does not have
+
 
 def fitted_parameters(inputs):
     return [(file, name, parameter) for file, parameters in inputs.platform_files.items()
@@ -280,3 +284,176 @@ def findings_section(inputs):
     out += [f"**{tally['reproduced']} of {len(findings)} findings reproduced**, "
             f"{tally['not reproduced']} not reproduced, {tally['not checked']} not checked.", ""]
     return out, findings
+
+
+# ---------------------------------------------------------------------------------------------
+# The paper's headline comparison (ncube.headline) and the findings over the unknowns' worlds.
+
+WORLDS = ANALYSIS / "unknowns-worlds.json"
+SIZING = ANALYSIS / "headline.json"
+FINDING_NAMES = ["F1", "F2", "F3", "F4", "F5", "F6"]
+
+
+def decision_text(decision):
+    if decision is None:
+        return "–", "–", "–"
+    return (f"{hl.row_text(decision.best_visibility)} {seconds(decision.visibility_seconds)}",
+            f"{hl.row_text(decision.best_naive)} {seconds(decision.naive_seconds)}",
+            "yes" if decision.holds else "**no**")
+
+
+def worlds_section(findings, summary):
+    """The error and the findings in the default world next to their spread over the unknowns
+    study's worlds (analysis/unknowns.md): how sure the report's figures are."""
+    if summary is None:
+        return []
+    worlds = summary["worlds"][1:]
+    n = len(worlds)
+    medians = np.array([w["stats"]["median"] for w in worlds])
+    rows = [["median |error| of the 40 cells",
+             percent(summary["worlds"][0]["stats"]["median"], False),
+             f"{percent(float(np.percentile(medians, 5)), False)} – "
+             f"{percent(float(np.percentile(medians, 95)), False)}"]]
+    for finding in findings:
+        holds = sum(w["findings"][finding.name] == "reproduced" for w in worlds)
+        rows.append([finding.name, finding.status, f"reproduced in {holds} of {n}"])
+    return ["### Over the unknowns' worlds", "",
+            f"The same figures over the {n} drawn worlds of `analysis/unknowns.md` (the "
+            "choices the paper leaves open drawn from their ranges, the two costs refitted in "
+            "each): the 5th to 95th percentile of the median |error| (its 40 cells, the "
+            "report's distinct cells but the timeline), and in how many worlds each finding is "
+            "reproduced by the same definitions.", "",
+            markdown_table(["figure", "this report (the default world)", f"over {n} worlds"],
+                           rows, ["---", "---", "---"]), ""]
+
+
+def headline_section(inputs, findings):
+    """The paper's conclusion, per scene of Tables 4 and 5: does a configuration with
+    visibility processors beat the naive parallelisation? Paper, simulation, worlds; then what
+    would flip scene2 back (analysis/headline.json, written by analysis/headline.py)."""
+    summary = json.loads(WORLDS.read_text()) if WORLDS.exists() else None
+    out = ["## The paper's headline: visibility processors against the naive parallelisation",
+           "",
+           "The paper's conclusion (section 6): \"for certain processor configurations the "
+           "method also outperforms the naive parallelization of the progressive radiosity "
+           "method\". Per scene: the fastest configuration with visibility processors (V > 0) "
+           "against the fastest naive one (V = 0 on more than one node) among the table's "
+           "configurations (Table 4: the five splits of 64 nodes, seconds per iteration; Table "
+           "5: scene0's parallel rows, total seconds); it holds when the first is faster "
+           "(`analysis/ncube/headline.py`). *Worlds where it holds*: over the drawn worlds of "
+           "`analysis/unknowns.md`.", ""]
+    rows = []
+    for table, scene, configurations in hl.SCENES:
+        paper = hl.decide(hl.paper_times(inputs.paper, table, scene, configurations))
+        sim = hl.decide({(R, V): (find(inputs.cells, table, scene, R, V) or EMPTY).sim
+                         for R, V in configurations})
+        if summary:
+            holds, decided, drawn = hl.frequency(summary, table, scene, configurations)
+            worlds = f"{holds} of {decided}" + (f" ({drawn - decided} undecided)"
+                                                if decided < drawn else "")
+        else:
+            worlds = "–"
+        rows.append([scene, table, *decision_text(paper), *decision_text(sim), worlds])
+    out.append(markdown_table(
+        ["scene", "table", "paper: fastest with V > 0", "paper: fastest naive", "paper: holds",
+         "simulation: fastest with V > 0", "simulation: fastest naive", "simulation: holds",
+         "worlds where it holds"], rows,
+        ["---", "--:", "---", "---", "---", "---", "---", "---", "--:"]))
+    out += [""] + flip_section(inputs, summary) + sizing_section() + \
+        worlds_section(findings, summary)
+    return out
+
+
+def flip_section(inputs, summary):
+    """For each scene where the paper's headline holds and the simulation's does not: the size of
+    the gap (as analysis/unknowns.md sizes its misses: one cost on the naive side, one factor on
+    the other) and the worlds by their patch order, the unknown that moves it most."""
+    out = []
+    for table, scene, configurations in hl.SCENES:
+        paper = hl.decide(hl.paper_times(inputs.paper, table, scene, configurations))
+        sim = hl.decide({(R, V): (find(inputs.cells, table, scene, R, V) or EMPTY).sim
+                         for R, V in configurations})
+        if paper is None or sim is None or not paper.holds or sim.holds:
+            continue
+        gap = sim.visibility_seconds - sim.naive_seconds
+        naive, visibility = hl.row_text(sim.best_naive), hl.row_text(sim.best_visibility)
+        out += [f"### What would flip {scene} back", "",
+                "From the simulated times, as `analysis/unknowns.md` sizes its misses: one cost "
+                "on one side, or one factor on the other. The paper has the naive "
+                f"{percent(paper.naive_seconds / paper.visibility_seconds - 1)} slower than "
+                f"{hl.row_text(paper.best_visibility)}.", "",
+                markdown_table(["what would do it", "how much", "against"], [
+                    [f"a cost only the naive {naive} pays", f"{seconds(gap)} s per iteration",
+                     f"{percent(gap / sim.naive_seconds)} of its {seconds(sim.naive_seconds)} s"],
+                    [f"{visibility} faster", percent(1 - sim.naive_seconds / sim.visibility_seconds,
+                                                     False),
+                     f"of its {seconds(sim.visibility_seconds)} s"]],
+                    ["---", "--:", "---"]), ""]
+        if summary:
+            out += patch_order_table(summary, table, scene, configurations) + [""]
+    return out
+
+
+def patch_order_table(summary, table, scene, configurations):
+    """The drawn worlds by their patch order: where the headline holds, and the fastest
+    configuration with visibility processors over the fastest naive one."""
+    groups = {}
+    for world in summary["worlds"][1:]:
+        decision = hl.decide(hl.world_times(world, table, scene, configurations))
+        if decision is not None:
+            groups.setdefault(world["values"]["patch_order"], []).append(decision)
+    rows = []
+    for order, decisions in sorted(groups.items()):
+        ratios = sorted(d.visibility_seconds / d.naive_seconds for d in decisions)
+        best = sorted({hl.row_text(d.best_visibility) for d in decisions})
+        rows.append([order, len(decisions), sum(d.holds for d in decisions),
+                     f"{float(np.median(ratios)):.3f} ({ratios[0]:.3f} – {ratios[-1]:.3f})",
+                     ", ".join(best)])
+    return ["The unknowns' worlds by their patch order (the order in which the patches are "
+            "dealt to the radiosity processors; `analysis/patch-order.md`):", "",
+            markdown_table(["patch order", "worlds", "holds", "fastest V > 0 / fastest naive, "
+                            "median (range)", "fastest V > 0"], rows,
+                           ["---", "--:", "--:", "--:", "---"])]
+
+
+def sizing_section():
+    if not SIZING.exists():
+        return []
+    study = json.loads(SIZING.read_text())
+    out = [f"Each of three model parameters alone scaled by a factor, every other as committed, "
+           f"in what-if runs of {study['scene']}'s Table 4 configurations (`analysis/headline.py` "
+           "writes `analysis/headline.json`; the model and every figure above stay as they "
+           "are): the factor at which the fastest configuration with visibility processors "
+           "overtakes R=64 V=0, from each configuration's slope between the committed value and "
+           f"{study['probe_factor']:g} times it, then checked by running every configuration "
+           f"{(study['check_factor'] - 1) * 100:.0f} % past that factor and "
+           f"{(study['check_factor'] - 1) * 100:.0f} % short of it.", ""]
+    rows = []
+    for name, entry in sorted(study["parameters"].items()):
+        scaled = ", ".join(f"`{n}`" for n in entry["scaled"])
+        what = f"{scaled} ({'multiplied' if entry['applied'] == 'times' else 'divided'})"
+        slope = entry["slope_seconds_per_unit_factor"]
+        slopes = ", ".join(f"{rv} {slope[rv]:.3g}" for rv in sorted(
+            slope, key=lambda rv: study["committed"][rv]) if rv != "R=32 V=1")
+        if entry["flip_factor"] is None:
+            rows.append([name, what, slopes, "none (no positive factor)", "–", "–", "–"])
+            continue
+        checks = entry["checks"]
+        rows.append([name, what, slopes, f"{entry['flip_factor']:.3g}", entry["overtaking"],
+                     check_text(checks["past"]), check_text(checks["short"])])
+    out.append(markdown_table(["parameter", "scaled", "s per iteration per unit of factor",
+                               "flip factor", "overtaking R=64 V=0", "check past it",
+                               "check short of it"], rows,
+                              ["---", "---", "---", "--:", "---", "---", "---"]))
+    out += ["", "Per unit of factor: each configuration's seconds per iteration grow so much "
+            "when the parameter's factor grows by one (R=32 V=1, far behind, left out). No "
+            "positive factor flips it where every line with visibility processors starts above "
+            "R=64 V=0's and rises at least as fast, or falls so slowly that it stays above it "
+            "down to a factor of zero."]
+    return out + [""]
+
+
+def check_text(check):
+    verdict = "holds" if check["holds"] else "does not hold"
+    return (f"x{check['factor']:.3g}: {verdict} ({check['best_visibility']} "
+            f"{seconds(check['visibility_seconds'])} vs R=64 V=0 {seconds(check['naive_seconds'])})")
