@@ -1,4 +1,4 @@
-// The cost model and the counters' lists (radiosity/work_counts.h, render/render_counts.h,
+// The cost model and the counters' lists (counts/work_counts.h, counts/render_counts.h,
 // machine/cost_model.h): every counter has its parameter, loaded, charged and reported.
 #include "machine/cost_model.h"
 

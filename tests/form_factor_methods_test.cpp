@@ -108,7 +108,7 @@ TEST(FormFactorMethods, EveryRegistrationHasAllFourFunctions) {
     EXPECT_TRUE(method.shoot) << method.name;
     EXPECT_TRUE(method.form_factors) << method.name;
     EXPECT_TRUE(method.setup_work) << method.name;
-    EXPECT_TRUE(method.node_bytes) << method.name;
+    EXPECT_TRUE(method.node_items) << method.name;
   }
 }
 

@@ -88,15 +88,17 @@ const MethodRegistry<FormFactorMethod>& form_factor_methods() {
            "section 2.2: rays from each element to the shooter's M parts, the visible parts' "
            "point-to-polygon form factors; the calibrated setup",
            shoot_ray_traced, ray_traced_shot_form_factors, [](const ProgressiveOptions&) { return WorkCounts{}; },
-           [](const ProgressiveOptions&, const CostModel&) { return 0.0; }, true, "", ""},
+           [](const ProgressiveOptions&) { return HeldItems{}; }, true, "", ""},
           {"hemicube",
            "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
            "--hemicube-placement, --hemicube-back-faces); V = 0 only",
            shoot_hemicube, hemicube_shot_form_factors,
            [](const ProgressiveOptions& options) { return hemicube_setup_work(options.hemicube); },
-           [](const ProgressiveOptions& options, const CostModel& costs) {
-             return hemicube_table_entries(options.hemicube) * costs.delta_form_factor_bytes +
-                    hemicube_buffer_cells(options.hemicube) * costs.hemicube_cell_bytes;
+           [](const ProgressiveOptions& options) {
+             HeldItems items;
+             items.delta_form_factors = hemicube_table_entries(options.hemicube);
+             items.hemicube_cells = hemicube_buffer_cells(options.hemicube);
+             return items;
            },
            false,
            "each radiosity processor renders the shooter's hemicube over the geometry it "

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "machine/cost_model.h"
+#include "counts/held_items.h"
 #include "radiosity/radiosity_engine.h"
 #include "util/method_registry.h"
 #include "visibility/occluder_set.h"
@@ -37,8 +37,8 @@ struct FormFactorMethod {
       form_factors;
   // The work of a node that computes form factors, once when it starts (none: all zero).
   std::function<WorkCounts(const ProgressiveOptions& options)> setup_work;
-  // Modeled bytes of such a node beyond its patches and elements.
-  std::function<double(const ProgressiveOptions& options, const CostModel& costs)> node_bytes;
+  // What such a node holds beyond its patches and elements, in items the cost model weighs.
+  std::function<HeldItems(const ProgressiveOptions& options)> node_items;
   // Whether the method is defined with visibility processors (V > 0); if not, such a run is
   // refused (exit 2) with `without_visibility_processors` as the reason.
   bool with_visibility_processors = true;

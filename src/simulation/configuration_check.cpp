@@ -3,10 +3,10 @@
 #include <string>
 
 #include "radiosity/form_factor_methods.h"
-#include "radiosity/shooter.h"
 #include "simulation/parallelisations.h"
 #include "simulation/render_phase.h"
 #include "util/input_error.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 
