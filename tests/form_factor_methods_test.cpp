@@ -116,8 +116,12 @@ TEST(FormFactorMethods, EveryRegistrationHasItsFunctions) {
     EXPECT_EQ(!method.gather_visible, !method.without_visibility_processors.empty()) << method.name;
     // Own options: named when changed, and none changed at the defaults.
     EXPECT_EQ(method.own_options.empty(), !method.changed_options) << method.name;
-    if (method.changed_options) EXPECT_TRUE(method.changed_options(defaults).empty()) << method.name;
-    if (method.refused_options) EXPECT_EQ(method.refused_options(defaults), "") << method.name;
+    if (method.changed_options) {
+      EXPECT_TRUE(method.changed_options(defaults).empty()) << method.name;
+    }
+    if (method.refused_options) {
+      EXPECT_EQ(method.refused_options(defaults), "") << method.name;
+    }
   }
   // The paper's method is defined with visibility processors (section 3).
   EXPECT_TRUE(form_factor_methods().paper_default().gather_visible);
