@@ -24,10 +24,10 @@
 #include <vector>
 
 #include "plain_quads.h"
-#include "radiosity/shooter.h"
 #include "scene/scene_loader.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
+#include "visibility/shooter.h"
 
 namespace {
 

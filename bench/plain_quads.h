@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "radiosity/shooter.h"
 #include "scene/scene.h"
+#include "visibility/shooter.h"
 
 namespace ncube::bench {
 

@@ -103,13 +103,37 @@ TEST(FormFactorMethods, TheResultFileRecordsTheHemicubeOnlyForHemicubeRuns) {
 // Each node program calls another of them (the paper's radiosity processor `shoot`, the
 // shooter-centred scheme's `form_factors`): an empty one is a run failing with exit 7
 // (docs/architecture.md, "Form-factor methods").
-TEST(FormFactorMethods, EveryRegistrationHasAllFourFunctions) {
+TEST(FormFactorMethods, EveryRegistrationHasItsFunctions) {
+  const ProgressiveOptions defaults;
   for (const FormFactorMethod& method : form_factor_methods().all()) {
     EXPECT_TRUE(method.shoot) << method.name;
     EXPECT_TRUE(method.form_factors) << method.name;
     EXPECT_TRUE(method.setup_work) << method.name;
-    EXPECT_TRUE(method.node_bytes) << method.name;
+    EXPECT_TRUE(method.node_items) << method.name;
+    EXPECT_TRUE(method.setting) << method.name;
+    EXPECT_TRUE(method.counted) << method.name;
+    // Without a V > 0 gather, the reason a V > 0 run is refused.
+    EXPECT_EQ(!method.gather_visible, !method.without_visibility_processors.empty()) << method.name;
+    // Own options: named when changed, and none changed at the defaults.
+    EXPECT_EQ(method.own_options.empty(), !method.changed_options) << method.name;
+    if (method.changed_options) {
+      EXPECT_TRUE(method.changed_options(defaults).empty()) << method.name;
+    }
+    if (method.refused_options) {
+      EXPECT_EQ(method.refused_options(defaults), "") << method.name;
+    }
   }
+  // The paper's method is defined with visibility processors (section 3).
+  EXPECT_TRUE(form_factor_methods().paper_default().gather_visible);
+}
+
+// Registering after the registry has been read would leave consumers that have read it
+// without the method: refused.
+TEST(FormFactorMethods, NoMethodIsAddedAfterTheRegistryIsRead) {
+  form_factor_methods();
+  FormFactorMethod late;
+  late.name = "late";
+  EXPECT_THROW(add_form_factor_method(late), std::logic_error);
 }
 
 TEST(FormFactorMethods, EveryMethodHasAHostVersionAndNodeMemory) {

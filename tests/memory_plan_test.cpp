@@ -101,7 +101,7 @@ TEST(MemoryPlan, OctreeVisibilityAddsTheOctreeOfEachNodeThatTestsRays) {
     }
   }
   // Any 2 patches share the root with the default parameters: 1 cell, 2 references.
-  EXPECT_DOUBLE_EQ(Octree(scene, {1, 3}).structure_bytes(c), 64 + 2 * 4);
+  EXPECT_DOUBLE_EQ(c.bytes(Octree(scene, {1, 3}).structure_items()), 64 + 2 * 4);
 }
 
 }  // namespace

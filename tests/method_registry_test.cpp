@@ -165,24 +165,26 @@ TEST(VisibilityMethods, EveryMethodsSearchStructureIsInTheMemoryPlan) {
       for (std::size_t n = 0; n < with.size(); ++n) {
         double expected = 0.0;  // a radiosity processor with V > 0 tests no rays
         if (V == 0)
-          expected = method.reference(scene, visibility_share(scene, 1, 0), RayTestPolicy{})
-                         ->structure_bytes(costs);
+          expected = costs.bytes(
+              method.reference(scene, visibility_share(scene, 1, 0), RayTestPolicy{})
+                  ->structure_items());
         else if (with[n].role == NodeRole::kVisibility)
-          expected = method
-                         .reference(scene, visibility_share(scene, V, (with[n].node - 1) % (V + 1)),
-                                    RayTestPolicy{})
-                         ->structure_bytes(costs);
+          expected = costs.bytes(
+              method
+                  .reference(scene, visibility_share(scene, V, (with[n].node - 1) % (V + 1)),
+                             RayTestPolicy{})
+                  ->structure_items());
         EXPECT_DOUBLE_EQ(with[n].bytes - none[n].bytes, expected)
             << method.name << ", V = " << V << ", node " << with[n].node;
       }
     }
   }
   // The brute-force loop holds nothing beyond the patches; the octree holds cells.
-  EXPECT_EQ(visibility_methods().at("brute-force").reference(scene, {0, 1, 2}, RayTestPolicy{})
-                ->structure_bytes(costs),
+  EXPECT_EQ(costs.bytes(visibility_methods().at("brute-force").reference(scene, {0, 1, 2}, RayTestPolicy{})
+                            ->structure_items()),
             0.0);
-  EXPECT_GT(visibility_methods().at("octree").reference(scene, {0, 1, 2}, RayTestPolicy{})
-                ->structure_bytes(costs),
+  EXPECT_GT(costs.bytes(visibility_methods().at("octree").reference(scene, {0, 1, 2}, RayTestPolicy{})
+                            ->structure_items()),
             0.0);
 }
 

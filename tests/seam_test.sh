@@ -19,7 +19,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-model_folders=(geometry scene radiosity visibility machine nodes render util)
+model_folders=(geometry scene counts radiosity visibility machine nodes render util)
 
 # 1. The mark.
 for header in "$root"/src/host/*.h; do

@@ -25,6 +25,9 @@ class Option:
     # values (the hemicube's options: hemicube runs only, so the paper's runs keep their files);
     # a list of values: any of them (the shooter-centred parallelisations)
     recorded_when: object = None
+    # Whether it shapes the rays (--visibility, --ray-test, --samples): a form-factor method
+    # that traces no rays leaves it at its default.
+    shapes_rays: bool = False
 
     def recorded(self, options):
         """Whether the result file records this option's field for these (complete) options."""
@@ -85,7 +88,8 @@ def _option(described):
         check = _choice_check(described["values"])
     default = described["default"]
     return Option(described["flag"], kind, float(default) if kind is float else default,
-                  described["field"], check, described["help"], described.get("recorded_when"))
+                  described["field"], check, described["help"], described.get("recorded_when"),
+                  bool(described.get("shapes_rays")))
 
 
 def _load():
@@ -96,6 +100,13 @@ def _load():
 
 
 OPTIONS = _load()
+# The options that shape the rays, which a form-factor method that traces none leaves alone.
+RAY_OPTIONS = tuple(name for name, option in OPTIONS.items() if option.shapes_rays)
+# What the method registry says of each form-factor method (src/radiosity/form_factor_methods.h,
+# exported under --form-factors' "methods"): {name: {"visibility_processors": whether it is
+# defined with V > 0, "reason": why not, "traces_rays": ..., "options": its own options}}.
+FORM_FACTOR_METHODS = next(d for d in json.loads(DESCRIPTION.read_text())
+                           if d["flag"] == "--form-factors")["methods"]
 # --threads is no part of a cell's configuration (results do not depend on it), but the command
 # line still has to hold a value ./simulate takes: the same range, from the same description.
 _THREADS_CHECK = _range_check(next(d for d in json.loads(DESCRIPTION.read_text())

@@ -435,13 +435,16 @@ def _cell(spec, label, sweep_name, base, where):
                         for k, v in when.items()) \
                 and options[name] != option.default:
             fail(name, f"{options[name]!r} needs " + ", ".join(f"{k}: {v}" for k, v in when.items()))
-    if options["form_factors"] == "hemicube":
-        if V > 0:
-            fail("V" if "V" in spec else "form_factors",
-                 f"V={V}: form_factors hemicube is defined with V = 0 only (docs/model.md, 'The hemicube')")
-        for name in ("visibility", "ray_test", "samples"):
+    # The method's own rules, as its registration gives them (opts.FORM_FACTOR_METHODS).
+    method_name = options["form_factors"]
+    method = opts.FORM_FACTOR_METHODS[method_name]
+    if V > 0 and not method["visibility_processors"]:
+        fail("V" if "V" in spec else "form_factors",
+             f"V={V}: form_factors {method_name} is defined with V = 0 only ({method['reason']})")
+    if not method["traces_rays"]:
+        for name in opts.RAY_OPTIONS:
             if options[name] != opts.OPTIONS[name].default:
-                fail(name, f"{options[name]!r}: form_factors hemicube traces no rays; leave "
+                fail(name, f"{options[name]!r}: form_factors {method_name} traces no rays; leave "
                      f"{name} at {opts.OPTIONS[name].default!r}")
     # The shooter-centred scheme's rules, as its registration has them
     # (src/simulation/parallelisations.cpp, check_shooters).

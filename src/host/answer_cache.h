@@ -21,10 +21,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "counts/work_counts.h"
 #include "host/host_side.h"
 #include "host/question_key.h"
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

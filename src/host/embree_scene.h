@@ -50,7 +50,7 @@
 #include "host/axis_patch_test.h"
 #include "host/near_patches.h"
 #include "visibility/ray_patch_test.h"
-#include "radiosity/shooter.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

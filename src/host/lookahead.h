@@ -36,13 +36,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "counts/work_counts.h"
 #include "host/fast_occluders.h"
 #include "host/fast_octree.h"
 #include "host/host_side.h"
 #include "host/threaded_assist.h"
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
 #include "scene/scene.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "host/host_side.h"
-#include "radiosity/shooter.h"
 #include "visibility/point_block.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

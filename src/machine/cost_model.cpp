@@ -23,6 +23,14 @@ double CostModel::flops(const RenderCounts& c) const {
   return total;
 }
 
+double CostModel::bytes(const HeldItems& items) const {
+  double total = 0.0;
+#define NCUBE_ADD_BYTES(member, size, doc) total += items.member * size;
+  NCUBE_HELD_ITEMS(NCUBE_ADD_BYTES)
+#undef NCUBE_ADD_BYTES
+  return total;
+}
+
 const std::vector<CostParameter>& cost_parameters() {
   static const std::vector<CostParameter> parameters = {
 #define NCUBE_FLOPS_PARAMETER(member, cost, doc) {#cost, &CostModel::cost},

@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/work_counts.h"
-#include "render/render_counts.h"
+#include "counts/held_items.h"
+#include "counts/render_counts.h"
+#include "counts/work_counts.h"
 
 namespace ncube {
 
@@ -50,6 +51,8 @@ struct CostModel {
 
   double flops(const WorkCounts& counts) const;
   double flops(const RenderCounts& counts) const;
+  // The bytes of what a node holds, each item at its data size.
+  double bytes(const HeldItems& items) const;
 };
 
 // A parameter of the cost model: its name in platforms/cost_model.json and its field.

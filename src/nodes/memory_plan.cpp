@@ -11,8 +11,18 @@ namespace ncube {
 double search_structure_bytes(const ProgramSetup& setup, const std::vector<int>& patches,
                               const CostModel& costs) {
   const VisibilityMethod& method = visibility_methods().at(setup.options.visibility);
-  return method.reference(setup.scene, patches, setup.options.ray_policy)->structure_bytes(costs);
+  return costs.bytes(
+      method.reference(setup.scene, patches, setup.options.ray_policy)->structure_items());
 }
+
+namespace {
+
+// What the run's form-factor method holds on a node that computes form factors.
+double method_bytes(const ProgramSetup& setup, const CostModel& costs) {
+  return costs.bytes(form_factor_methods().at(setup.options.form_factors).node_items(setup.options));
+}
+
+}  // namespace
 
 std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
                                     const std::vector<std::vector<int>>& owned_patches,
@@ -31,7 +41,7 @@ std::vector<NodeMemory> plan_memory(const ProgramSetup& setup,
   const double whole_structure =
       V == 0 ? search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs) : 0.0;
   const double form_factor_bytes =
-      form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs);
+      method_bytes(setup, costs);
   std::vector<double> share_structure(std::size_t(V), 0.0), share_patches(std::size_t(V), 0.0);
   for (int j = 0; j < V; ++j) {
     const std::vector<int> share = visibility_share(setup.scene, V, j);
@@ -78,7 +88,7 @@ std::vector<NodeMemory> plan_shooter_memory(const ProgramSetup& setup, const Cos
                        patches * (costs.patch_geometry_bytes + costs.patch_radiosity_bytes) +
                        structure + elements * costs.element_bytes +
                        2.0 * elements * costs.radiosity_increment_bytes +
-                       form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs);
+                       method_bytes(setup, costs);
   std::vector<NodeMemory> nodes;
   for (int rank = 0; rank < setup.placement.radiosity_processors; ++rank)
     nodes.push_back({setup.placement.radiosity_node(rank), NodeRole::kRadiosity, rank, bytes});
@@ -101,7 +111,7 @@ std::vector<NodeMemory> plan_circulation_memory(const ProgramSetup& setup,
   const double shared = costs.node_reserve_bytes + (R + 1.0) * costs.shooter_record_bytes +
                         double(setup.scene.patches.size()) * costs.patch_geometry_bytes +
                         search_structure_bytes(setup, visibility_share(setup.scene, 1, 0), costs) +
-                        form_factor_methods().at(setup.options.form_factors).node_bytes(setup.options, costs) +
+                        method_bytes(setup, costs) +
                         elements * costs.radiosity_increment_bytes +
                         2.0 * largest_block * costs.radiosity_increment_bytes;
   std::vector<NodeMemory> nodes;

@@ -22,7 +22,8 @@ struct NodeMemory {
 };
 
 // The search structure of the run's visibility method over `patches`
-// (OccluderSet::structure_bytes; section 6: the octree's cells and its leaves' patch lists).
+// (OccluderSet::structure_items, weighed by the cost model; section 6: the octree's cells and
+// its leaves' patch lists).
 double search_structure_bytes(const ProgramSetup& setup, const std::vector<int>& patches,
                               const CostModel& costs);
 

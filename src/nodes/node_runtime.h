@@ -13,12 +13,12 @@
 
 #include <simgrid/forward.h>
 
+#include "counts/work_counts.h"
 #include "machine/cost_model.h"
 #include "machine/platform_config.h"
 #include "nodes/activity_record.h"
 #include "nodes/messages.h"
 #include "nodes/node_role.h"
-#include "radiosity/work_counts.h"
 
 namespace ncube {
 

@@ -209,7 +209,8 @@ void RadiosityProcessor::gather_with_visibility_processors(const Shooter& shoote
     const std::vector<PartMask> masks(visible.begin() + std::ptrdiff_t(blocks.first(block)),
                                       visible.begin() + std::ptrdiff_t(blocks.end(block)));
     WorkCounts work;
-    engine_.gather_block(shooter, receivers, blocks, block, masks, work);
+    form_factor_methods().at(setup_.options.form_factors)
+        .gather_visible(engine_, shooter, receivers, blocks, block, masks, work);
     runtime_.charge(work);
     if (!setup_.pipelined && block + 1 < blocks.count()) send_block(blocks, block + 1);
   }

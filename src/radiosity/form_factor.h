@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "counts/work_counts.h"
 #include "geometry/polygon.h"
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

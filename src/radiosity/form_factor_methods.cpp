@@ -78,33 +78,119 @@ std::vector<double> ray_traced_shot_form_factors(RadiosityEngine& engine, const 
   return ray_traced_form_factors(engine, occluders, receivers, shooter, counts);
 }
 
+// Section 3: with visibility processors, the light of a block through the parts the AND of
+// their answers marks visible (the form factors computed ahead on the host when it can).
+void gather_ray_traced_block(RadiosityEngine& engine, const Shooter& shooter,
+                             const std::vector<ElementRef>& receivers, const PointBlocks& blocks,
+                             int block, const std::vector<PartMask>& masks, WorkCounts& counts) {
+  engine.gather_block(shooter, receivers, blocks, block, masks, counts);
+}
+
+FormFactorMethod ray_traced() {
+  FormFactorMethod m;
+  m.name = "ray-traced";
+  m.doc = "section 2.2: rays from each element to the shooter's M parts, the visible parts' "
+          "point-to-polygon form factors; the calibrated setup";
+  m.shoot = shoot_ray_traced;
+  m.form_factors = ray_traced_shot_form_factors;
+  m.gather_visible = gather_ray_traced_block;
+  m.setup_work = [](const ProgressiveOptions&) { return WorkCounts{}; };
+  m.node_items = [](const ProgressiveOptions&) { return HeldItems{}; };
+  m.setting = [](const ProgressiveOptions& options) {
+    return std::to_string(options.samples) + " samples per shooter";
+  };
+  m.counted = [](const WorkCounts& counts) {
+    return std::make_pair(std::string("ray-patch tests"),
+                          std::to_string(counts.ray_patch_tests) + " (" +
+                              std::to_string(counts.plane_crossings) +
+                              " of them cross the patch's plane)");
+  };
+  return m;
+}
+
+FormFactorMethod hemicube() {
+  FormFactorMethod m;
+  m.name = "hemicube";
+  m.doc = "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
+          "--hemicube-placement, --hemicube-back-faces); V = 0 only";
+  m.shoot = shoot_hemicube;
+  m.form_factors = hemicube_shot_form_factors;
+  m.without_visibility_processors =
+      "each radiosity processor renders the shooter's hemicube over the geometry it holds, "
+      "which with visibility processors is only its own patches (docs/model.md, \"The "
+      "hemicube\")";
+  m.setup_work = [](const ProgressiveOptions& options) {
+    return hemicube_setup_work(options.hemicube);
+  };
+  m.node_items = [](const ProgressiveOptions& options) {
+    HeldItems items;
+    items.delta_form_factors = hemicube_table_entries(options.hemicube);
+    items.hemicube_cells = hemicube_buffer_cells(options.hemicube);
+    return items;
+  };
+  m.traces_rays = false;
+  m.own_options = {"hemicube_resolution", "hemicube_placement", "hemicube_back_faces"};
+  m.changed_options = [](const ProgressiveOptions& options) {
+    const HemicubeOptions& o = options.hemicube;
+    const HemicubeOptions defaults;
+    std::vector<std::string> changed;
+    if (o.resolution != defaults.resolution)
+      changed.push_back("--hemicube-resolution " + std::to_string(o.resolution));
+    if (o.placement != defaults.placement)
+      changed.push_back(std::string("--hemicube-placement ") + hemicube_placement_name(o.placement));
+    if (o.back_faces != defaults.back_faces)
+      changed.push_back(std::string("--hemicube-back-faces ") +
+                        hemicube_back_faces_name(o.back_faces));
+    return changed;
+  };
+  m.refused_options = [](const ProgressiveOptions& options) {
+    if (is_valid_hemicube_resolution(options.hemicube.resolution)) return std::string();
+    return "--hemicube-resolution " + std::to_string(options.hemicube.resolution) +
+           ": must be an even number from " + std::to_string(kMinHemicubeResolution) + " to " +
+           std::to_string(kMaxHemicubeResolution);
+  };
+  m.setting = [](const ProgressiveOptions& options) {
+    return "hemicube N=" + std::to_string(options.hemicube.resolution) + " at the shooter's " +
+           hemicube_placement_name(options.hemicube.placement);
+  };
+  m.counted = [](const WorkCounts& counts) {
+    return std::make_pair(std::string("hemicube cells"),
+                          std::to_string(counts.hemicube_depth_tests) + " depth-tested, " +
+                              std::to_string(counts.hemicube_cells_read) + " read out");
+  };
+  m.counter_prefix = "hemicube_";
+  return m;
+}
+
+// Methods added from outside the list (add_form_factor_method), and whether the registry has
+// been read, after which none may be added.
+std::vector<FormFactorMethod>& added_methods() {
+  static std::vector<FormFactorMethod> added;
+  return added;
+}
+
+bool& registry_read() {
+  static bool read = false;
+  return read;
+}
+
 }  // namespace
 
 const MethodRegistry<FormFactorMethod>& form_factor_methods() {
-  static const MethodRegistry<FormFactorMethod> registry(
-      "form-factor method",
-      {
-          {"ray-traced",
-           "section 2.2: rays from each element to the shooter's M parts, the visible parts' "
-           "point-to-polygon form factors; the calibrated setup",
-           shoot_ray_traced, ray_traced_shot_form_factors, [](const ProgressiveOptions&) { return WorkCounts{}; },
-           [](const ProgressiveOptions&, const CostModel&) { return 0.0; }, true, "", ""},
-          {"hemicube",
-           "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
-           "--hemicube-placement, --hemicube-back-faces); V = 0 only",
-           shoot_hemicube, hemicube_shot_form_factors,
-           [](const ProgressiveOptions& options) { return hemicube_setup_work(options.hemicube); },
-           [](const ProgressiveOptions& options, const CostModel& costs) {
-             return hemicube_table_entries(options.hemicube) * costs.delta_form_factor_bytes +
-                    hemicube_buffer_cells(options.hemicube) * costs.hemicube_cell_bytes;
-           },
-           false,
-           "each radiosity processor renders the shooter's hemicube over the geometry it "
-           "holds, which with visibility processors is only its own patches (docs/model.md, "
-           "\"The hemicube\")",
-           "hemicube_"},
-      });
+  static const MethodRegistry<FormFactorMethod> registry = [] {
+    std::vector<FormFactorMethod> methods{ray_traced(), hemicube()};
+    for (FormFactorMethod& method : added_methods()) methods.push_back(std::move(method));
+    registry_read() = true;
+    return MethodRegistry<FormFactorMethod>("form-factor method", std::move(methods));
+  }();
   return registry;
+}
+
+void add_form_factor_method(FormFactorMethod method) {
+  if (registry_read())
+    throw std::logic_error("form-factor method \"" + method.name +
+                           "\" added after the registry was read");
+  added_methods().push_back(std::move(method));
 }
 
 bool writes_counter(const std::string& method, const std::string& counter) {

@@ -11,9 +11,10 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "machine/cost_model.h"
+#include "counts/held_items.h"
 #include "radiosity/radiosity_engine.h"
 #include "util/method_registry.h"
 #include "visibility/occluder_set.h"
@@ -35,21 +36,46 @@ struct FormFactorMethod {
                                     const Shooter& shooter, const std::vector<ElementRef>& receivers,
                                     const ProgressiveOptions& options, WorkCounts& counts)>
       form_factors;
+  // With visibility processors (V > 0, section 3): adds the light of block `block` of
+  // `blocks` (made from `receivers`), `masks` the AND of the V answers for its receivers.
+  // Empty when the method is not defined with visibility processors: such a run is refused
+  // (exit 2) with `without_visibility_processors` as the reason.
+  std::function<void(RadiosityEngine& engine, const Shooter& shooter,
+                     const std::vector<ElementRef>& receivers, const PointBlocks& blocks, int block,
+                     const std::vector<PartMask>& masks, WorkCounts& counts)>
+      gather_visible;
+  std::string without_visibility_processors;
   // The work of a node that computes form factors, once when it starts (none: all zero).
   std::function<WorkCounts(const ProgressiveOptions& options)> setup_work;
-  // Modeled bytes of such a node beyond its patches and elements.
-  std::function<double(const ProgressiveOptions& options, const CostModel& costs)> node_bytes;
-  // Whether the method is defined with visibility processors (V > 0); if not, such a run is
-  // refused (exit 2) with `without_visibility_processors` as the reason.
-  bool with_visibility_processors = true;
-  std::string without_visibility_processors;
+  // What such a node holds beyond its patches and elements, in items the cost model weighs.
+  std::function<HeldItems(const ProgressiveOptions& options)> node_items;
+  // Whether it traces the rays the rays' options shape (--visibility, --ray-test, --samples);
+  // if not, those options are refused away from their defaults (exit 2).
+  bool traces_rays = true;
+  // Its own options, by their result-file fields: recorded for its runs only. Those set away
+  // from their defaults, as "--flag value" (empty function: it has none), are refused with
+  // any other method; `refused_options` gives why their values cannot be honoured ("": they
+  // can; empty function: no such values).
+  std::vector<std::string> own_options;
+  std::function<std::vector<std::string>(const ProgressiveOptions& options)> changed_options;
+  std::function<std::string(const ProgressiveOptions& options)> refused_options;
+  // The run summary: how the method is set ("16 samples per shooter"), and the line of what
+  // it counted, {label, text}.
+  std::function<std::string(const ProgressiveOptions& options)> setting;
+  std::function<std::pair<std::string, std::string>(const WorkCounts& counts)> counted;
   // The prefix of the WorkCounts counters only this method counts ("": none): the result
   // file writes them for runs of this method only, so that other runs keep their files.
   std::string counter_prefix;
 };
 
-// The paper's ray-traced form factors first (the default), then the hemicube.
+// The paper's ray-traced form factors first (the default), then the hemicube, then any
+// added with add_form_factor_method.
 const MethodRegistry<FormFactorMethod>& form_factor_methods();
+
+// Registers one more method from outside the list, before the registry is first read
+// (std::logic_error after): for tests/throwaway_methods.cpp, which checks that every consumer
+// knows a method from its registration alone.
+void add_form_factor_method(FormFactorMethod method);
 
 // Whether the result file of a run with form-factor method `method` writes `counter`.
 bool writes_counter(const std::string& method, const std::string& counter);

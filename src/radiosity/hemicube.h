@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/work_counts.h"
+#include "counts/work_counts.h"
 #include "scene/scene.h"
 
 namespace ncube {

@@ -14,8 +14,8 @@
 #include <memory>
 #include <vector>
 
-#include "radiosity/shooter.h"
 #include "visibility/point_block.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "counts/work_counts.h"
 #include "radiosity/element_store.h"
 #include "radiosity/hemicube.h"
 #include "radiosity/host_assist.h"
-#include "radiosity/shooter.h"
 #include "radiosity/subdivision.h"
-#include "radiosity/work_counts.h"
 #include "visibility/occluder_set.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 

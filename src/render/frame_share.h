@@ -9,8 +9,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "counts/render_counts.h"
 #include "render/image.h"
-#include "render/render_counts.h"
 #include "render/render_records.h"
 #include "render/row_share.h"
 #include "scene/scene.h"

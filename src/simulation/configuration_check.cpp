@@ -3,10 +3,10 @@
 #include <string>
 
 #include "radiosity/form_factor_methods.h"
-#include "radiosity/shooter.h"
 #include "simulation/parallelisations.h"
 #include "simulation/render_phase.h"
 #include "util/input_error.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 
@@ -18,40 +18,34 @@ void check_form_factor_options(const SimulationConfig& config) {
   const ProgressiveOptions& o = config.options;
   const FormFactorMethod& method = form_factor_methods().at(o.form_factors);
   const std::string named = "--form-factors " + method.name;
-  if (config.visibility_processors > 0 && !method.with_visibility_processors)
+  if (config.visibility_processors > 0 && !method.gather_visible)
     throw InputError(named + " with --V " + std::to_string(config.visibility_processors) +
                      ": not defined with visibility processors (V = 0 only): " +
                      method.without_visibility_processors);
-  const ProgressiveOptions defaults;
-  if (method.name == "hemicube") {
-    if (!is_valid_hemicube_resolution(o.hemicube.resolution))
-      throw InputError("--hemicube-resolution " + std::to_string(o.hemicube.resolution) +
-                       ": must be an even number from " + std::to_string(kMinHemicubeResolution) +
-                       " to " + std::to_string(kMaxHemicubeResolution));
-    // No rays are traced: the options of the rays would have no effect.
-    if (o.visibility != defaults.visibility)
-      throw InputError(named + " with --visibility " + o.visibility +
-                       ": the hemicube traces no rays (leave --visibility at " +
-                       defaults.visibility + ")");
-    if (o.ray_policy != defaults.ray_policy)
-      throw InputError(named + " with --ray-test first-blocker: the hemicube traces no rays");
-    if (o.samples != defaults.samples)
-      throw InputError(named + " with --samples " + std::to_string(o.samples) +
-                       ": the hemicube does not cut the shooter into parts (leave --samples at " +
-                       std::to_string(defaults.samples) + ")");
-  } else {
-    if (o.hemicube.resolution != defaults.hemicube.resolution)
-      throw InputError("--hemicube-resolution " + std::to_string(o.hemicube.resolution) +
-                       " without --form-factors hemicube: it would have no effect");
-    if (o.hemicube.placement != defaults.hemicube.placement)
-      throw InputError(std::string("--hemicube-placement ") +
-                       hemicube_placement_name(o.hemicube.placement) +
-                       " without --form-factors hemicube: it would have no effect");
-    if (o.hemicube.back_faces != defaults.hemicube.back_faces)
-      throw InputError(std::string("--hemicube-back-faces ") +
-                       hemicube_back_faces_name(o.hemicube.back_faces) +
-                       " without --form-factors hemicube: it would have no effect");
+  if (method.refused_options) {
+    const std::string refused = method.refused_options(o);
+    if (!refused.empty()) throw InputError(refused);
   }
+  const ProgressiveOptions defaults;
+  if (!method.traces_rays) {
+    // No rays are traced: the options of the rays would have no effect.
+    const std::string none = ": the " + method.name + " traces no rays";
+    if (o.visibility != defaults.visibility)
+      throw InputError(named + " with --visibility " + o.visibility + none +
+                       " (leave --visibility at " + defaults.visibility + ")");
+    if (o.ray_policy != defaults.ray_policy)
+      throw InputError(named + " with --ray-test first-blocker" + none);
+    if (o.samples != defaults.samples)
+      throw InputError(named + " with --samples " + std::to_string(o.samples) + ": the " +
+                       method.name + " does not cut the shooter into parts (leave --samples at " +
+                       std::to_string(defaults.samples) + ")");
+  }
+  // Another method's own options would have no effect.
+  for (const FormFactorMethod& other : form_factor_methods().all())
+    if (other.name != method.name && other.changed_options)
+      for (const std::string& changed : other.changed_options(o))
+        throw InputError(changed + " without --form-factors " + other.name +
+                         ": it would have no effect");
 }
 
 }  // namespace

@@ -113,20 +113,42 @@ const MethodRegistry<HostVisibilityMethod>& host_visibility_methods() {
 // one thread (bench/hemicube_bench.cpp measures it against the rays' host time).
 struct HostFormFactorMethod {
   std::string name;
-  const char* host_version;
+  std::string host_version;
 };
 
+// Host versions added from outside the list (add_host_form_factor_method), and whether the
+// registry has been read, after which none may be added.
+std::vector<HostFormFactorMethod>& added_host_methods() {
+  static std::vector<HostFormFactorMethod> added;
+  return added;
+}
+
+bool& host_registry_read() {
+  static bool read = false;
+  return read;
+}
+
 const MethodRegistry<HostFormFactorMethod>& host_form_factor_methods() {
-  static const MethodRegistry<HostFormFactorMethod> registry(
-      "host version of a form-factor method",
-      {
-          {"ray-traced", "the visibility method's host version"},
-          {"hemicube", "the readable definition"},
-      });
+  static const MethodRegistry<HostFormFactorMethod> registry = [] {
+    std::vector<HostFormFactorMethod> methods{
+        {"ray-traced", "the visibility method's host version"},
+        {"hemicube", "the readable definition"},
+    };
+    for (HostFormFactorMethod& method : added_host_methods()) methods.push_back(std::move(method));
+    host_registry_read() = true;
+    return MethodRegistry<HostFormFactorMethod>("host version of a form-factor method",
+                                                std::move(methods));
+  }();
   return registry;
 }
 
 }  // namespace
+
+void add_host_form_factor_method(std::string name, std::string host_version) {
+  if (host_registry_read())
+    throw std::logic_error("host version of \"" + name + "\" added after the registry was read");
+  added_host_methods().push_back({std::move(name), std::move(host_version)});
+}
 
 void build_host_machinery(HostMachinery& machinery, const Scene& scene,
                           const std::vector<std::vector<int>>& patch_sets,

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "radiosity/host_assist.h"
@@ -33,6 +34,10 @@ struct HostMachinery {
 // run of `radiosity_processors` ranks with `visibility_processors` per rank, for the method
 // `options.visibility` names (std::logic_error when it has no registration here or in
 // visibility_methods()).
+// Registers the host version of a form-factor method added from outside the list
+// (add_form_factor_method), before the registry is first read: for tests/throwaway_methods.cpp.
+void add_host_form_factor_method(std::string name, std::string host_version);
+
 void build_host_machinery(HostMachinery& machinery, const Scene& scene,
                           const std::vector<std::vector<int>>& patch_sets,
                           const ProgressiveOptions& options, int visibility_processors,

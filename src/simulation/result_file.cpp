@@ -109,15 +109,17 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"outline_elements", config.render.outline_elements},
                  {"parallelisation", parallelisations().at(config.parallelisation).name},
                  {"shooters_per_iteration", config.shooters_per_iteration}};
-  // The form-factor method's fields only for the hemicube, the parallelisation's only for
-  // the shooter-centred scheme: the paper's runs keep their files.
-  if (config.options.form_factors != "hemicube")
-    for (const char* field : {"form_factors", "hemicube_resolution", "hemicube_placement"})
-      j["config"].erase(field);
+  // The form-factor method for every run but the paper's, each method's own options for its
+  // runs only (FormFactorMethod::own_options), the parallelisation's only for the
+  // shooter-centred schemes: the paper's runs keep their files.
+  const FormFactorMethod& method = form_factor_methods().at(config.options.form_factors);
+  if (method.name == form_factor_methods().paper_default().name) j["config"].erase("form_factors");
+  for (const FormFactorMethod& other : form_factor_methods().all())
+    if (other.name != method.name)
+      for (const std::string& field : other.own_options) j["config"].erase(field);
   // The back faces only when they pass: a hemicube run's file without the field blocked, as
   // every hemicube run did before the option (--hemicube-back-faces).
-  if (config.options.form_factors != "hemicube" ||
-      config.options.hemicube.back_faces == HemicubeBackFaces::kBlock)
+  if (config.options.hemicube.back_faces == HemicubeBackFaces::kBlock)
     j["config"].erase("hemicube_back_faces");
   if (parallelisations().at(config.parallelisation).name == parallelisations().paper_default().name)
     for (const char* field : {"parallelisation", "shooters_per_iteration"}) j["config"].erase(field);

@@ -14,7 +14,7 @@ namespace ncube {
 // Version of the result file's layout; raised with every change of a field's meaning.
 constexpr int kResultSchemaVersion = 2;
 
-// The counters of the lists (radiosity/work_counts.h, render/render_counts.h), each under
+// The counters of the lists (counts/work_counts.h, counts/render_counts.h), each under
 // its member's name: the result file's "counts" objects.
 // The counters a run of form-factor method `form_factors` and parallelisation
 // `parallelisation` writes (writes_counter, parallelisation_writes_counter); of the host work

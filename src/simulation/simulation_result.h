@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "counts/work_counts.h"
 #include "nodes/node_role.h"
 #include "nodes/node_runtime.h"
-#include "radiosity/work_counts.h"
 #include "scene/patch_mesh.h"
 #include "scene/scene.h"
 #include "simulation/render_phase.h"

@@ -50,7 +50,6 @@
 #include "machine/work_kinds.h"
 #include "radiosity/hemicube.h"
 #include "radiosity/radiosity_engine.h"
-#include "radiosity/shooter.h"
 #include "scene/scene.h"
 #include "tools/output_files.h"
 #include "tools/simulate_options.h"
@@ -59,6 +58,7 @@
 #include "util/input_file.h"
 #include "util/version.h"
 #include "visibility/brute_force_occluders.h"
+#include "visibility/shooter.h"
 
 namespace {
 

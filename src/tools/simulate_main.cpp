@@ -20,6 +20,7 @@
 #include "models/model_import.h"
 #include "models/solution_mesh.h"
 #include "nodes/activity_record.h"
+#include "radiosity/form_factor_methods.h"
 #include "render/image.h"
 #include "render/rasterizer.h"
 #include "scene/scene_loader.h"
@@ -60,22 +61,16 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
                shown_path(config.platform_file).c_str(),
                count_of(platform.node_count(), "node", "nodes").c_str());
   const std::string nodes = count_of(config.node_count(), "node", "nodes");
-  const bool hemicube = config.options.form_factors == "hemicube";
-  if (hemicube)
-    std::fprintf(out, "configuration         R=%d V=%d on %s, hemicube N=%d at the shooter's %s\n",
-                 config.radiosity_processors, config.visibility_processors, nodes.c_str(),
-                 config.options.hemicube.resolution,
-                 ncube::hemicube_placement_name(config.options.hemicube.placement));
-  else
-    std::fprintf(out, "configuration         R=%d V=%d on %s, %d samples per shooter\n",
-                 config.radiosity_processors, config.visibility_processors, nodes.c_str(),
-                 config.options.samples);
+  // How the run's form-factor method is set and what it counted: its registration says.
+  const ncube::FormFactorMethod& method = ncube::form_factor_methods().at(config.options.form_factors);
+  std::fprintf(out, "configuration         R=%d V=%d on %s, %s\n", config.radiosity_processors,
+               config.visibility_processors, nodes.c_str(), method.setting(config.options).c_str());
   const ncube::ProgramOptions defaults;
   if (config.options.visibility != defaults.options.visibility)
     std::fprintf(out, "visibility            %s\n", config.options.visibility.c_str());
-  if (hemicube)
-    std::fprintf(out, "form factors          %s\n", config.options.form_factors.c_str());
-  if (hemicube && config.options.hemicube.back_faces != ncube::HemicubeBackFaces::kBlock)
+  if (method.name != ncube::form_factor_methods().paper_default().name)
+    std::fprintf(out, "form factors          %s\n", method.name.c_str());
+  if (config.options.hemicube.back_faces != ncube::HemicubeBackFaces::kBlock)
     std::fprintf(out, "hemicube back faces   %s (seen from behind, a polygon is culled)\n",
                  ncube::hemicube_back_faces_name(config.options.hemicube.back_faces));
   std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
@@ -106,14 +101,8 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
                    *per_iteration, measured,
                    r.iterations >= ncube::kIterationsPerMeasure ? "" : ", all that ran");
   }
-  if (hemicube)
-    std::fprintf(out, "hemicube cells        %llu depth-tested, %llu read out\n",
-                 (unsigned long long)r.counts.hemicube_depth_tests,
-                 (unsigned long long)r.counts.hemicube_cells_read);
-  else
-    std::fprintf(out, "ray-patch tests       %llu (%llu of them cross the patch's plane)\n",
-                 (unsigned long long)r.counts.ray_patch_tests,
-                 (unsigned long long)r.counts.plane_crossings);
+  const auto [counted, counts] = method.counted(r.counts);
+  std::fprintf(out, "%-21s %s\n", counted.c_str(), counts.c_str());
   if (r.render.ran)
     std::fprintf(out, "rendering (%s, %s)  %.3f simulated seconds, rasterisation imbalance %.3f\n",
                  ncube::row_partition_name(config.render.partition),

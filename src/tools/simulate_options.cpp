@@ -11,6 +11,7 @@
 #include "simulation/parallelisations.h"
 #include "simulation/trace_file.h"
 #include "tools/input_lookup.h"
+#include "tools/method_options.h"
 #include "tools/option_table.h"
 #include "tools/tool_exits.h"
 #include "util/input_error.h"
@@ -72,6 +73,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
     table.annotate(flag, "recorded_when", {{"parallelisation", shooter_centred}});
   table.square("--samples", config.options.samples, 1, 64,
                "M, parts of the shooter (one ray each): a perfect square from 1 to 64", "samples");
+  table.annotate("--samples", "shapes_rays", true);
   table.integer("--iterations", config.options.max_iterations, -1, kMaxInt,
                 "stop after N shots (-1: until converged)", "max_iterations");
   // The run stops when the largest unshot power falls below this fraction of the emitted
@@ -85,9 +87,11 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "how far the brute-force loop runs per ray: all (every other patch, "
                "section 2.2) or first-blocker",
                "ray_test");
+  table.annotate("--ray-test", "shapes_rays", true);
   table.choice("--visibility", config.options.visibility, visibility_methods().names(),
                "how rays find their blockers: " + visibility_methods().described(),
                "visibility");
+  table.annotate("--visibility", "shapes_rays", true);
   table.choice("--form-factors", config.options.form_factors, form_factor_methods().names(),
                "how a shooter's form factors are computed: " + form_factor_methods().described(),
                "form_factors");
@@ -100,10 +104,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "hemicube: one at the shooter's centre (centre), or one at the centre of each "
                "of the shooter's elements, weighted by area (elements)",
                "hemicube_placement");
-  // The result file records them for hemicube runs only (so that the paper's runs keep
-  // their files); the sweep tool compares them likewise (analysis/ncube/options.py).
-  for (const char* flag : {"--form-factors", "--hemicube-resolution", "--hemicube-placement"})
-    table.annotate(flag, "recorded_when", {{"form_factors", "hemicube"}});
   // The hemicube's back faces (issue 38 item 6): block, the default, as every run before the
   // option; recorded for `pass` runs only, so that every earlier hemicube result file stays
   // as it was (a hemicube result without the field blocked).
@@ -113,8 +113,13 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "(block), or is culled and passes the light on (pass); it receives nothing "
                "either way",
                "hemicube_back_faces");
+  // The result file records the method for every run but the paper's and each method's own
+  // options for its runs only (so that the paper's runs keep their files); the sweep tool
+  // compares them likewise and reads each method's rules (tools/method_options.h).
+  annotate_form_factor_methods(table);
   table.annotate("--hemicube-back-faces", "recorded_when",
-                 {{"form_factors", "hemicube"}, {"hemicube_back_faces", "pass"}});
+                 {{"form_factors", nlohmann::json::array({"hemicube"})},
+                  {"hemicube_back_faces", "pass"}});
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",

@@ -14,9 +14,10 @@
 
 #include <vector>
 
-#include "radiosity/shooter.h"
-#include "radiosity/work_counts.h"
+#include "counts/held_items.h"
+#include "counts/work_counts.h"
 #include "visibility/point_block.h"
+#include "visibility/shooter.h"
 
 namespace ncube {
 
@@ -25,8 +26,6 @@ enum class RayTestPolicy {
   kTestAllPatches,        // "each ray is intersected with all other patches" (default)
   kStopAtFirstBlocker,    // the loop ends at the first patch, in set order, that blocks
 };
-
-struct CostModel;
 
 // Each readable definition is registered once as a visibility method (visibility_methods.h).
 class OccluderSet {
@@ -41,12 +40,10 @@ class OccluderSet {
   // The work of building the set's search structure, charged once when the node program
   // starts (none for the brute-force loop).
   virtual WorkCounts build_work() const { return {}; }
-  // The bytes a node holds for the set's search structure beside the patches' geometry
-  // (which every method needs and memory_plan.h counts): none for the brute-force loop.
-  virtual double structure_bytes(const CostModel& costs) const {
-    static_cast<void>(costs);
-    return 0.0;
-  }
+  // What a node holds for the set's search structure beside the patches' geometry (which
+  // every method needs and memory_plan.h counts), in items the cost model weighs: none for
+  // the brute-force loop.
+  virtual HeldItems structure_items() const { return {}; }
   // The scene patches of the set, in the order the loop (or the octree's leaves) lists them.
   virtual const std::vector<int>& patch_indices() const = 0;
 

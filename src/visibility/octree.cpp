@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "machine/cost_model.h"
 
 namespace ncube {
 
@@ -158,9 +157,11 @@ WorkCounts Octree::build_work() const {
   return work;
 }
 
-double Octree::structure_bytes(const CostModel& costs) const {
-  return double(build_.cells) * costs.octree_cell_bytes +
-         double(build_.patch_references) * costs.octree_reference_bytes;
+HeldItems Octree::structure_items() const {
+  HeldItems items;
+  items.octree_cells = double(build_.cells);
+  items.octree_references = double(build_.patch_references);
+  return items;
 }
 
 }  // namespace ncube

@@ -56,7 +56,7 @@ class Octree : public OccluderSet {
   WorkCounts build_work() const override;
   // Its cells and the leaves' patch lists, at the cost model's sizes (section 6: a node that
   // tests rays holds the octree over its set).
-  double structure_bytes(const CostModel& costs) const override;
+  HeldItems structure_items() const override;
   const std::vector<int>& patch_indices() const override { return patch_indices_; }
 
   const OctreeBuildCounts& build_counts() const { return build_; }

@@ -3,7 +3,8 @@
 // option's value and the result file's config.visibility), what the docs say of it, and its
 // readable definition over the patches a node holds. That definition (an OccluderSet) is the
 // whole of the method in the simulated program: its answers, the work it is charged for
-// (unblocked_parts, build_work) and the memory of its search structure (structure_bytes).
+// (unblocked_parts, build_work) and what its search structure holds (structure_items, which
+// the cost model weighs).
 // The host's fast version of each is registered under the same name in
 // simulation/host_machinery.cpp; tests/method_registry_test.cpp checks that every consumer
 // (the option, the result file, the host machinery, the memory plan) knows every name.

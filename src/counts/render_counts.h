@@ -7,7 +7,7 @@
 namespace ncube {
 
 // The one list of the rendering phase's counters, as NCUBE_WORK_COUNTERS
-// (radiosity/work_counts.h) for the radiosity run: X(member, cost-model parameter, what is
+// (counts/work_counts.h) for the radiosity run: X(member, cost-model parameter, what is
 // counted), in the order of the sum in CostModel::flops.
 #define NCUBE_RENDER_COUNTERS(X)                                                                \
   X(vertices, flops_per_render_vertex, "element corners taken to camera space, near-tested")    \

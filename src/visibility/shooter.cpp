@@ -1,4 +1,4 @@
-#include "radiosity/shooter.h"
+#include "visibility/shooter.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>
