@@ -282,7 +282,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   for (CLI::Option* option : import_options)
     options.import_options_given = options.import_options_given || option->count() > 0;
   if (options.scene_file.empty() && !options.check_settings && !options.platform_nodes) {
-    std::cerr << "simulate: scene is required\n(see simulate --help)\n";
+    std::cerr << "simulate: scene is required (see simulate --help)\n";
     return kExitBadInput;
   }
   for (CLI::Option* option : {trace_iterations_option, trace_nodes_option})
