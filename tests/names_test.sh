@@ -63,6 +63,14 @@ expected=$("$simulate" --platform "$root/platforms/machines/cm5.xml" --platform-
 [ -n "$nodes" ] && [ "$nodes" = "$expected" ] || fail "--platform cm5 --platform-nodes gives '$nodes', the file itself '$expected'"
 [ "$("$simulate" --platform ncube2 --platform-nodes 2>/dev/null)" = 64 ] || fail "--platform ncube2 --platform-nodes is not 64"
 rm -f stderr
+# --model-folder: as given, else from the repository. A model here whose MTL lies in the
+# repository's tests/models/ reads it when that folder is allowed by its repository path.
+mkdir m
+sed "s|^mtllib room.mtl|mtllib $(realpath --relative-to=m "$root/tests/models")/room.mtl|" \
+  "$root/tests/models/room.obj" >m/room.obj
+(cd m && "$simulate" room.obj --model-folder tests/models --iterations 1 --quiet 2>../stderr) ||
+  fail "--model-folder tests/models from another folder: $(cat stderr)"
+rm -rf m stderr
 
 # Names in messages: a terminal's escape sequence is shown escaped, never raw; a long name cut.
 refused 'no such scene file' -- $'\e[31mred\e[0m'

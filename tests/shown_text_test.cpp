@@ -47,9 +47,10 @@ TEST(ShownText, CutsALongMessage) {
   std::string many;
   for (int i = 0; i < 50000; ++i) many += "a ";  // 100,000 characters, no long word
   const std::string shown = shown_text(many);
-  // 4,000 characters kept (3,000 before, 1,000 after) around the marker.
-  EXPECT_NE(shown.find("[... 96000 characters ...]"), std::string::npos);
-  EXPECT_EQ(shown.size(), 4000u + std::string("[... 96000 characters ...]").size());
+  // 1,800 characters kept (1,350 before, 450 after) around the marker.
+  EXPECT_EQ(shown.substr(0, 1350) + "[... 98200 characters ...]" + shown.substr(shown.size() - 450),
+            shown);
+  EXPECT_EQ(shown.size(), 1800u + std::string("[... 98200 characters ...]").size());
 }
 
 TEST(ShownText, ShowingTwiceChangesNothing) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tools/option_table.h"
+
 namespace ncube {
 namespace {
 
@@ -80,6 +82,27 @@ TEST(NearestNames, TheNearestHoweverFar) {
   EXPECT_EQ(either_of({"a"}), "a");
   EXPECT_EQ(either_of({"a", "b"}), "a or b");
   EXPECT_EQ(either_of({"a", "b", "c"}), "a, b or c");
+}
+
+// A choice registered in the option table names the nearest choice when refused.
+TEST(ChoiceOption, RefusalNamesTheNearestChoice) {
+  CLI::App app;
+  OptionTable table(app);
+  std::string visibility = "brute-force";
+  table.choice("--visibility", visibility, {"brute-force", "octree"}, "how", "visibility");
+  const auto refusal = [&app](const char* value) -> std::string {
+    try {
+      app.parse(std::vector<std::string>{value, "--visibility"});  // CLI11 reads it backwards
+    } catch (const CLI::ParseError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal("octre"),
+            "--visibility: 'octre' is not one of brute-force, octree; did you mean octree?");
+  EXPECT_EQ(refusal("xyz"), "--visibility: 'xyz' is not one of brute-force, octree");
+  EXPECT_EQ(refusal("octree"), "");
+  EXPECT_EQ(visibility, "octree");
 }
 
 }  // namespace

@@ -115,7 +115,8 @@ std::string trace_window_problem(const TraceWindow& window, int node_count, int 
 std::string trace_window_problem_after(const TraceWindow& window, int iterations, bool converged) {
   if (!window.iterations_limited || window.first_iteration <= iterations) return "";
   return "--trace-iterations starts at iteration " + std::to_string(window.first_iteration) +
-         ", but the run had " + std::to_string(iterations) + (converged ? " (it converged)" : "") +
+         ", but the run had " + std::to_string(iterations) + (iterations == 1 ? " iteration" : " iterations") +
+         (converged ? " (it converged)" : "") +
          ": the trace would hold none of its iterations";
 }
 

@@ -11,8 +11,9 @@ namespace ncube {
 
 // A word (a run of characters without a space) longer than this is cut in the middle.
 constexpr std::size_t kMaxShownWord = 200;
-// A whole message longer than this is cut in the middle.
-constexpr std::size_t kMaxShownMessage = 4000;
+// A whole message longer than this is cut in the middle (with the tool's name and a closing
+// remark, a message stays under 2,000 bytes but for the escapes of a cut word).
+constexpr std::size_t kMaxShownMessage = 1800;
 
 // `text` with every control character escaped (C0, DEL and C1: "\n", "\t", "\e", "\x7f",
 // "\u009b"), every byte that is not part of valid UTF-8 escaped ("\xff"), each word over
