@@ -39,6 +39,14 @@ refused "unknown option --trace-node; did you mean --trace-nodes?" -- scene0 --t
 refused "unknown option --imag; did you mean --image, --image-width or --image-height?" -- scene0 --imag x.png
 refused "unknown option --bogus (see simulate --help)" -- scene0 --bogus
 refused "unexpected argument scene1" -- scene0 scene1
+# The other tools parse alike; an unknown option is named before a required one is missed.
+bench="$(dirname "$simulate")/network_bench"
+"$bench" --platfrom cm5 >stdout 2>stderr
+[ $? -eq 2 ] && [ "$(wc -l <stderr)" -eq 1 ] &&
+  grep -qF "network_bench: unknown option --platfrom; did you mean --platform? (see network_bench --help)" stderr ||
+  fail "network_bench --platfrom cm5: $(cat stderr)"
+rm -f stdout stderr
+
 # Choices: the names the method and parallelisation registries list.
 refused "--visibility: 'octre' is not one of brute-force, octree; did you mean octree?" -- scene0 --visibility octre
 refused "did you mean hemicube?" -- scene0 --form-factors hemicub

@@ -61,14 +61,30 @@ std::vector<std::string> option_names(const CLI::App& app) {
   return names;
 }
 
-// Arguments the parser did not take: the first that looks like an option (a dash and a
-// letter: not a negative number) is named with the options nearest to it; else the first.
+// A dash and a letter: an option's name, not a negative number.
+bool looks_like_option(const std::string& argument) {
+  const std::size_t letter = argument.find_first_not_of('-');
+  return letter != 0 && letter != std::string::npos &&
+         std::isalpha(static_cast<unsigned char>(argument[letter]));
+}
+
+// The arguments the parser did not take, in the command line's order (CLI11 lists them
+// backwards: "5 --iteration").
+std::vector<std::string> left_over(const CLI::App& app, int argc, char** argv) {
+  const std::vector<std::string> remaining = app.remaining();
+  const std::set<std::string> extras(remaining.begin(), remaining.end());
+  std::vector<std::string> left;
+  for (int i = 1; i < argc; ++i)
+    if (extras.count(argv[i]) > 0) left.push_back(argv[i]);
+  if (left.empty()) left.assign(remaining.rbegin(), remaining.rend());
+  return left;
+}
+
+// Arguments the parser did not take: the first that looks like an option is named with the
+// options nearest to it; else the first.
 std::string unexpected_arguments(const CLI::App& app, const std::vector<std::string>& left) {
   for (const std::string& argument : left) {
-    const std::size_t letter = argument.find_first_not_of('-');
-    if (letter == 0 || letter == std::string::npos ||
-        !std::isalpha(static_cast<unsigned char>(argument[letter])))
-      continue;
+    if (!looks_like_option(argument)) continue;
     const std::string option = argument.substr(0, argument.find('='));
     const std::string suggestion = did_you_mean(option, option_names(app));
     return "unknown option " + shown_text(option) + (suggestion.empty() ? "" : "; " + suggestion);
@@ -90,15 +106,18 @@ std::optional<int> parse_command_line(CLI::App& app, const char* tool, int argc,
     std::cout << e.what() << "\n";
     return kExitOk;
   } catch (const CLI::ExtrasError&) {
-    // CLI11 lists the extras backwards ("5 --iteration"), without a suggestion: they are
-    // taken in the command line's order.
-    const std::vector<std::string> remaining = app.remaining();
-    const std::set<std::string> extras(remaining.begin(), remaining.end());
-    std::vector<std::string> left;
-    for (int i = 1; i < argc; ++i)
-      if (extras.count(argv[i]) > 0) left.push_back(argv[i]);
-    if (left.empty()) left.assign(remaining.rbegin(), remaining.rend());
-    std::cerr << tool << ": " << unexpected_arguments(app, left) << " (see " << tool << " --help)\n";
+    std::cerr << tool << ": " << unexpected_arguments(app, left_over(app, argc, argv)) << " (see "
+              << tool << " --help)\n";
+    return kExitBadInput;
+  } catch (const CLI::RequiredError& e) {
+    // CLI11 checks what is required before what is unknown: "--platfrom cm5" would be
+    // answered "--platform is required"; the mistyped option is the message.
+    const std::vector<std::string> left = left_over(app, argc, argv);
+    const bool mistyped = std::any_of(left.begin(), left.end(), [](const std::string& argument) {
+      return looks_like_option(argument);
+    });
+    std::cerr << tool << ": " << (mistyped ? unexpected_arguments(app, left) : shown_text(e.what()))
+              << " (see " << tool << " --help)\n";
     return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     std::cerr << tool << ": " << shown_text(e.what()) << " (see " << tool << " --help)\n";
