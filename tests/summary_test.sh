@@ -51,7 +51,7 @@ print(r["elements_at_end"], r["patches_moved"], r["transfers"]["messages"], int(
 has balanced.txt "subdivision +$at_end elements at the end \(1162 at the start\)"
 has balanced.txt "load balancing +$moved patches moved in $messages messages \($bytes bytes\)"
 has balanced.txt "written +run.json \(--json\)"
-has balanced.txt "written +run.trace \(--trace\)"
+has balanced.txt "written +run.trace \(--trace\): [0-9]+\.[0-9]+ MB"
 has balanced.txt "written +run.png \(--image\)"
 # The summary goes to stderr when the result file goes to standard output; so do the lines.
 "$simulate" scene0 --iterations 1 --json - >stdout.json 2>stderr.txt || fail "--json - run"

@@ -98,6 +98,28 @@ std::string parse_trace_nodes(const std::string& text, TraceWindow& window) {
   return "";
 }
 
+std::string trace_window_problem(const TraceWindow& window, int node_count, int max_iterations) {
+  if (!window.nodes.empty() && window.nodes.back() >= node_count)
+    return "--trace-nodes names node " + std::to_string(window.nodes.back()) + ", but the run has " +
+           std::to_string(node_count) + (node_count == 1 ? " node (0)" : " nodes (0-" +
+           std::to_string(node_count - 1) + ")");
+  if (window.iterations_limited && max_iterations >= 0) {
+    const int named = window.last_iteration == INT_MAX ? window.first_iteration : window.last_iteration;
+    if (named > max_iterations)
+      return "--trace-iterations names iteration " + std::to_string(named) + ", but the run stops after " +
+             std::to_string(max_iterations) + " (--iterations " + std::to_string(max_iterations) + ")";
+  }
+  return "";
+}
+
+std::string trace_window_problem_after(const TraceWindow& window, int iterations, bool converged) {
+  if (!window.iterations_limited || window.first_iteration <= iterations) return "";
+  return "--trace-iterations starts at iteration " + std::to_string(window.first_iteration) +
+         ", but the run had " + std::to_string(iterations) + (iterations == 1 ? " iteration" : " iterations") +
+         (converged ? " (it converged)" : "") +
+         ": the trace would hold none of its iterations";
+}
+
 std::string trace_to_json(const SimulationResult& result, const TraceWindow& window) {
   nlohmann::json events = nlohmann::json::array();
   for (const NodeStats& n : result.nodes)

@@ -30,6 +30,18 @@ std::string parse_trace_iterations(const std::string& text, TraceWindow& window)
 // `text` is such a list (and sets the window's nodes), else why not.
 std::string parse_trace_nodes(const std::string& text, TraceWindow& window);
 
+// Why the window names nodes or iterations a run cannot have, or "": a node at or past
+// `node_count` (the run's R x (V + 1)), an iteration past `max_iterations` when the run is
+// limited (>= 0). Known before the run.
+std::string trace_window_problem(const TraceWindow& window, int node_count, int max_iterations);
+// Why the window holds none of the `iterations` the run had (its first past the last that
+// ran, e.g. a run that converged sooner), or "". Known after the run.
+std::string trace_window_problem_after(const TraceWindow& window, int iterations, bool converged);
+
+// The trace's size as the summary states it, and the size past which ./simulate warns and
+// names the options that trim it (docs/cli.md, "--trace").
+constexpr double kLargeTraceBytes = 10e6;
+
 std::string trace_to_json(const SimulationResult& result, const TraceWindow& window = {});
 
 }  // namespace ncube

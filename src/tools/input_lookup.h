@@ -26,10 +26,16 @@ const char* input_role_name(InputRole role);
 std::vector<std::string> input_candidates(const std::string& name, InputRole role,
                                           const std::string& root);
 
+// The bare names (without extension) of the role's files in its folders under `root`, each
+// once, folder by folder in the order tried, sorted within a folder.
+std::vector<std::string> input_names(InputRole role, const std::string& root);
+
 // The first candidate that exists (as the name was given when it exists as given, so that
 // result files keep the paths the user wrote). A candidate whose existence cannot be told
 // (a loop of links) counts as existing: the read gate reports it. Throws InputError:
-//   "<name>: no such <role> file (looked for: <candidate>, <candidate>, ...)"
+//   "<name>: no such <role> file; did you mean <a> or <b>? (looked for: <candidate>, ...)"
+// naming the role's files nearest to it ("; the nearest names in <folders>: ..." when none is
+// close), the names shown by shown_text (control characters escaped, long ones cut).
 std::string find_input(const std::string& name, InputRole role, const std::string& root);
 
 }  // namespace ncube

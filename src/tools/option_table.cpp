@@ -1,9 +1,13 @@
 #include "tools/option_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <regex>
 #include <sstream>
+
+#include "tools/suggestions.h"
+#include "util/shown_text.h"
 
 namespace ncube {
 
@@ -65,6 +69,21 @@ CLI::Validator finite_number(ValueRange range) {
         return "";
       },
       "NUMBER");
+}
+
+// A choice (a method, a parallelisation): one of `values`, else the message names the nearest
+// (docs/cli.md, "Names corrected").
+CLI::Validator one_of(const std::vector<std::string>& values) {
+  return CLI::Validator(
+      [values](std::string& text) -> std::string {
+        if (std::find(values.begin(), values.end(), text) != values.end()) return "";
+        std::string choices;
+        for (const std::string& v : values) choices += (choices.empty() ? "" : ", ") + v;
+        const std::string suggestion = did_you_mean(text, values);
+        return "'" + shown_text(text) + "' is not one of " + choices +
+               (suggestion.empty() ? "" : "; " + suggestion);
+      },
+      "");
 }
 
 // Integer ranges are described with integer ends.
@@ -144,7 +163,7 @@ CLI::Option* OptionTable::choice(const std::string& flag, std::string& value,
   std::string choices;
   for (const std::string& v : values) choices += (choices.empty() ? "" : "|") + v;
   return shown_as(
-      app_.add_option(flag, value, help)->capture_default_str()->check(CLI::IsMember(values)),
+      app_.add_option(flag, value, help)->capture_default_str()->check(one_of(values)),
       choices, value);
 }
 

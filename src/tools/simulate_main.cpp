@@ -34,6 +34,7 @@
 #include "tools/simulate_options.h"
 #include "tools/tool_exits.h"
 #include "util/input_error.h"
+#include "util/shown_text.h"
 
 namespace {
 
@@ -42,10 +43,17 @@ std::string count_of(long long n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+// "33.0 MB", "0.41 MB": decimal megabytes, as docs/cli.md states trace sizes.
+std::string megabytes(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, bytes < 1e6 ? "%.2f MB" : "%.1f MB", bytes / 1e6);
+  return text;
+}
+
 // A path as the summary shows it: relative to the repository when it lies there.
 std::string shown_path(const std::string& path) {
   const std::string root = ncube::repository_root() + "/";
-  return path.rfind(root, 0) == 0 ? path.substr(root.size()) : path;
+  return ncube::shown_text(path.rfind(root, 0) == 0 ? path.substr(root.size()) : path);
 }
 
 // `out`: stdout, or stderr when an output file is standard output. The lines of the
@@ -53,11 +61,11 @@ std::string shown_path(const std::string& path) {
 // (platform aside, always named) is added only then (docs/cli.md, "Output").
 void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::SimulationConfig& config,
                    const ncube::PlatformConfig& platform, const ncube::SimulationResult& r) {
-  std::fprintf(out, "scene                 %s (%s, %s)\n", scene.name.c_str(),
+  std::fprintf(out, "scene                 %s (%s, %s)\n", ncube::shown_text(scene.name).c_str(),
                count_of(long(scene.patches.size()), "patch", "patches").c_str(),
                count_of(scene.element_total(), "element", "elements").c_str());
   std::fprintf(out, "platform              %s (%s, %s)\n",
-               std::filesystem::path(config.platform_file).stem().string().c_str(),
+               ncube::shown_text(std::filesystem::path(config.platform_file).stem().string()).c_str(),
                shown_path(config.platform_file).c_str(),
                count_of(platform.node_count(), "node", "nodes").c_str());
   const std::string nodes = count_of(config.node_count(), "node", "nodes");
@@ -146,7 +154,10 @@ int simulate(int argc, char** argv) {
       std::cout << "output: " << output.path << "\n";
     return ncube::kExitOk;
   }
-  if (options.platform_nodes) {  // the platform alone, read as a run reads it
+  if (options.platform_nodes) {  // the platform alone, found and read as a run finds and reads it
+    options.config.platform_file = ncube::find_input(options.config.platform_file,
+                                                     ncube::InputRole::kPlatform,
+                                                     ncube::repository_root());
     if (ncube::is_simgrid_platform_file(options.config.platform_file))
       ncube::simgrid_engine(simgrid_outputs.engine_arguments(
           [](const std::string&) { return std::string("/dev/null"); }));
@@ -245,6 +256,37 @@ int simulate(int argc, char** argv) {
   for (const ncube::SimgridOutput& output : run_simgrid_outputs.outputs())
     wanted.push_back({output.setting, output.path});
   ncube::OutputFiles outputs(wanted, read_files);
+  const auto print_model = [&options, &imported, &outputs] {
+    if (options.quiet) return;
+    std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
+                 "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "
+                 "degenerate dropped, %ld pairs merged), %s read\n",
+                 imported.faces, imported.patches, imported.split, imported.degenerate,
+                 imported.merged, count_of(long(imported.files.size()), "file", "files").c_str());
+  };
+  // --export-scene with no output of a run (--json, --image, --mesh, --trace, SimGrid's
+  // files, an activity record): the scene is written without simulating, and the summary
+  // says so (docs/cli.md, "--export-scene").
+  std::size_t run_outputs = 0;
+  for (const ncube::OutputFiles::Output& output : wanted)
+    run_outputs += output.option != "--export-scene" && !output.path.empty();
+  if (model && !options.export_scene_file.empty() && run_outputs == 0) {
+    outputs.write("--export-scene", imported_text);
+    outputs.commit();
+    print_model();
+    if (!options.quiet) {
+      std::FILE* out = outputs.uses_standard_output() ? stderr : stdout;
+      std::fprintf(out, "scene                 %s (%s, %s)\n", ncube::shown_text(scene.name).c_str(),
+                   count_of(long(scene.patches.size()), "patch", "patches").c_str(),
+                   count_of(scene.element_total(), "element", "elements").c_str());
+      std::fprintf(out, "simulation            none: --export-scene alone writes the scene (add "
+                        "--json, --image, --mesh or --trace to run it too)\n");
+      for (const ncube::OutputFiles::Output& written : outputs.written())
+        std::fprintf(out, "written               %s (%s)\n", ncube::shown_text(written.path).c_str(),
+                     written.option.c_str());
+    }
+    return ncube::kExitOk;
+  }
   // SimGrid writes its files to their temporary files; the arguments the result file records
   // stay the user's.
   ncube::simgrid_engine(run_simgrid_outputs.engine_arguments(
@@ -259,6 +301,12 @@ int simulate(int argc, char** argv) {
                        : *json_platform;
   const ncube::CostModel costs = ncube::load_cost_model(options.config.cost_model_file);
   ncube::check_configuration(scene, options.config, platform);
+  // A trace filter naming nodes or iterations the run does not have would write an empty or
+  // partial trace without a word.
+  if (const std::string problem = ncube::trace_window_problem(
+          options.trace_window, options.config.node_count(), options.config.options.max_iterations);
+      !problem.empty())
+    throw ncube::InputError(problem);
   if (!options.config.memory_cap ||
       ncube::first_node_out_of_memory(scene, options.config, platform, costs).node < 0)
     scene.build_elements();
@@ -271,19 +319,24 @@ int simulate(int argc, char** argv) {
   const ncube::SimulationResult result =
       ncube::run_simulation(scene, options.config, platform, costs);
   progress.reset();
+  if (result.status == ncube::RunStatus::kOk)
+    if (const std::string problem = ncube::trace_window_problem_after(
+            options.trace_window, result.iterations, result.converged);
+        !problem.empty())
+      throw ncube::InputError(problem);
   nlohmann::json result_json = ncube::result_to_json(scene, options.config, result);
   result_json["provenance"] = ncube::provenance_to_json(inputs, scene, platform, costs, result);
-  if (!options.quiet && model)
-    std::fprintf(outputs.uses_standard_output() ? stderr : stdout,
-                 "model                 %ld faces -> %ld patches (%ld split into triangles, %ld "
-                 "degenerate dropped, %ld pairs merged), %s read\n",
-                 imported.faces, imported.patches, imported.split, imported.degenerate,
-                 imported.merged, count_of(long(imported.files.size()), "file", "files").c_str());
+  if (model) print_model();
   if (!options.quiet)
     print_summary(outputs.uses_standard_output() ? stderr : stdout, scene, options.config, platform,
                   result);
   if (!options.json_file.empty()) outputs.write("--json", result_json.dump(1) + "\n");
-  if (!options.trace_file.empty()) outputs.write("--trace", ncube::trace_to_json(result, options.trace_window));
+  std::size_t trace_bytes = 0;
+  if (!options.trace_file.empty()) {
+    const std::string trace = ncube::trace_to_json(result, options.trace_window);
+    trace_bytes = trace.size();
+    outputs.write("--trace", trace);
+  }
   if (!options.image_file.empty() && result.status == ncube::RunStatus::kOk)  // the simulated phase's picture if it ran
     outputs.write("--image", ncube::encode_png(result.render.ran ? result.render.picture
                                                                  : ncube::render_solution(
@@ -302,10 +355,19 @@ int simulate(int argc, char** argv) {
                                                          options.config.render.width,
                                                          options.config.render.height)));
   outputs.commit();
-  if (!options.quiet)
+  if (!options.quiet) {
     for (const ncube::OutputFiles::Output& written : outputs.written())
-      std::fprintf(outputs.uses_standard_output() ? stderr : stdout, "written               %s (%s)\n",
-                   written.path.c_str(), written.option.c_str());
+      std::fprintf(outputs.uses_standard_output() ? stderr : stdout, "written               %s (%s)%s\n",
+                   ncube::shown_text(written.path).c_str(), written.option.c_str(),
+                   written.option == "--trace" ? (": " + megabytes(trace_bytes)).c_str() : "");
+    // A whole run's trace grows with nodes x iterations (scene2, R=8 V=7, 20 iterations:
+    // 33 MB): past kLargeTraceBytes the user is told how to keep a part.
+    if (trace_bytes > ncube::kLargeTraceBytes)
+      std::fprintf(stderr,
+                   "simulate: warning: the trace is %s (over %s): --trace-iterations A:B and "
+                   "--trace-nodes LIST keep only those iterations and nodes\n",
+                   megabytes(trace_bytes).c_str(), megabytes(ncube::kLargeTraceBytes).c_str());
+  }
   if (result.status == ncube::RunStatus::kOutOfMemory) {
     std::fprintf(stderr, "simulate: node %d (%s processor) is out of memory: needs %.0f bytes, has %.0f\n",
                  result.out_of_memory.node, ncube::role_name(result.out_of_memory.role),

@@ -31,6 +31,13 @@ void find_simulate_inputs(SimulateOptions& options) {
   options.scene_file = find_input(options.scene_file, InputRole::kScene, root);
   config.platform_file = find_input(config.platform_file, InputRole::kPlatform, root);
   config.cost_model_file = find_input(config.cost_model_file, InputRole::kCostModel, root);
+  // A folder a model may read: as given, else from the repository (steps 1 and 2 of the rule).
+  for (std::string& folder : options.import.model_folders) {
+    std::error_code error;
+    if (!folder.empty() && folder[0] != '/' && !std::filesystem::exists(folder, error) &&
+        std::filesystem::is_directory(std::filesystem::path(root) / folder, error))
+      folder = (std::filesystem::path(root) / folder).string();
+  }
 }
 
 int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
@@ -287,7 +294,7 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   for (CLI::Option* option : import_options)
     options.import_options_given = options.import_options_given || option->count() > 0;
   if (options.scene_file.empty() && !options.check_settings && !options.platform_nodes) {
-    std::cerr << "simulate: scene is required\n(see simulate --help)\n";
+    std::cerr << "simulate: scene is required (see simulate --help)\n";
     return kExitBadInput;
   }
   for (CLI::Option* option : {trace_iterations_option, trace_nodes_option})
