@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The paper's claim 2, measured (issue 31 item 5, issue 38 items 7 and 8): the paper's
-parallelisation (receivers) against the shooter-centred schemes it replaced: `circulation`, the
-published scheme of Çapın, Aykanat & Özgüç, and `shooters`, the project's own construction kept
+parallelisation (receivers) against the shooter-centred schemes it replaced: `circulation`, built
+from the abstracts of Çapın, Aykanat & Özgüç, and `shooters`, the project's own construction kept
 as a variant; on 4 to 64 nodes, with --shooters-per-iteration swept at 16 nodes.
 
 Reads experiments/claims/schemes.yaml with the sweep tool's own loader (its validation,
@@ -53,7 +53,7 @@ ERROR_SCENES = ("cornell-box", "scene0")
 # The fixed error: 1.1 x the paper's converged element RMS at R = 4, plus the reference's own
 # error (so that the level minus that error, the band's strict end, is still reachable).
 ERROR_FACTOR = 1.1
-# The shooter-centred schemes, the published one first (it decides the claim).
+# The shooter-centred schemes, circulation first (it decides the claim).
 OPPONENTS = ("circulation", "shooters")
 PUBLISHED = "circulation"
 SWEPT_NODES = 16            # --shooters-per-iteration is swept at this node count
@@ -429,7 +429,7 @@ def smallest_fitting_R(rows, scene, scheme):
 
 
 def verdict(rows):
-    """The claim's sentence, from the figures, decided against the published opponent
+    """The claim's sentence, from the figures, decided against the circulation opponent
     (circulation) at its best S: holds when the paper's program is nowhere slower (a ratio
     within TIE of 1 counts as level; to the error, over the whole band of the reference's
     error), does not hold when it is slower everywhere, holds only where the opponent is not
@@ -445,12 +445,13 @@ def verdict(rows):
     open_ = [(c, w) for c, w in points if state[(id(c), w)] == "undecided"]
     head = ("holds" if not faster and not open_ else
             "does not hold" if faster and not level else
-            "holds only where the published scheme is not faster" if faster else
+            "holds only where circulation is not faster" if faster else
             "is not decided")
     where = lambda c, w: (f"{c['scene']} at {c['nodes']} nodes to {w} ({fmt_ratio(c, w)}, "
                           f"S = {c['S'][w]})")
     parts = ["Claim 2 (no need to distribute radiosity values after the form factors), held "
-             f"against the published shooter-centred scheme (circulation, at its best S), "
+             f"against circulation, a shooter-centred scheme built from the abstracts of Çapın, "
+             f"Aykanat & Özgüç (at its best S), "
              f"**{head}**: on {len(pairs)} node count{'s' if len(pairs) > 1 else ''} of "
              + " and ".join(sorted({c['scene'] for c in pairs}))
              + f", the paper's program is not slower (within {100 * TIE:.0f} %) at "
@@ -511,8 +512,8 @@ def markdown(rows, levels, host=None):
     cap = 4 * 2**20
     out = ["## Claim 2: receivers against shooter-centred schemes", "",
            "Written by `analysis/claims_schemes.py` from `experiments/claims/schemes.yaml` "
-           "(docs/model.md, \"The shooter-centred scheme\" and \"The published opponent\"). "
-           "`receivers`: the paper's program. `circulation`: the published opponent, Çapın, "
+           "(docs/model.md, \"The shooter-centred scheme\" and \"The circulation opponent\"). "
+           "`receivers`: the paper's program. `circulation`: the opponent, built from the abstracts of Çapın, "
            "Aykanat & Özgüç's scheme (Parallel Rendering Symposium 1993; Computers & Graphics "
            "1996) as far as its abstracts say it: static shares of the patches, every node's "
            "best patch shot at once, the light distributed round a ring (what is sourced and "
@@ -618,7 +619,7 @@ def markdown(rows, levels, host=None):
             "order of shots, the messages and the memory differ; the references of "
             "`analysis/reference/` for the fixed error.", "",
             "**Threats to validity.**", "",
-            "- The published scheme is read from abstracts only (no paper text was "
+            "- The opponent is built from abstracts only (no paper text was "
             "reachable): its static assignment, its ring, several shooters at once and the "
             "circulated light distribution are sourced; the shares (the paper's partition by "
             "elements), the whole scene's geometry on every node, the candidates' ring and the "

@@ -1,5 +1,5 @@
-// A node of the published shooter-centred scheme held against the paper's (claim 2;
-// --parallelisation circulation; docs/model.md, "The published opponent"): Çapın, Aykanat &
+// A node of the shooter-centred scheme built from Çapın et al.'s abstracts, held against the paper's (claim 2;
+// --parallelisation circulation; docs/model.md, "The circulation opponent"): Çapın, Aykanat &
 // Özgüç's parallel progressive refinement on ring-connected and hypercube multicomputers
 // (Parallel Rendering Symposium 1993; Computers & Graphics 20(2) 1996: "a parallel
 // progressive radiosity algorithm based on patch data circulation"), as far as its abstracts

@@ -1,5 +1,5 @@
 // The two circulations of Çapın, Aykanat & Özgüç's scheme (--parallelisation circulation;
-// docs/model.md, "The published opponent"): the nodes form a ring embedded in the hypercube
+// docs/model.md, "The circulation opponent"): the nodes form a ring embedded in the hypercube
 // (their iPSC/2 runs were "ring-embedded"; a Gray-code order makes every ring step one hop
 // when R is a power of two), and data travel round it one neighbour step at a time.
 //   - gather: every node's best candidate goes round the ring (R - 1 steps, one shooter

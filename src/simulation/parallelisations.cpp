@@ -229,8 +229,8 @@ const MethodRegistry<Parallelisation>& parallelisations() {
            check_shooters, plan_shooter_memory, launch_shooters, collect_shooters,
            "increments_"},
           {"circulation",
-           "Capin, Aykanat & Ozguc's published shooter-centred scheme (Parallel Rendering "
-           "Symposium 1993): static shares of the patches, every node's best patch shot at "
+           "a shooter-centred scheme built from the abstracts of Capin, Aykanat & Ozguc (Parallel "
+           "Rendering Symposium 1993, after the paper; what is assumed: docs/model.md): static shares of the patches, every node's best patch shot at "
            "once, the light distributed by circulating each node's increments round a ring; "
            "V = 0",
            check_circulation,
