@@ -26,7 +26,8 @@ from ncube.paths import ANALYSIS  # noqa: E402
 # page -> the script that writes it (its module has opening(tables)).
 PAGES = {"report.md": "report", "unknowns.md": "unknowns", "machines.md": "machines",
          "adaptive.md": "adaptive", "predictions.md": "predictions",
-         "memory-sensitivity.md": "memory_sensitivity", "patch-order.md": "patch_order"}
+         "memory-sensitivity.md": "memory_sensitivity", "patch-order.md": "patch_order",
+         "claims.md": "claims"}
 
 
 def reopened(path):

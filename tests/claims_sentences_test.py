@@ -71,7 +71,9 @@ for scene, measure, placement, n, ratio, low, high, said, direction in rows:
     if min(abs(low - 1), abs(high - 1)) > 0.005:
         check(direction == claim_one.direction(low, high),
               f"claims.md {scene} {measure} {placement} N={n}: says '{direction}' of [{low}, {high}]")
-sentences = [line[3:] for line in page.splitlines() if line.startswith("1. ")]
+# After the page's opening (its own numbered sentences: tests/openings_test.py checks them).
+body = page.split("<!-- end of the opening -->", 1)[-1]
+sentences = [line[3:] for line in body.splitlines() if line.startswith("1. ")]
 check(len(sentences) == 1, "one first-claim sentence in analysis/claims.md")
 if rows and sentences:
     said = sentences[0].split(" (")[0]
