@@ -873,7 +873,8 @@ def main():
     parser.add_argument("--figures", type=Path, default=FIGURES,
                         help=f"the folder of its figure (default: {rel(FIGURES)}/)")
     parser.add_argument("--partial", action="store_true",
-                        help="write the page even when cells have no result (shown as not run)")
+                        help="write the page even when cells have no result (shown as not run; "
+                             "then --output and --figures elsewhere than the committed page's)")
     args = parser.parse_args()
     results_dir = args.results.resolve()
     try:
@@ -892,13 +893,16 @@ def main():
     study = Study(sweep, [e for e in found if e.method not in v0_only])
     others = [e for e in found if e.method in v0_only]
     missing = sum(e.status == "missing" for e in found)
+    page.check_outputs("machines.py", [args.output, args.figures / FIGURE],
+                       committed=[OUTPUT, FIGURES / FIGURE], complete=missing == 0,
+                       how="give --output and --figures elsewhere")
     path = figure(study, args.figures)
     lines = (header(study, args, missing, others) + tables_section(study) + best_section(study)
              + communication_section(study) + bottleneck_section(study)
              + memory_section(study) + v0_section(study, others)
              + figure_section(study, path, args.output)
              + porting_section(study))
-    args.output.write_text("\n".join(lines).rstrip() + "\n")
+    page.write(args.output, "\n".join(lines).rstrip() + "\n")
     print(f"wrote {args.output}, {path}" + (f"; {missing} cells not run" if missing else ""))
 
 
