@@ -513,6 +513,9 @@ def main():
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
     args = parser.parse_args()
+    if not args.sweeps:   # nothing to measure: the page would be empty
+        page.refuse("claims.py", "--sweeps names no sweep file (the claims' cells are measured "
+                                 "from at least one)")
     page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
                   f"without a result in {page.shown(args.results)}/claims/ itself", announce=False)
     try:

@@ -69,8 +69,6 @@ done
 empty="$work/empty"; mkdir -p "$empty"
 refuses analysis/report.py --partial --results "$empty"
 refuses analysis/machines.py --partial --results "$empty"
-refuses analysis/machines.py --partial --results "$empty" --output experiments/machines/table4.yaml \
-  --figures "$work/figures"
 refuses analysis/unknowns.py --summary analysis/unknowns-worlds.json
 refuses analysis/unknowns.py --summary analysis/unknowns-worlds.json --out-dir analysis
 mkdir -p "$work/elsewhere"
@@ -85,6 +83,9 @@ expect_code() {  # CODE SCRIPT [ARGS...]: that exit, one line naming the case, t
   [ "$(printf '%s\n' "$out" | wc -l)" = 1 ] || fail "$* said more than one line: $out"
   [ -z "$(git -C "$clone" status --porcelain)" ] || { fail "$* changed the tree"; git -C "$clone" checkout --quiet -- . ; }
 }
+expect_code 2 analysis/machines.py --partial --results "$empty" --output experiments/machines/table4.yaml \
+  --figures "$work/figures"
+[ ! -e "$work/figures" ] || fail "machines.py wrote its figure before refusing its --output"
 expect_code 5 analysis/machines.py --partial --results "$empty" --output "$work" --figures "$work/figures"
 touch "$work/a-file"
 expect_code 5 analysis/unknowns.py --summary analysis/unknowns-worlds.json --out-dir "$work/a-file"

@@ -5,7 +5,7 @@
 #    patch with a luminance (each against a well-formed pair that compares);
 #  - analysis/cycles/cycles_answers.py: a scene nested deeply, a NaN vertex (refused before
 #    Blender is looked for);
-#  - claims.py and claims_hemicube.py: --jobs 0, -1 and 0x10;
+#  - claims.py and claims_hemicube.py: --jobs 0, -1 and 0x10; claims.py with --sweeps empty;
 #  - experiments/sweep --check without a simulator built (the platform's node count estimated
 #    from its dimension): 1e9, 1e400, 3.5, -1 and "7" refused before any power is computed.
 root="$2"
@@ -68,6 +68,11 @@ for script in claims claims_hemicube; do
     grep -q "argument --jobs" "$work/err" || fail "$script.py --jobs $jobs: $(cat "$work/err")"
   done
 done
+
+# No sweep file at all: one line, not matplotlib's error about zero columns.
+expect 2 "--sweeps" $python "$root/analysis/claims.py" --sweeps --pictures --no-schemes --no-hemicube \
+  --results "$work/none" --out "$work/c.md" --figure "$work/c.png"
+[ ! -e "$work/c.md" ] && [ ! -e "$work/c.png" ] || fail "claims.py wrote a page without sweeps"
 
 # The sweep's node count estimated without a simulator (a fresh clone): the dimension bounded.
 printf 'measure: total_seconds\noptions: {iterations: 1}\ngrid: {scene: [scene0], R: [1], platform: [p.json]}\n' \

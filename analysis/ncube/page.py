@@ -45,8 +45,9 @@ def check_outputs(script, outputs, committed=(), complete=True, how="name anothe
     for path in outputs:
         try:
             output_file.check(path)
-        except output_file.OutputIsInputError as e:
-            refuse(script, f"an output {e}")
+        except output_file.OutputIsInputError as e:   # refusing_outputs' own line
+            print(f"{script}: an output {e}; not written", file=sys.stderr, flush=True)
+            sys.exit(REFUSED)
         except output_file.OutputPathError as e:
             print(f"{script}: {e}; nothing written", file=sys.stderr, flush=True)
             sys.exit(REFUSED if "symbolic links" in str(e) else CANNOT_WRITE)
