@@ -2,9 +2,11 @@
 # Every program and script the repository ships is tried by a test (tests/robustness/
 # executables.py: a new one fails here until it is listed with the tests that try it, or as
 # open with why); and every Python one that takes argparse options is tried from its own
-# option definitions (tests/robustness/argparse_options.py): each count option given "0x10" and
-# "1e400" ends in exit 2 with argparse's message naming the option, no traceback, within 30 s,
-# and the tree unchanged (git status).
+# option definitions (tests/robustness/argparse_options.py): each count option given "0x10"
+# ends in exit 2 with argparse's message naming the option, no traceback, within 30 s, and the
+# tree unchanged (git status). One hostile value a count: "1e400", "nan" and "-1" meet the same
+# int() in argparse; the range each count must hold is the script's own (python_inputs_test).
+# About 70 s on a loaded 2-core host, most of it the programs' imports.
 root="$2"
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
@@ -35,7 +37,7 @@ import json, sys
 for option in json.load(sys.stdin):
     if option["type"] in ("int", "whole_number") and option["nargs"] is None:
         print(option["flags"][-1])'); do
-    for value in 0x10 1e400; do
+    for value in 0x10; do
       (cd "$work" && timeout 30 /usr/bin/python3 "$root/$program" "$flag" "$value" \
          >/dev/null 2>"$work/err" </dev/null); code=$?
       tried=$((tried + 1))
@@ -46,5 +48,5 @@ for option in json.load(sys.stdin):
   done
 done
 [ "$(git -C "$root" status --porcelain)" = "$before" ] || fail "the tree changed"
-echo "shipped_executables_test: $tried count options tried with hex and 1e400"
+echo "shipped_executables_test: $tried count options tried with hex"
 exit "$failed"
