@@ -31,7 +31,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
-from ncube import accuracy, claim_one, error_parts, output_file, page, paths, plotting, sweep  # noqa: E402
+from ncube import (accuracy, claim_one, error_parts, output_file, page, paths, plotting,  # noqa: E402
+                   runner, sweep)
 from ncube import opening as op  # noqa: E402
 
 ROOT = paths.ROOT
@@ -497,7 +498,7 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results")
-    parser.add_argument("--jobs", type=int, default=2, help="cells run at once")
+    parser.add_argument("--jobs", type=runner.bounded(1, 256), default=2, help="cells run at once (1 to 256)")
     parser.add_argument("--sweeps", nargs="*", type=Path,
                         default=sorted((ROOT / "experiments" / "claims").glob("accuracy*.yaml")))
     parser.add_argument("--pictures", nargs="*", type=Path,
@@ -513,6 +514,9 @@ def main():
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
     args = parser.parse_args()
+    if not args.sweeps:   # nothing to measure: the page would be empty
+        page.refuse("claims.py", "--sweeps names no sweep file (the claims' cells are measured "
+                                 "from at least one)")
     page.will_run("claims.py", f"the cells of {', '.join(page.shown(f) for f in args.sweeps)} "
                   f"without a result in {page.shown(args.results)}/claims/ itself", announce=False)
     try:

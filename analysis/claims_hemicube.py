@@ -51,7 +51,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ncube import accuracy, input_file, page, paths, sweep  # noqa: E402
+from ncube import accuracy, input_file, page, paths, runner, sweep  # noqa: E402
 
 ROOT = paths.ROOT
 SWEEP = ROOT / "experiments" / "claims" / "hemicube.yaml"
@@ -481,7 +481,7 @@ def section(results_root, jobs=2, sweep_file=SWEEP):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=ROOT / "results")
-    parser.add_argument("--jobs", type=int, default=2, help="cells run at once")
+    parser.add_argument("--jobs", type=runner.bounded(1, 256), default=2, help="cells run at once (1 to 256)")
     parser.add_argument("--sweep", type=Path, default=SWEEP)
     args = parser.parse_args()
     page.will_run("claims_hemicube.py", f"the cells of {page.shown(args.sweep)} without a result "

@@ -965,7 +965,8 @@ def main():
     parser.add_argument("--figures", type=Path, default=FIGURES,
                         help=f"the folder of its figure (default: {rel(FIGURES)}/)")
     parser.add_argument("--partial", action="store_true",
-                        help="write the page even when cells have no result (shown as not run)")
+                        help="write the page even when cells have no result (shown as not run; "
+                             "then --output and --figures elsewhere than the committed page's)")
     args = parser.parse_args()
     results_dir = args.results.resolve()
     try:
@@ -984,6 +985,9 @@ def main():
     study = Study(sweep, [e for e in found if e.method not in v0_only])
     others = [e for e in found if e.method in v0_only]
     missing = sum(e.status == "missing" for e in found)
+    page.check_outputs("machines.py", [args.output, args.figures / FIGURE],
+                       committed=[OUTPUT, FIGURES / FIGURE], complete=missing == 0,
+                       how="give --output and --figures elsewhere")
     path = figure(study, args.figures)
     lines = (header(study, args, missing, others) + tables_section(study) + best_section(study)
              + communication_section(study) + bottleneck_section(study)
@@ -991,7 +995,7 @@ def main():
              + figure_section(study, path, args.output)
              + porting_section(study))
     body = "\n".join(lines).rstrip() + "\n"
-    args.output.write_text(op.with_opening(body, opening(op.tables(body)), SCRIPT))
+    page.write(args.output, op.with_opening(body, opening(op.tables(body)), SCRIPT))
     print(f"wrote {args.output}, {path}" + (f"; {missing} cells not run" if missing else ""))
 
 

@@ -2,10 +2,12 @@
 """Compares the simulated sweeps with the paper's five tables: writes analysis/report.md and the
 PNG figures under analysis/figures/.
 
-usage: python3 analysis/report.py [--results DIR] [--partial]
+usage: python3 analysis/report.py [--results DIR] [--partial] [--out-dir DIR]
 
 Without a result for every cell of the paper sweeps it refuses in one line, writing nothing
-(ncube.page); --partial writes the report anyway, with the missing cells "not run".
+(ncube.page); --partial writes the report anyway, with the missing cells "not run", into
+--out-dir (report.md and figures/ there; the committed page in analysis/ is written only by a
+complete run).
 
 Inputs: analysis/paper_tables.json (the paper's tables), the paper sweeps as run into DIR
 (DIR/plan.json, else experiments/*.json), their result files, platforms/*.json (fitted
@@ -175,9 +177,16 @@ def main():
     parser.add_argument("--results", type=Path, default=ROOT / "results",
                         help="the results folder of experiments/reproduce (default: results/)")
     parser.add_argument("--partial", action="store_true",
-                        help="write the report even when cells have no result (shown as not run)")
+                        help="write the report even when cells have no result (shown as not run; "
+                             "then into --out-dir)")
+    parser.add_argument("--out-dir", type=Path, default=ANALYSIS,
+                        help="where report.md and figures/ go (default analysis/, the committed "
+                             "report: a complete run only)")
     args = parser.parse_args()
-    figures.FIGURES = ANALYSIS / "figures"
+    report = args.out_dir / "report.md"
+    figures.FIGURES = args.out_dir / "figures"
+    if args.out_dir.exists() and not args.out_dir.is_dir():
+        page.refuse("report.py", f"--out-dir {args.out_dir}: not a folder")
     inputs = load_inputs(args.results.resolve())
     needed = sorted({c.key for c in inputs.cells if c.key} |
                     ({inputs.timeline.key} if inputs.timeline else set()))
@@ -187,13 +196,19 @@ def main():
     if not args.partial:
         page.require_results("report.py", missing, len(needed), args.results,
                              "run experiments/reproduce first")
+    # Its figures' names are the committed ones (analysis/figures/*.png): checked as a folder.
+    page.check_outputs("report.py", [report], committed=[REPORT], complete=not missing,
+                       how="give --out-dir")
+    if missing and figures.FIGURES.resolve() == (ANALYSIS / "figures").resolve():
+        page.refuse("report.py", "a page of an incomplete run would replace the committed "
+                                 "figures in analysis/figures/: give --out-dir")
     findings_lines, findings = findings_section(inputs)
     lines = (header_section(inputs) + tables_section(inputs) + summary_section(inputs) +
              headline_section(inputs, findings) + findings_lines +
              figures.figures_section(inputs))
     body = "\n".join(lines).rstrip() + "\n"
-    page.write(REPORT, op.with_opening(body, opening(op.tables(body)), SCRIPT))
-    print(f"wrote {relative(REPORT)}: " + ", ".join(f"{f.name} {f.status}" for f in findings))
+    page.write(report, op.with_opening(body, opening(op.tables(body)), SCRIPT))
+    print(f"wrote {relative(report)}: " + ", ".join(f"{f.name} {f.status}" for f in findings))
 
 
 if __name__ == "__main__":

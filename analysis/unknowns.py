@@ -29,7 +29,7 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 import numpy as np  # noqa: E402
 
 from ncube import opening as op  # noqa: E402
-from ncube import output_file  # noqa: E402
+from ncube import input_file, output_file  # noqa: E402
 from ncube import page as page_rule  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, ROOT  # noqa: E402
 
@@ -573,6 +573,31 @@ def figure(summary, path):
     save(fig, path)
 
 
+SUMMARY_BYTES = 64 << 20   # a summary of thousands of worlds is a few MB
+
+
+def check_summary(path, summary):
+    """A saved summary's shape and numbers: every world's cells finite numbers above 0
+    (simulated seconds, speedups and ratios: their logarithms are taken) or null (not run),
+    else an InputFileError naming file, world and cell."""
+    if not isinstance(summary, dict) or not isinstance(summary.get("worlds"), list) \
+            or not isinstance(summary.get("cells"), list):
+        raise input_file.InputFileError(f"{path}: summary: not an object with \"cells\" and "
+                                        "\"worlds\" lists")
+    for index, world in enumerate(summary["worlds"]):
+        cells = world.get("cells") if isinstance(world, dict) else None
+        if not isinstance(cells, dict) or not isinstance(world.get("status"), dict):
+            raise input_file.InputFileError(f"{path}: world {index}: no \"cells\" and "
+                                            "\"status\" objects")
+        for key, value in cells.items():
+            if value is None:
+                continue
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or value != value \
+                    or value in (float("inf"), float("-inf")) or value <= 0:
+                raise input_file.InputFileError(
+                    f"{path}: world {index}: cell {key}: {value!r} is not a finite number above 0")
+
+
 @page_rule.refusing_outputs("unknowns.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -584,17 +609,28 @@ def main():
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--slurm", action="store_true", help="run the cells as Slurm jobs")
     parser.add_argument("--summary", type=Path, help="write the page from this saved summary")
-    parser.add_argument("--out-dir", type=Path, default=ANALYSIS,
-                        help="where unknowns.md, unknowns-worlds.json and figures/ go")
+    parser.add_argument("--out-dir", type=Path, default=None,
+                        help="where unknowns.md, unknowns-worlds.json and figures/ go (default "
+                             "analysis/, the committed page: only for a whole study; --summary "
+                             "needs it named)")
     parser.add_argument("--label", default=None,
                         help="a line at the top of the page (default: none for the study, a "
                              "warning for fewer worlds than experiments/unknowns/study.json's)")
     args = parser.parse_args()
     started = time.time()
     study = args.results.resolve()
+    if args.summary and args.out_dir is None:
+        print("unknowns: --summary writes only where --out-dir says (the committed page in "
+              "analysis/ is written by a whole study); nothing written", file=sys.stderr)
+        return 2
+    out = ANALYSIS if args.out_dir is None else args.out_dir
+    if out.exists() and not out.is_dir():
+        print(f"unknowns: --out-dir {out}: not a folder; nothing written", file=sys.stderr)
+        return 5
     try:
         if args.summary:
-            summary = json.loads(args.summary.read_text())
+            summary = input_file.read_json(args.summary, "summary", SUMMARY_BYTES)
+            check_summary(args.summary, summary)
         else:
             if args.run:
                 sweep_args = ["--slurm"] if args.slurm else ["--cores", str(args.cores)]
@@ -609,6 +645,9 @@ def main():
         print(f"unknowns: {e}: run analysis/unknowns.py --run first; nothing written",
               file=sys.stderr)
         return 2
+    except input_file.InputFileError as e:
+        print(f"unknowns: {e}; nothing written", file=sys.stderr)
+        return 2
     if len(summary["worlds"]) < 3:
         print("unknowns: fewer than 2 drawn worlds: no interval; nothing written",
               file=sys.stderr)
@@ -620,8 +659,17 @@ def main():
                  f"({study_defaults['worlds']} worlds, {STUDY.relative_to(ROOT)}): "
                  "its intervals are not the study's.")
     figure_name = "unknowns_intervals.png"
-    out = args.out_dir
-    (out / "figures").mkdir(parents=True, exist_ok=True)
+    if out.resolve() == ANALYSIS.resolve() and (args.summary or drawn_count < study_defaults["worlds"]):
+        print(f"unknowns: {drawn_count} drawn worlds{' from a saved summary' if args.summary else ''}"
+              f" would replace the committed page (analysis/unknowns.md, the study of "
+              f"{study_defaults['worlds']} worlds): give --out-dir; nothing written", file=sys.stderr)
+        return 2
+    try:
+        (out / "figures").mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        print(f"unknowns: --out-dir {out}: cannot make its figures/ folder: {e.strerror or e}; "
+              "nothing written", file=sys.stderr)
+        return 5
     if not args.summary:
         output_file.write(out / "unknowns-worlds.json",
                           json.dumps(summary, indent=1, sort_keys=True) + "\n")

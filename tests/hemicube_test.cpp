@@ -132,6 +132,69 @@ std::vector<double> point_form_factors_with(HemicubeBackFaces back_faces, int n,
   return f;
 }
 
+TEST(Hemicube, GeometryBelowTheShootersPlaneReachesNoFace) {
+  // What lies below the shooter's tangent plane is behind the shooter: its form factor is 0
+  // (the integrand's cos at the shooter is negative there), and the side faces, which stop at
+  // the eye's plane (z = 0), must give it no cell. Walls facing the eye beyond each of the
+  // four side faces, from just under the plane down, a floor under the eye and a wall crossing
+  // behind it: 0 on every face, and none hides a ceiling above the plane. The same walls lifted
+  // above the plane get the point-to-polygon contour integral (they do reach the side faces).
+  const double top = -1e-6, bottom = -1.5;
+  const std::vector<Polygon> below = {
+      Polygon::quad({2, -1, bottom}, {2, -1, top}, {2, 1.5, top}, {2, 1.5, bottom}),     // +x
+      Polygon::quad({-2, 1.5, bottom}, {-2, 1.5, top}, {-2, -1, top}, {-2, -1, bottom}),  // -x
+      Polygon::quad({-1, 2, bottom}, {1.5, 2, bottom}, {1.5, 2, top}, {-1, 2, top}),       // +y
+      Polygon::quad({1.5, -2, bottom}, {-1, -2, bottom}, {-1, -2, top}, {1.5, -2, top}),   // -y
+      Polygon::quad({-3, -3, -0.5}, {3, -3, -0.5}, {3, 3, -0.5}, {-3, 3, -0.5}),           // floor
+      Polygon::quad({3, 0.5, bottom}, {3, 0.5, top}, {-3, 0.5, top}, {-3, 0.5, bottom})};  // crossing
+  std::vector<Polygon> above;  // the four walls lifted to z from 1e-6 to 1.5
+  for (std::size_t k = 0; k < 4; ++k) {
+    Polygon lifted = below[k];
+    for (Vec3& vertex : lifted.vertices) vertex.z += 1.5 + 2e-6;
+    above.push_back(lifted);
+  }
+  const Polygon sky = ceiling(-3, 3, -3, 3, 1.0);
+  for (const int n : {20, 100}) {
+    for (std::size_t k = 0; k < below.size(); ++k) {
+      ASSERT_LT(glm::dot(below[k].normal(), below[k][0] - kEye), 0.0) << k;  // facing the eye
+      for (const HemicubeBackFaces back_faces :
+           {HemicubeBackFaces::kBlock, HemicubeBackFaces::kPass}) {
+        WorkCounts counts;
+        EXPECT_EQ(point_form_factors_with(back_faces, n, {receiver(below[k])}, {}, counts)[0], 0.0)
+            << "polygon " << k << ", N = " << n;
+        // As an occluder it hides nothing above the plane: the ceiling gets all its cells.
+        WorkCounts with, without;
+        EXPECT_EQ(point_form_factors_with(back_faces, n, {receiver(sky)}, {receiver(below[k])}, with)[0],
+                  point_form_factors_with(back_faces, n, {receiver(sky)}, {}, without)[0])
+            << "polygon " << k << ", N = " << n;
+      }
+    }
+  }
+  for (const Polygon& wall : above) {
+    const double exact = point_to_polygon_form_factor(kEye, kUp, wall);
+    EXPECT_GT(exact, 0.01);
+    WorkCounts counts;
+    EXPECT_NEAR(point_form_factors_with(HemicubeBackFaces::kBlock, 400, {receiver(wall)}, {}, counts)[0],
+                exact, 1e-2 * exact);
+  }
+  // A tilted shooter: the plane through the eye with normal (1, 1, 1) / sqrt 3. A triangle
+  // wholly on its lower side (every vertex's height along the normal negative), spread round
+  // the eye so that it projects towards several side faces, gets nothing.
+  const Vec3 normal = glm::normalize(Vec3(1, 1, 1));
+  const Vec3 tangent = glm::normalize(Vec3(1, -1, 0));
+  const Polygon tilted = Polygon::triangle({3, -3, -0.2}, {-3, 3, -0.2}, {-2, -2, 1});
+  for (int k = 0; k < 3; ++k) ASSERT_LT(glm::dot(tilted[k] - kEye, normal), 0.0);
+  const Polygon facing = glm::dot(tilted.normal(), tilted[0] - kEye) < 0
+                             ? tilted
+                             : Polygon::triangle(tilted[2], tilted[1], tilted[0]);
+  ASSERT_LT(glm::dot(facing.normal(), facing[0] - kEye), 0.0);
+  std::vector<double> f(1, 0.0);
+  WorkCounts counts;
+  render_hemicube(kEye, normal, tangent, {receiver(facing)}, {}, DeltaFormFactors(100), 1.0, f,
+                  counts);
+  EXPECT_EQ(f[0], 0.0);
+}
+
 TEST(Hemicube, ABackFacingOccluderBlocksOrPassesAsChosen) {
   // A receiver seen through an occluder whose back faces the eye (the Cornell box's ceiling
   // over its light): block gives 0; pass gives the unoccluded cells exactly, which converge

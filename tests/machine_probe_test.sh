@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # build/machine_probe (src/tools/machine_probe_main.cpp, docs/machines/probe.md):
 #  - its errors: no --out (exit 2), --out a folder (exit 5), a --network that is not a platform
-#    of platforms/machines/ (exit 2, no file left);
+#    of platforms/machines/, or that ./simulate would refuse (an entity, a DTD of its own, a
+#    <config> setting naming a file, an attribute naming a file), a count not in decimal
+#    (--repeats 0x10, 010): exit 2, one line, no file left;
+#  - a --network whose path holds "-->" (copied into the file's comment): the file it writes is
+#    well-formed XML and loads in ./simulate (section 3 runs on it);
 #  - the file it writes loads and runs, with the seven measured rates (the hemicube's two,
 #    projection_speed and raster_speed, among them, with its 6 runs) read back into the
 #    result's provenance and each rate's measurement in the file: the fits' runs (median of the
@@ -33,14 +37,44 @@ grep -q -- "--out" "$tmp/err" || fail "no --out: the message does not name --out
 [[ $? == 2 ]] || fail "--network a scene: not exit 2"
 grep -q "scene0.json" "$tmp/err" || fail "--network a scene: the message does not name the file"
 [[ ! -e "$tmp/x.xml" ]] || fail "--network a scene: a file was left"
+network="$root/platforms/machines/cluster-2024.xml"
+doctype='<!DOCTYPE platform SYSTEM "https://simgrid.org/simgrid.dtd">'
+refused() {  # refused WHAT WORD ARGS...: exit 2, one line naming WORD, no file left
+  local what="$1" word="$2"; shift 2
+  "$probe" --out "$tmp/x.xml" "$@" >/dev/null 2>"$tmp/err"
+  local code=$?
+  [[ $code == 2 ]] || fail "$what: exit $code, not 2: $(cat "$tmp/err")"
+  # one line (an option's error is followed by the parser's "(see machine_probe --help)")
+  [[ $(grep -vc '^(see machine_probe --help)$' "$tmp/err") == 1 ]] || fail "$what: not one line: $(cat "$tmp/err")"
+  grep -qF -- "$word" "$tmp/err" || fail "$what: the message does not name $word: $(cat "$tmp/err")"
+  [[ ! -e "$tmp/x.xml" ]] || fail "$what: a file was left"
+}
+refused "--repeats 0x10" "0x10" --repeats 0x10
+refused "--repeats 010" "010" --repeats 010
+sed "s|$doctype|<!DOCTYPE platform SYSTEM \"https://simgrid.org/simgrid.dtd\" [ <!ENTITY s \"1f\"> ]>|" \
+  "$network" > "$tmp/entity.xml"
+refused "a network declaring an entity" "entity.xml" --repeats 3 --network "$tmp/entity.xml"
+sed "s|$doctype|<!DOCTYPE platform SYSTEM \"https://simgrid.org/simgrid.dtd\" [ <!ELEMENT x ANY> ]>|" \
+  "$network" > "$tmp/subset.xml"
+refused "a network with a DTD of its own" "subset.xml" --repeats 3 --network "$tmp/subset.xml"
+sed 's|^\(<platform[^>]*>\)|\1<config><prop id="tracing/filename" value="/tmp/x.trace"/></config>|' \
+  "$network" > "$tmp/config.xml"
+grep -q 'tracing/filename' "$tmp/config.xml" || fail "the <config> case was not made"
+refused "a network whose <config> names a trace file" "tracing/filename" --repeats 3 --network "$tmp/config.xml"
+sed 's|speed="\([^"]*\)"|speed="\1" speed_file="/etc/passwd"|' "$network" > "$tmp/file.xml"
+refused "a network naming a file" "speed_file" --repeats 3 --network "$tmp/file.xml"
 set -e
+# The network the file is made of, in a folder whose name would close an XML comment.
+mkdir -p "$tmp/platforms/a-->b"
+cp "$network" "$tmp/platforms/a-->b/cluster-2024.xml"
+network="$tmp/platforms/a-->b/cluster-2024.xml"
 
 # 2. The file.
 # A fit the host disturbed ends in exit 4 with nothing written (docs/machines/probe.md): on a
 # 2-core host running the suite beside it, probed again, at most three times in all.
 for attempt in 1 2 3; do
   set +e
-  "$probe" --out "$tmp/probed.xml" --repeats 3 >"$tmp/said" 2>"$tmp/err"
+  "$probe" --out "$tmp/probed.xml" --repeats 3 --network "$network" >"$tmp/said" 2>"$tmp/err"
   code=$?
   set -e
   [[ $code == 4 ]] || break
@@ -61,6 +95,9 @@ grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
 [[ $(grep -c "root mean square residual" "$tmp/probed.xml") == 3 ]] ||
   fail "the file does not give the three fits' residuals"
 grep -q 'topo_parameters="2;16,4;1,4;1,4"' "$tmp/probed.xml" || fail "not the 2024 cluster's network"
+grep -qF 'platforms/a- ->b/cluster-2024.xml' "$tmp/probed.xml" || fail "the network's path is not in the comment, made safe"
+/usr/bin/python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' "$tmp/probed.xml" ||
+  fail "the written file is not well-formed XML"
 
 # 3. The prediction: least of 2 CPU times for 1 and for 2 iterations.
 /usr/bin/python3 - "$simulate" "$root" "$tmp" "$tolerance" <<'PY'

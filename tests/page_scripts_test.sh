@@ -64,5 +64,47 @@ for script in analysis/openings.py docs/model_tables.py docs/options_table.py do
               scenes/generate.py; do
   unchanged "$script"
 done
+
+# A page of an incomplete run never replaces the committed one: --partial and --summary write
+# only where they are told (--out-dir, --output/--figures), and every output is checked before
+# any is written (not an input, not a folder).
+empty="$work/empty"; mkdir -p "$empty"
+refuses analysis/report.py --partial --results "$empty"
+refuses analysis/machines.py --partial --results "$empty"
+refuses analysis/unknowns.py --summary analysis/unknowns-worlds.json
+refuses analysis/unknowns.py --summary analysis/unknowns-worlds.json --out-dir analysis
+mkdir -p "$work/elsewhere"
+out=$(cd "$clone" && /usr/bin/python3 analysis/report.py --partial --results "$empty" --out-dir "$work/elsewhere" 2>&1) ||
+  fail "report.py --partial --out-dir: $out"
+[ -s "$work/elsewhere/report.md" ] && [ -n "$(ls "$work/elsewhere/figures")" ] ||
+  fail "report.py --partial --out-dir wrote no report or figures there"
+expect_code() {  # CODE SCRIPT [ARGS...]: that exit, one line naming the case, the tree unchanged
+  local want="$1" out code; shift
+  out=$(cd "$clone" && timeout 60 /usr/bin/python3 "$@" 2>&1 </dev/null); code=$?
+  [ "$code" = "$want" ] || fail "$* exited $code, not $want: $out"
+  [ "$(printf '%s\n' "$out" | wc -l)" = 1 ] || fail "$* said more than one line: $out"
+  [ -z "$(git -C "$clone" status --porcelain)" ] || { fail "$* changed the tree"; git -C "$clone" checkout --quiet -- . ; }
+}
+expect_code 2 analysis/machines.py --partial --results "$empty" --output experiments/machines/table4.yaml \
+  --figures "$work/figures"
+[ ! -e "$work/figures" ] || fail "machines.py wrote its figure before refusing its --output"
+expect_code 5 analysis/machines.py --partial --results "$empty" --output "$work" --figures "$work/figures"
+touch "$work/a-file"
+expect_code 5 analysis/unknowns.py --summary analysis/unknowns-worlds.json --out-dir "$work/a-file"
+# The summary through the input gate: a device, a FIFO, deep nesting, NaN, a negative cell.
+/usr/bin/python3 - "$clone/analysis/unknowns-worlds.json" "$work" <<'PY'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+key = next(iter(summary["worlds"][1]["cells"]))
+for name, value in (("nan", float("nan")), ("negative", -1.0)):
+    summary["worlds"][1]["cells"][key] = value
+    open(f"{sys.argv[2]}/{name}.json", "w").write(json.dumps(summary))
+open(f"{sys.argv[2]}/deep.json", "w").write("[" * 100000 + "]" * 100000)
+PY
+mkfifo "$work/fifo"
+for summary in /dev/zero "$work/fifo" "$work/deep.json" "$work/nan.json" "$work/negative.json"; do
+  expect_code 2 analysis/unknowns.py --summary "$summary" --out-dir "$work/elsewhere"
+done
+[ ! -e "$work/elsewhere/unknowns.md" ] || fail "unknowns.py wrote a page from a refused summary"
 [ "$failed" = 0 ] && echo "page_scripts_test: passed"
 exit "$failed"

@@ -9,6 +9,9 @@
 # or source this file, then
 #   slurm_cluster_start DIR   # exports SLURM_CONF; returns 1 with the reason in SLURM_CLUSTER_WHY
 #   slurm_cluster_stop DIR    # stops the daemons it started (by their pid files)
+# A pid file's process is signalled only when it is this cluster's own daemon (its program and its
+# own configuration path in its arguments, this user's); the folder may not hold spaces
+# (slurm.conf cannot), and is refused with that reason.
 # Needs root (slurmd runs the jobs as their submitter) and Debian's slurmctld, slurmd,
 # slurm-client and munge (.ci/install-deps).
 
@@ -17,8 +20,15 @@ free_port() {
 }
 
 slurm_cluster_start() {
-  local dir="$1"
+  local dir
+  dir=$(realpath -m -- "$1")
   SLURM_CLUSTER_WHY=""
+  # slurm.conf values end at white space and take no quotes (slurm.conf(5)); the daemons change
+  # folder, so the path is made absolute.
+  if [[ "$dir" =~ [^A-Za-z0-9._/+-] ]]; then
+    SLURM_CLUSTER_WHY="the folder \"$dir\" holds a space or another character slurm.conf cannot hold (use letters, digits and . _ / + -)"
+    return 1
+  fi
   local tool
   for tool in munged mungekey slurmctld slurmd sbatch squeue scontrol; do
     if ! command -v "$tool" >/dev/null 2>&1 && [ ! -x "/usr/sbin/$tool" ]; then
@@ -103,12 +113,62 @@ EOF
   return 1
 }
 
+# Whether the pid file names one of this cluster's own daemons; then SLURM_CLUSTER_PID holds it.
+# It must be a decimal number above 1 (0 would signal the caller's process group, -N a whole
+# group, 1 init), a live process of this user, whose program is PROGRAM and whose arguments hold
+# ARGUMENT, this cluster's own configuration path. Otherwise the reason is in SLURM_CLUSTER_WHY.
+slurm_cluster_own_pid() {
+  local pidfile="$1" program="$2" argument="$3" pid owner arg
+  SLURM_CLUSTER_PID=""
+  pid=$(head -c 32 -- "$pidfile" 2>/dev/null | head -n 1)
+  pid="${pid#"${pid%%[![:space:]]*}"}"
+  pid="${pid%"${pid##*[![:space:]]}"}"
+  if ! [[ "$pid" =~ ^[0-9]{1,9}$ ]] || [ "$((10#$pid))" -le 1 ]; then
+    SLURM_CLUSTER_WHY="$pidfile: \"$pid\" is not a daemon's pid (a decimal number above 1)"
+    return 1
+  fi
+  pid=$((10#$pid))
+  if ! owner=$(stat -c %u "/proc/$pid" 2>/dev/null); then
+    SLURM_CLUSTER_WHY="$pidfile: no process $pid runs"
+    return 1
+  fi
+  if [ "$owner" != "$(id -u)" ]; then
+    SLURM_CLUSTER_WHY="$pidfile: process $pid belongs to uid $owner, not to this user"
+    return 1
+  fi
+  local -a args=()
+  mapfile -d '' -t args < "/proc/$pid/cmdline" 2>/dev/null
+  if [ "${#args[@]}" -eq 0 ] || [ "${args[0]}" != "/usr/sbin/$program" ]; then
+    SLURM_CLUSTER_WHY="$pidfile: process $pid is not /usr/sbin/$program"
+    return 1
+  fi
+  for arg in "${args[@]:1}"; do
+    if [ "$arg" = "$argument" ]; then
+      SLURM_CLUSTER_PID=$pid
+      return 0
+    fi
+  done
+  SLURM_CLUSTER_WHY="$pidfile: process $pid is a $program not started with $argument"
+  return 1
+}
+
 slurm_cluster_stop() {
-  local dir="$1" pidfile pid
-  [ -n "${SLURM_CONF:-}" ] && scancel --full --quiet --user=root 2>/dev/null
-  for pidfile in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid"; do
-    [ -f "$pidfile" ] || continue
-    pid=$(cat "$pidfile")
+  local dir pid i
+  dir=$(realpath -m -- "$1")
+  # Only this cluster's own jobs: scancel reaches the cluster SLURM_CONF names.
+  if [ "${SLURM_CONF:-}" = "$dir/slurm.conf" ] && [ -f "$dir/slurm.conf" ]; then
+    scancel --full --quiet --user=root 2>/dev/null
+  fi
+  local -a pidfiles=("$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid")
+  local -a programs=(slurmd slurmctld munged)
+  local -a arguments=("$dir/slurm.conf" "$dir/slurm.conf" "--socket=$dir/munge/socket")
+  for i in 0 1 2; do
+    [ -f "${pidfiles[$i]}" ] || continue
+    if ! slurm_cluster_own_pid "${pidfiles[$i]}" "${programs[$i]}" "${arguments[$i]}"; then
+      echo "slurm_cluster.sh: not signalled: $SLURM_CLUSTER_WHY" >&2
+      continue
+    fi
+    pid=$SLURM_CLUSTER_PID
     kill "$pid" 2>/dev/null || continue
     for _ in $(seq 1 50); do
       kill -0 "$pid" 2>/dev/null || break
@@ -116,13 +176,15 @@ slurm_cluster_stop() {
     done
     kill -9 "$pid" 2>/dev/null
   done
+  return 0
 }
 
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then   # run, not sourced
-  dir="${2:-/tmp/ncube-slurm}"
+  dir=$(realpath -m -- "${2:-/tmp/ncube-slurm}")
   case "${1:-}" in
     start)
-      if [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid")" 2>/dev/null; then
+      if [ -f "$dir/slurmctld.pid" ] &&
+          slurm_cluster_own_pid "$dir/slurmctld.pid" slurmctld "$dir/slurm.conf"; then
         echo "slurm_cluster.sh: a cluster runs in $dir already (stop it: $0 stop $dir)" >&2
         exit 2
       fi

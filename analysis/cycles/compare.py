@@ -21,7 +21,15 @@ from ncube import input_file, output_file  # noqa: E402
 LIMIT = 64 << 20
 
 
-def compare(reference, cycles):
+def number(value, where, low=0.0):
+    """VALUE as a finite number of at least LOW, else a ValueError naming WHERE."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+            or value < low:
+        raise ValueError(f"{where}: {value!r} is not a finite number of at least {low:g}")
+    return float(value)
+
+
+def compare(reference, cycles, names=("reference file", "Cycles answer file")):
     if reference["scene_sha256"] != cycles["scene_sha256"]:
         raise ValueError(f"not the same scene file: reference {reference['scene_file']} "
                          f"{reference['scene_sha256'][:12]}, Cycles {cycles['scene_file']} "
@@ -30,8 +38,13 @@ def compare(reference, cycles):
     if len(rows) != len(reference["patch_luminance"]):
         raise ValueError("not the same number of patches")
     per_patch, weighted, area_total = [], 0.0, 0.0
-    for row, y_ref in zip(rows, reference["patch_luminance"]):
-        patch, area, y, se = row[0], row[1], row[8], row[9]
+    for index, (row, y_ref) in enumerate(zip(rows, reference["patch_luminance"])):
+        y_ref = number(y_ref, f"{names[0]}: patch_luminance[{index}]")
+        where = f"{names[1]}: patches[{index}]"
+        patch, area = row[0], number(row[1], f"{where}: area")
+        y, se = number(row[8], f"{where}: luminance"), number(row[9], f"{where}: standard error")
+        if area == 0.0:
+            raise ValueError(f"{where}: area: 0 (a patch has an area)")
         if y <= 0.0:
             continue
         d, s = (y_ref - y) / y, se / y
@@ -39,17 +52,19 @@ def compare(reference, cycles):
                           "difference": d, "cycles_se": s})
         weighted += area * d * d
         area_total += area
+    if not per_patch:
+        raise ValueError(f"{names[1]}: no patch with a luminance above 0 (nothing to compare)")
     worst = max(per_patch, key=lambda p: abs(p["difference"]))
     return {"patch_rms": math.sqrt(weighted / area_total), "patch_max": abs(worst["difference"]),
             "worst_patch": worst["patch"],
-            "largest_sigmas": max(abs(p["difference"]) / p["cycles_se"] for p in per_patch
-                                  if p["cycles_se"] > 0),
+            "largest_sigmas": max((abs(p["difference"]) / p["cycles_se"] for p in per_patch
+                                   if p["cycles_se"] > 0), default=math.inf),
             "cycles_se_rms": math.sqrt(sum(p["area"] * p["cycles_se"] ** 2 for p in per_patch) / area_total),
             "per_patch": per_patch}
 
 
 def load(path, what):
-    return json.loads(input_file.read_input_text(path, what, LIMIT))
+    return input_file.read_json(path, what, LIMIT)
 
 
 def main(argv=None):
@@ -60,9 +75,11 @@ def main(argv=None):
     parser.add_argument("--json")
     args = parser.parse_args(argv)
     try:
-        result = compare(load(args.reference, "reference file"), load(args.cycles, "Cycles answer file"))
-    except (input_file.InputFileError, ValueError, KeyError, TypeError) as e:
-        print(f"compare: {e}", file=sys.stderr)
+        result = compare(load(args.reference, "reference file"), load(args.cycles, "Cycles answer file"),
+                         (args.reference, args.cycles))
+    except (input_file.InputFileError, ValueError, KeyError, TypeError, IndexError) as e:
+        print(f"compare: {e if not isinstance(e, (KeyError, IndexError)) else 'a field is missing: ' + str(e)}",
+              file=sys.stderr)
         return 2
     print(f"patch RMS {result['patch_rms']:.4f}  largest patch {result['patch_max']:.4f} "
           f"(patch {result['worst_patch']})  largest |d|/se {result['largest_sigmas']:.1f}  "

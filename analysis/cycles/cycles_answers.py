@@ -81,12 +81,17 @@ def resolve_scene(name):
 def load_scene(path):
     data = input_file.read_input_bytes(path, "scene file", input_file.SCENE_FILE_BYTES)
     try:
-        scene = json.loads(data)
+        depth = input_file.json_depth_problem(data.decode("utf-8", errors="replace"))
+        if depth:
+            raise Refusal(f"{path}: {depth}", 2)
+        scene = json.loads(data, parse_constant=lambda name: float("nan"))
         patches = []
         for index, patch in enumerate(scene["patches"]):
             corners = np.array(patch["vertices"], dtype=float)
             if corners.shape not in ((3, 3), (4, 3)):
                 raise Refusal(f"{path}: patch {index}: vertices: 3 or 4 points of 3 coordinates", 2)
+            if not np.isfinite(corners).all():
+                raise Refusal(f"{path}: patch {index}: vertices: not finite numbers", 2)
             patches.append({"corners": corners,
                             "rho": [float(x) for x in patch.get("reflectance", [0.0] * 3)],
                             "emission": [float(x) for x in patch.get("emission", [0.0] * 3)]})

@@ -4,7 +4,9 @@ files"). Opened without blocking (a FIFO never waits for a writer), the descript
 a regular file, and read at most one byte past the limit, so a device, a folder, a link loop or
 an endless file is one clear SweepError instead of a hang, a traceback or gigabytes of memory."""
 import errno
+import json
 import os
+import re
 import stat
 
 MIB = 1 << 20
@@ -84,3 +86,58 @@ def read_input_text(path, what, max_bytes):
         return data.decode("utf-8")
     except UnicodeDecodeError as e:
         raise InputFileError(f"{path}: {what} is not UTF-8 text (byte {e.start})") from None
+
+
+# Far deeper than any file of the project (a scene, a result, a summary: under 10 levels), and
+# far below where Python's parser would recurse out of its stack (about 1,000 levels).
+MAX_JSON_DEPTH = 100
+
+
+_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+
+
+def json_depth_problem(text, max_depth=MAX_JSON_DEPTH):
+    """Where TEXT's arrays and objects nest deeper than MAX_DEPTH ("line L: nesting deeper than
+    N levels"), else "": a scan of its brackets (strings skipped), before a parser recurses."""
+    depth = 0
+    for token in _JSON_TOKENS.finditer(text):
+        bracket = token.group()
+        if bracket in "[{":
+            depth += 1
+            if depth > max_depth:
+                line = text.count("\n", 0, token.start()) + 1
+                return f"line {line}: nesting deeper than {max_depth} levels"
+        elif bracket in "]}":
+            depth -= 1
+    return ""
+
+
+_JSON_CONSTANTS = re.compile(r'"(?:[^"\\]|\\.)*"|NaN|-?Infinity')
+
+
+def _constant_problem(text):
+    """"line L: NaN is not a number JSON allows" for the first NaN or Infinity outside a
+    string (Python's parser takes them), else ""."""
+    for token in _JSON_CONSTANTS.finditer(text):
+        if not token.group().startswith('"'):
+            line = text.count("\n", 0, token.start()) + 1
+            return f"line {line}: {token.group()} is not a number JSON allows"
+    return ""
+
+
+def _refuse_constant(name):
+    raise ValueError(f"{name} is not a number JSON allows")
+
+
+def read_json(path, what, max_bytes):
+    """The JSON value of PATH (a WHAT) through the gate: a regular file within MAX_BYTES, UTF-8,
+    nested at most MAX_JSON_DEPTH levels, and strict JSON (NaN and Infinity, which Python's
+    parser takes, are refused). Any problem is an InputFileError naming the file."""
+    text = read_input_text(path, what, max_bytes)
+    problem = json_depth_problem(text) or _constant_problem(text)
+    if problem:
+        raise InputFileError(f"{path}: {what}: {problem}")
+    try:
+        return json.loads(text, parse_constant=_refuse_constant)
+    except ValueError as e:
+        raise InputFileError(f"{path}: {what} is not valid JSON: {e}") from None

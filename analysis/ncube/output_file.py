@@ -46,6 +46,22 @@ def _refuse_inputs(path, final):
         raise OutputIsInputError(f"{path}: is the input file {read}")
 
 
+def check(path):
+    """Raises what write(path) would for a path it refuses (an input of this process, a folder,
+    a socket, a block device, a loop of links) without writing anything: a script checks every
+    output first, so that a refusal leaves none of them written."""
+    final = target(path)
+    _refuse_inputs(path, final)
+    try:
+        mode = os.stat(final).st_mode
+    except FileNotFoundError:
+        return
+    if not (stat.S_ISREG(mode) or stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+        kind = "a folder" if stat.S_ISDIR(mode) else "a socket" if stat.S_ISSOCK(mode) else \
+            "a block device" if stat.S_ISBLK(mode) else "not a file"
+        raise OutputPathError(f"{path}: cannot be written: it is {kind}")
+
+
 def write(path, data):
     """Writes `data` (str or bytes) to `path` by the rule above; returns `path`."""
     data = data.encode() if isinstance(data, str) else bytes(data)

@@ -36,6 +36,30 @@ def refuse(script, line):
     sys.exit(REFUSED)
 
 
+def check_outputs(script, outputs, committed=(), complete=True, how="name another place"):
+    """Before anything is written, every output under the output rule (ncube.output_file: not
+    an input of this script, not a folder, a socket or a block device), and, for a page of an
+    incomplete run (a --partial page with cells missing, a small study), none of them a
+    committed page (`committed`: the script's default outputs): one line and exit 2 (5 for a
+    path that cannot be a file), nothing written."""
+    for path in outputs:
+        try:
+            output_file.check(path)
+        except output_file.OutputIsInputError as e:   # refusing_outputs' own line
+            print(f"{script}: an output {e}; not written", file=sys.stderr, flush=True)
+            sys.exit(REFUSED)
+        except output_file.OutputPathError as e:
+            print(f"{script}: {e}; nothing written", file=sys.stderr, flush=True)
+            sys.exit(REFUSED if "symbolic links" in str(e) else CANNOT_WRITE)
+    if complete:
+        return
+    pages = {Path(c).resolve() for c in committed}
+    for path in outputs:
+        if Path(path).resolve() in pages:
+            refuse(script, f"a page of an incomplete run would replace the committed "
+                           f"{shown(path)}: {how}")
+
+
 def require_results(script, missing, total, results_dir, how):
     """Refuses unless every one of the page's `total` cells has a result: `missing` are the
     result files (relative to `results_dir`) it lacks, `how` what gives them."""

@@ -214,6 +214,9 @@ def _platform_nodes(path):
     return int(run.stdout)
 
 
+ESTIMATE_MAX_DIMENSION = 30   # bounds the estimate's power only (./simulate's range is 0 to 13)
+
+
 def platform_nodes(path):
     """Nodes of a platform file, as ./simulate counts them (--platform-nodes: the file read with
     every check and limit a run applies: one function for both). Without a simulator built yet
@@ -224,7 +227,15 @@ def platform_nodes(path):
     if _simulator_built():
         return _platform_nodes(str(path))
     if not text.lstrip().startswith("<"):
-        return 2 ** int(json.loads(text)["parameters"]["dimension"]["value"])
+        dimension = json.loads(text)["parameters"]["dimension"]["value"]
+        # Bounded before the power (1e9 would take 2^(10^9), 1e400 is infinite): far above
+        # ./simulate's own range, which the cells' runs apply.
+        whole = (isinstance(dimension, int) and not isinstance(dimension, bool)) or \
+            (isinstance(dimension, float) and math.isfinite(dimension) and dimension.is_integer())
+        if not whole or not 0 <= dimension <= ESTIMATE_MAX_DIMENSION:
+            raise ValueError(f"{path}: parameters: dimension: {dimension!r} is not a whole number "
+                             f"from 0 to {ESTIMATE_MAX_DIMENSION}")
+        return 2 ** int(dimension)
     names = set(re.findall(r'<host\s[^>]*id="(node-\d+)"', text))
     count = len(names)
     for radical in re.findall(r'<cluster\s[^>]*radical="([\d,-]+)"', text):

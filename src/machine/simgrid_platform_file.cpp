@@ -117,7 +117,39 @@ void check_config_tags(const std::string& path, const std::string& text) {
   }
 }
 
+// SimGrid's reader takes neither an internal DTD subset nor an entity declaration; refused
+// here by name, so that a file is never judged by what an entity would expand to.
+void check_document_type(const std::string& path, const std::string& text) {
+  const auto line_of = [&text](std::size_t at) {
+    return std::to_string(std::count(text.begin(), text.begin() + long(at), '\n') + 1);
+  };
+  const std::size_t entity = text.find("<!ENTITY");
+  if (entity != std::string::npos)
+    throw InputError(path + ": line " + line_of(entity) +
+                     ": <!ENTITY: a platform file declares no entities (plain SimGrid XML)");
+  const std::size_t doctype = text.find("<!DOCTYPE");
+  if (doctype == std::string::npos) return;
+  const std::size_t end = text.find('>', doctype), subset = text.find('[', doctype);
+  if (subset != std::string::npos && (end == std::string::npos || subset < end))
+    throw InputError(path + ": line " + line_of(doctype) +
+                     ": <!DOCTYPE with a DTD of its own ([...]): a platform file names SimGrid's "
+                     "DTD only");
+}
+
 }  // namespace
+
+void check_simgrid_platform_text(const std::string& path, const std::string& text) {
+  check_platform_shape(path, text);  // before SimGrid or libxml2 builds anything of it
+  check_document_type(path, text);
+  check_config_tags(path, text);
+  // SimGrid would open the files an XML platform names (a host's speed_file, a link's
+  // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
+  const std::string attribute = file_attribute(text);
+  if (!attribute.empty())
+    throw InputError(path + ": " + attribute +
+                     ": names a file, which SimGrid would read outside the input gate (files "
+                     "a platform names are not read: docs/cli.md, \"Input files\")");
+}
 
 bool is_simgrid_platform_file(const std::string& path) {
   // Either kind of platform file, up to the larger limit: only its first character is read.
@@ -132,17 +164,9 @@ PlatformConfig read_simgrid_platform_file(const std::string& path,
                                           const std::vector<std::string>& simgrid_arguments) {
   // SimGrid reads the descriptor the gate opened and checked, not the path again.
   InputFile file(path, kSimgridPlatformFile);
-  // SimGrid would open the files an XML platform names (a host's speed_file, a link's
-  // bandwidth_file, <trace file>, ...) itself, outside the gate: they are refused.
   const std::string text = file.read_all();
-  check_platform_shape(path, text);  // before SimGrid or libxml2 builds anything of it
-  check_config_tags(path, text);
+  check_simgrid_platform_text(path, text);
   simgrid::s4u::Engine& engine = simgrid_engine(simgrid_arguments);
-  const std::string attribute = file_attribute(text);
-  if (!attribute.empty())
-    throw InputError(path + ": " + attribute +
-                     ": names a file, which SimGrid would read outside the input gate (files "
-                     "a platform names are not read: docs/cli.md, \"Input files\")");
   try {
     engine.load_platform(file.descriptor_path());
   } catch (const std::exception& e) {

@@ -18,6 +18,13 @@ namespace ncube {
 // Whether `path` is XML (its first non-blank character is '<').
 bool is_simgrid_platform_file(const std::string& path);
 
+// What ./simulate holds a platform file's text to before SimGrid reads it: its shape (depth,
+// hosts: platform_shape.h), no document type of its own (an internal DTD subset or an entity),
+// every <config> setting within its range and none naming a file, no attribute naming a file.
+// Throws InputError naming the file and the item. A tool that copies a platform file into one
+// it writes (build/machine_probe) holds it to the same.
+void check_simgrid_platform_text(const std::string& path, const std::string& text);
+
 // Loads the platform into the process's SimGrid Engine (created with `simgrid_arguments`) and
 // reads the nodes. Throws InputError naming the file, the host and the property (or the
 // speed) that is missing, out of the parameter's range, or not node-0's.

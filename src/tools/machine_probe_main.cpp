@@ -45,12 +45,13 @@
 #include <vector>
 
 #include "machine/cost_model.h"
-#include "machine/platform_shape.h"
+#include "machine/simgrid_platform_file.h"
 #include "machine/rate_fit.h"
 #include "machine/work_kinds.h"
 #include "radiosity/hemicube.h"
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene.h"
+#include "tools/option_table.h"
 #include "tools/output_files.h"
 #include "tools/simulate_options.h"
 #include "tools/tool_exits.h"
@@ -233,6 +234,20 @@ std::string cpu_model() {
   }
 }
 
+// `text` as an XML comment's content: a comment may hold no "--" and no control character
+// but tab and newline (XML 1.0, section 2.5), and the network's path and the CPU's name are
+// the user's and the host's. A "--" becomes "- -"; a control character "?".
+std::string comment_text(const std::string& text) {
+  std::string safe;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '-' && !safe.empty() && safe.back() == '-') safe += ' ';
+    safe += (byte < 0x20 && c != '\n' && c != '\t') || byte == 0x7f ? '?' : c;
+  }
+  if (!safe.empty() && safe.back() == '-') safe += ' ';  // "--->" would close with "--"
+  return safe;
+}
+
 // The network file with the probe's node figures: every node's speed the measured
 // test_speed, the rates as <prop>s beside node_memory, and the measurements in a comment.
 // `rates`: (machine parameter, flop/s), node_speed's first.
@@ -275,7 +290,7 @@ std::string probed_platform(const std::string& network_file, const std::string& 
   const std::size_t open = text.find("<!--"), close = text.find("-->", open);
   if (open == std::string::npos || close == std::string::npos)
     throw ncube::InputError(network_file + ": no header comment to replace");
-  text.replace(open, close + 3 - open, "<!--" + about + "-->");
+  text.replace(open, close + 3 - open, "<!--" + comment_text(about) + "-->");
   return text;
 }
 
@@ -523,15 +538,17 @@ int machine_probe(int argc, char** argv) {
   app.add_option("--cost-model", cost_model_file, "flops per counted operation")
       ->capture_default_str();
   app.add_option("--repeats", repeats, "times each kernel is timed (the median is the rate)")
-      ->capture_default_str()->check(CLI::Range(3, 101));
+      ->capture_default_str()->check(ncube::decimal_count(3, 101));
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
   if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
   ncube::OutputFiles outputs({{"--out", out_file}}, {network_file, cost_model_file});
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const std::string network = ncube::read_input_file(network_file, ncube::kSimgridPlatformFile);
-  // The network file is kept in the platform it writes: held to the limits ./simulate holds a
-  // platform to (depth, hosts, topology strings; platform_shape.h) before any time is spent.
-  ncube::check_platform_shape(network_file, network);
+  // The network file is kept in the platform it writes: held to what ./simulate holds a
+  // platform's text to (depth, hosts, topology strings, no DTD or entity of its own, <config>
+  // settings in range and none naming a file, no attribute naming a file) before any time is
+  // spent.
+  ncube::check_simgrid_platform_text(network_file, network);
   // And it must take the rates (a node speed, node_memory, a header comment): tried with
   // placeholders here, so that a file that cannot is refused before the seconds of timing.
   probed_platform(network_file, network, {{"test_speed", 1.0}}, "");

@@ -109,6 +109,10 @@ CLI::Option* shown_as(CLI::Option* option, const std::string& placeholder,
 
 }  // namespace
 
+CLI::Validator decimal_count(long low, long high) {
+  return decimal_integer(ValueRange{double(low), double(high)}, false);
+}
+
 nlohmann::json& OptionTable::entry(const std::string& flag, const std::string& kind,
                                    const std::string& help, const std::string& field) {
   entries_.push_back({{"flag", flag}, {"kind", kind}, {"help", help}});

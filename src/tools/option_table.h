@@ -18,6 +18,10 @@ struct ValueRange {
   bool low_included = true, high_included = true;
 };
 
+// A count in decimal within [low, high], the rule of OptionTable::integer for a tool whose
+// options are not in a table (CLI11 alone reads "0x10" as 16 and "010" as 8).
+CLI::Validator decimal_count(long low, long high);
+
 class OptionTable {
  public:
   explicit OptionTable(CLI::App& app) : app_(app) {}

@@ -1,0 +1,39 @@
+#!/usr/bin/python3
+"""Prints, as JSON, the options a Python program defines with argparse, without running it:
+the program runs as __main__ until it parses its arguments, where it stops (exit 0) and prints
+each option's flags, its type's name and its nargs. A program that parses no arguments prints
+null. usage: argparse_options.py PROGRAM"""
+import argparse
+import json
+import runpy
+import sys
+
+
+class Parsed(Exception):
+    pass
+
+
+def describe(parser, *_args, **_kwargs):
+    options = []
+    for action in parser._actions:   # argparse keeps no public list of its options
+        if not action.option_strings or isinstance(action, argparse._HelpAction):
+            continue
+        kind = getattr(action.type, "__name__", None) if action.type else None
+        options.append({"flags": action.option_strings, "type": kind, "nargs": action.nargs,
+                        "takes_value": action.nargs != 0})
+    print(json.dumps(options))
+    raise Parsed
+
+
+argparse.ArgumentParser.parse_args = describe
+argparse.ArgumentParser.parse_known_args = describe
+program = sys.argv[1]
+sys.argv = [program]
+sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(program)))
+try:
+    runpy.run_path(program, run_name="__main__")
+except Parsed:
+    sys.exit(0)
+except SystemExit:
+    pass
+print("null")
