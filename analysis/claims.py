@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The paper's claims, measured (issue 31 item 5): error against simulated time to convergence.
+"""The paper's claims, measured: error against simulated time to convergence.
 
 Reads the sweep files experiments/claims/accuracy*.yaml with the sweep tool's own loader (the
 same validation, defaults and cell identity as experiments/sweep), runs every cell's ./simulate
@@ -546,7 +546,7 @@ def main():
         return 4
     plot(rows, args.figure)
     schemes = None if args.no_schemes else schemes_section(args.results.resolve())
-    # --- the hemicube's section (analysis/claims_hemicube.py, issue 38 item 6): included whole
+    # --- the hemicube's section (analysis/claims_hemicube.py): included whole
     import claims_hemicube
     try:
         hemicube = "" if args.no_hemicube else claims_hemicube.section(args.results.resolve(), args.jobs)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The hemicube's choices in the open (issue 38 item 6): its back faces (block or pass) and the
+"""The hemicube's choices in the open: its back faces (block or pass) and the
 Cornell box's light just below the ceiling, measured.
 
 Reads experiments/claims/hemicube.yaml with the sweep tool's own loader (its validation,

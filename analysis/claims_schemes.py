@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The paper's claim 2, measured (issue 31 item 5, issue 38 items 7 and 8): the paper's
+"""The paper's claim 2, measured: the paper's
 parallelisation (receivers) against the shooter-centred schemes it replaced: `circulation`, built
 from the abstracts of Çapın, Aykanat & Özgüç, and `shooters`, the project's own construction kept
 as a variant; on 4 to 64 nodes, with --shooters-per-iteration swept at 16 nodes.

@@ -122,9 +122,14 @@ with tempfile.TemporaryDirectory() as folder:
     check([e for e in later if e["ph"] == "X"]
           == [e for e in full if e["ph"] == "X" and e["args"].get("iteration", -1) >= 3],
           "--trace-iterations 3: keeps iterations 3 on")
-    nodes = window("nodes", "--trace-nodes", "1,3-5")
-    check(nodes == [e for e in full if e["tid"] in (1, 3, 4, 5)] and {e["tid"] for e in nodes} == {1, 3},
-          "--trace-nodes 1,3-5 keeps nodes 1 and 3 (4 and 5 do not run), names included")
+    nodes = window("nodes", "--trace-nodes", "1,3")
+    check(nodes == [e for e in full if e["tid"] in (1, 3)] and {e["tid"] for e in nodes} == {1, 3},
+          "--trace-nodes 1,3 keeps nodes 1 and 3, names included")
+    beyond = run("scene0.json", "--R", "2", "--V", "1", "--iterations", "3", "--trace-nodes", "1,3-5",
+                 "--trace", "beyond.trace", "--quiet", folder=folder)
+    check(beyond.returncode == 2 and "node 5" in beyond.stderr and len(beyond.stderr.splitlines()) == 1
+          and not (Path(folder) / "beyond.trace").exists(),
+          "--trace-nodes 1,3-5 on a 4-node run: exit 2, one line naming node 5, no trace")
     both = window("both", "--trace-nodes", "0", "--trace-iterations", "1")
     check(both == [e for e in full if e["tid"] == 0 and e.get("args", {}).get("iteration", 1) == 1],
           "both windows at once keep what is in both")

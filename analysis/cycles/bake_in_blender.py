@@ -63,7 +63,7 @@ def main():
     cycles.samples = job["samples"]
     cycles.use_adaptive_sampling = False
     cycles.use_denoising = False
-    cycles.sampling_pattern = "SOBOL"          # PMJ read 0.2 % low in a furnace (issue 38)
+    cycles.sampling_pattern = "SOBOL"          # PMJ read 0.2 % low in a furnace
     cycles.max_bounces = job["bounces"]
     cycles.diffuse_bounces = job["bounces"]
     cycles.glossy_bounces = cycles.transmission_bounces = cycles.volume_bounces = 0

@@ -30,13 +30,13 @@ PAGE = os.path.join(HERE, "probe.md")
 BEGIN, END = "<!-- prediction-table:begin -->", "<!-- prediction-table:end -->"
 SIMULATE = os.path.join(ROOT, "build", "simulate")
 PROBE = os.path.join(ROOT, "build", "machine_probe")
-# The issue's bound (issue 40, item 3), stated before measuring: the prediction holds within it.
+# The bound, stated before measuring: the prediction holds within it.
 TOLERANCE = 0.10
 # (scene, N): N iterations first, then 2N; chosen so that the timed iterations take about a
 # second or more of host time (scene2's first iteration alone takes several).
 SCENES = [("cornell-box", 40), ("scene0", 20), ("scene1", 3), ("scene2", 1)]
 # The hemicube (--form-factors hemicube) on three scenes, (scene, N, its options): the same
-# measurement, with the same 10 % as its goal, fixed before measuring (issue 40 names the
+# measurement, with the same 10 % as its goal, fixed before measuring (the request names the
 # ray-traced method's bound; the hemicube's rates were measured after it). N chosen so that
 # the timed iterations take about 0.5 s or more of host time where the scene allows: scene0's
 # run ends before its 140th iteration (no energy left to shoot), so 61 to 120, about 0.25 s.

@@ -32,7 +32,7 @@ const std::vector<SimgridSettingRange> kRanges = {
      "pages protected below each actor's stack: -1 or 2^31-1 abort (failed to protect stack)"},
     {"contexts/nthreads", K::kInteger, 1, 1, {},
      "the node programs share the host's state (answer cache, lookahead, host threads) and are "
-     "not written to run in SimGrid's parallel contexts (SIGSEGV in issue 30; 2^31-1 hangs)"},
+     "not written to run in SimGrid's parallel contexts (it crashed with SIGSEGV there; 2^31-1 hangs)"},
     {"contexts/stack-size", K::kInteger, 1024, 65536, {},
      "KiB per actor: 64 KiB or less is SIGSEGV (the node programs run host code on it); 1024 "
      "runs octree, subdivision, balancing and rendering; 2^31-1 is SIGSEGV"},

@@ -22,6 +22,7 @@ COVERED = {
     "network_bench": ["network_tables_test.sh", "platform_outputs_test.sh"],
     "simgrid_replay": ["simgrid_replay_test.sh"],
     "embree_floor": ["embree_floor_test.sh"],
+    "simulate_throwaway": ["throwaway_methods_test.sh"],
     "simgrid_alone": "open: a benchmark's floor (bench/simgrid_alone.cpp), run by hand",
     "benchmarks": "open: Google Benchmark's own options; run by hand (bench/)",
     # The wrapper and the shell helpers.
@@ -57,6 +58,8 @@ COVERED = {
     "docs/machines/network_tables.py": ["network_tables_test.sh"],
     "docs/machines/prediction_table.py": ["machine_probe_test.sh"],
     "docs/machines/balance_table.py": "open: a table of docs/machines/ from finished runs, by hand",
+    "analysis/openings.py": ["page_scripts_test.sh"],
+    "analysis/headline.py": "open: 45 what-if runs of ./simulate (about 5 minutes), run by hand; its committed analysis/headline.json is checked by openings_test.py",
     "platforms/generate.py": ["page_scripts_test.sh", "platforms_reproducible_test.sh"],
     "platforms/machines/generate.py": ["page_scripts_test.sh", "machines_platforms_test.sh"],
     "scenes/generate.py": ["page_scripts_test.sh", "scenes_reproducible_test.sh"],
