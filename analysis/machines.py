@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 
+from ncube import input_file  # noqa: E402
 from ncube import opening as op  # noqa: E402
 from ncube import page, results  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
@@ -65,6 +66,12 @@ METHOD_OPTIONS = ("visibility",)
 # Options that may differ between cells without making a method: fewer iterations for a costly
 # cell change how many iterations are averaged, not the program.
 NOT_METHOD = ("iterations",)
+# The probed machine whose rates are one probe's, and the records of that probe repeated with
+# the prediction held against the host each time (docs/machines/probe.md): the spread its
+# conclusions carry.
+PROBED = "cluster of 2024"
+PROBED_PLATFORM = ROOT / "platforms" / "machines" / "cluster-2024.xml"
+PREDICTION_RECORDS = ROOT / "docs" / "machines" / "prediction_records.jsonl"
 # A share of node time in communication from which the page calls it a large share.
 LARGE_SHARE = 0.25
 
@@ -934,7 +941,9 @@ def opening(found):
                                           f"{max(ratios[m]) / min(ratios[m]):.2f} times "
                                           "between splits" for m in balance),
             "their platform files give rates per kind of work, so this is "
-            "the model's result; one deterministic run per cell, no interval over the rates"))
+            "the model's result; one deterministic run per cell" +
+            ("".join(f"; the {PROBED}: " + probed_note(min(ratios[m]), max(ratios[m]))
+                     for m in balance if m == PROBED) or ", no interval over the rates")))
     sentences.append(op.Sentence(
         f"The best configuration of each scene is {'the same' if same_best else 'not the same'} "
         f"on every machine ({best_cells[0][scenes[0]].split(':')[0]} for {scenes[0]} on the "
@@ -949,6 +958,63 @@ def opening(found):
         "exact for the model's record sizes against each machine's memory per node; how the "
         "sizes move it: analysis/memory-sensitivity.md"))
     return sentences
+
+
+def probed_spread():
+    """The spread of the probed machine's rates over the recorded probes, against the rates its
+    platform file gives: (probes, machines, least and largest ratio over every rate, the same
+    for test_speed, the worst miss of the prediction over the runs), or None without records."""
+    import json
+    import re
+    try:
+        lines = input_file.read_input_text(PREDICTION_RECORDS, "prediction records",
+                                           16 * input_file.MIB).splitlines()
+        platform = input_file.read_input_text(PROBED_PLATFORM, "platform file",
+                                              input_file.PLATFORM_FILE_BYTES)
+    except input_file.InputFileError:
+        return None
+    records = [json.loads(line) for line in lines if line.strip()]
+    committed = {k: float(v) for k, v in re.findall(r'<prop id="(\w+_speed)" value="([^"]+)"',
+                                                    platform)}
+    ratios, test = [], []
+    for record in records:
+        for rate, value in record.get("rates", {}).items():
+            if rate in committed:
+                ratios.append(value / committed[rate])
+                if rate == "test_speed":
+                    test.append(value / committed[rate])
+    if not ratios or not test:
+        return None
+    misses = [row["simulated"] / row["host"] - 1 for r in records for row in r["rows"]
+              if row["kind"] == "ray-traced"]
+    return {"probes": len(records), "machines": len({r["machine"] for r in records}),
+            "low": min(min(ratios), 1.0), "high": max(max(ratios), 1.0),
+            "test_low": min(test), "test_high": max(test),
+            "worst_miss": max(misses, key=abs) if misses else None,
+            "misses": (min(misses), max(misses)) if misses else None}
+
+
+def probed_note(low_factor, high_factor):
+    """What the probed machine's factors carry: its rates' spread over probes."""
+    spread = probed_spread()
+    if spread is None:
+        return "one probe's rates, no spread recorded (docs/machines/probe.md)"
+
+    def shown(x):
+        return f"{x:,.0f}" if x >= 100 else f"{x:.2f}"
+    text = (f"its rates are one probe of the host; over {spread['probes']} fresh probes on "
+            f"{spread['machines']} machine{'s' if spread['machines'] != 1 else ''} "
+            f"(docs/machines/probe.md) each rate lay within {100 * (spread['low'] - 1):+.0f} to "
+            f"{100 * (spread['high'] - 1):+.0f} % of the file's (test_speed, nearly all of a "
+            f"brute-force split's computing, {100 * (spread['test_low'] - 1):+.1f} to "
+            f"{100 * (spread['test_high'] - 1):+.1f} %), so its factors lie within "
+            f"{shown(low_factor * spread['low'])} to {shown(high_factor * spread['high'])} (every "
+            "rate at its least, or at its largest, alike)")
+    if spread["misses"]:
+        text += (f"; and a one-thread run of the host itself was predicted "
+                 f"{100 * spread['misses'][0]:+.1f} to {100 * spread['misses'][1]:+.1f} % over "
+                 "those runs")
+    return text
 
 
 @page.refusing_outputs("machines.py")

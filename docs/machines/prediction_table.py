@@ -16,18 +16,27 @@ simulated node does. The table is written between <!-- prediction-table:begin --
 """
 
 import argparse
+import datetime
+import hashlib
 import json
 import os
 import re
 import resource
+import socket
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(ROOT, "analysis"))
+import prediction_records  # noqa: E402  (beside this script)
+from ncube import output_file  # noqa: E402
 PAGE = os.path.join(HERE, "probe.md")
 BEGIN, END = "<!-- prediction-table:begin -->", "<!-- prediction-table:end -->"
+OPEN_BEGIN, OPEN_END = "<!-- prediction-opening:begin -->", "<!-- prediction-opening:end -->"
 SIMULATE = os.path.join(ROOT, "build", "simulate")
 PROBE = os.path.join(ROOT, "build", "machine_probe")
 # The bound, stated before measuring: the prediction holds within it.
@@ -160,31 +169,124 @@ def table(rows, platform, heading):
     return lines
 
 
-def main():
+def machine():
+    """(CPU model, a short hash of the machine's id) for a record: the id names the machine
+    without publishing it (/etc/machine-id, else the host name)."""
+    with open("/proc/cpuinfo", encoding="utf-8") as f:
+        cpu = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
+    ident = ""
+    for path in ("/etc/machine-id", "/var/lib/dbus/machine-id"):
+        try:
+            with open(path, encoding="utf-8") as f:
+                ident = f.read().strip()
+            break
+        except OSError:
+            pass
+    ident = ident or "host:" + socket.gethostname()
+    return cpu, hashlib.sha256(ident.encode()).hexdigest()[:8]
+
+
+def commit():
+    try:
+        head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=10", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no",
+                                "src"], capture_output=True, text=True).stdout.strip()
+        return head + ("+changes" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "?"
+
+
+def platform_rates(platform):
+    with open(platform, encoding="utf-8") as f:
+        text = f.read()
+    return {k: float(v) for k, v in re.findall(r'<prop id="(\w+_speed)" value="([^"]+)"', text)}
+
+
+def one_run(args, work, index):
+    """One whole prediction (a fresh probe unless --platform, then the table): its record."""
+    load_before = [round(x, 2) for x in os.getloadavg()]
+    started = time.time()
+    platform = args.platform
+    probe_seconds = 0.0
+    if not platform:
+        platform = os.path.join(work, "probed-%d.xml" % index)
+        t = time.time()
+        subprocess.run([PROBE, "--out", platform], check=True, stdout=subprocess.DEVNULL)
+        probe_seconds = time.time() - t
+    rows = measure(platform, args.repeats)
+    hemicube_rows = measure_hemicube(platform, args.repeats)
+    cpu, ident = machine()
+    record = {
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "cpu": cpu, "machine": ident, "cores": os.cpu_count(), "commit": commit(),
+        "repeats": args.repeats, "probed": not args.platform,
+        "load_before": load_before, "load_after": [round(x, 2) for x in os.getloadavg()],
+        "wall_seconds": round(time.time() - started, 1), "probe_wall_seconds": round(probe_seconds, 1),
+        "rates": platform_rates(platform),
+        "rows": [{"scene": r["scene"], "kind": "ray-traced", "options": "",
+                  "simulated": r["simulated"], "host": r["host"],
+                  "tests_per_ray": round(r["tests_per_ray"], 2),
+                  "crossing_share": round(r["crossing_share"], 4),
+                  "host_minus_simulated_ns_a_test":
+                      round(1e9 * (r["host"] - r["simulated"]) / r["tests"], 4) if r["tests"] else 0.0}
+                 for r in rows] +
+                [{"scene": r["scene"], "kind": "hemicube", "options": r["options"],
+                  "simulated": r["simulated"], "host": r["host"],
+                  "raster_share": round(r["raster_share"], 4)} for r in hemicube_rows]}
+    lines = table(rows, platform, "Run %d: %s, load average %.1f before, %.1f after." % (
+        index + 1, record["date"], load_before[0], record["load_after"][0])) + hemicube_table(hemicube_rows)
+    return record, lines
+
+
+def main(argv=None, default_runs=1):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--platform", help="a probed platform file (default: probe now)")
+    parser.add_argument("--platform", help="a probed platform file (default: probe now, each run)")
     parser.add_argument("--repeats", type=int, default=3, help="processes a measurement (least)")
-    parser.add_argument("--print", action="store_true", help="print the table, write no page")
-    args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as work:
-        platform = args.platform
-        if not platform:
-            platform = os.path.join(work, "probed.xml")
-            subprocess.run([PROBE, "--out", platform], check=True, stdout=subprocess.DEVNULL)
-        rows = measure(platform, args.repeats)
-        hemicube_rows = measure_hemicube(platform, args.repeats)
-        with open("/proc/cpuinfo", encoding="utf-8") as f:
-            cpu = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
-        load = os.getloadavg()[0]
-        heading = ("Measured on %s (load average %.1f on %d cores at the end) by "
-                   "`/usr/bin/python3 docs/machines/prediction_table.py%s`."
-                   % (cpu, load, os.cpu_count(), ("" if not args.platform else
-                      " --platform " + os.path.relpath(args.platform, ROOT)) +
-                      ("" if args.repeats == 3 else " --repeats %d" % args.repeats)))
-        lines = table(rows, platform, heading) + hemicube_table(hemicube_rows)
-    text = "\n".join(lines) + "\n"
-    if args.print:
-        sys.stdout.write(text)
+    parser.add_argument("--print", action="store_true",
+                        help="one run's table to standard output; no record, no page")
+    parser.add_argument("--runs", type=int, default=default_runs,
+                        help="whole predictions (probe, then the table), each recorded (default %d)"
+                        % default_runs)
+    parser.add_argument("--time-cap", type=float, default=0,
+                        help="seconds: start no run that the longest run so far would take past it")
+    parser.add_argument("--records", default=prediction_records.RECORDS,
+                        help="the records file each run is appended to (default %s)"
+                        % os.path.relpath(prediction_records.RECORDS, ROOT))
+    parser.add_argument("--no-page", action="store_true",
+                        help="record the runs and print the summary, leave the page alone")
+    parser.add_argument("--regenerate", action="store_true",
+                        help="run nothing: the page's tables from the records file")
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"),
+                        help="the folder of simulate and machine_probe (default build/)")
+    args = parser.parse_args(argv)
+    global SIMULATE, PROBE
+    SIMULATE, PROBE = os.path.join(args.build, "simulate"), os.path.join(args.build, "machine_probe")
+    if args.repeats < 1 or args.runs < 0:
+        parser.error("--repeats must be 1 or more, --runs 0 or more")
+    if not args.regenerate:
+        with tempfile.TemporaryDirectory() as work:
+            if args.print:
+                _, lines = one_run(args, work, 0)
+                sys.stdout.write("\n".join(lines) + "\n")
+                return 0
+            started, longest = time.time(), 0.0
+            for index in range(args.runs):
+                if args.time_cap and index and time.time() - started + longest > args.time_cap:
+                    print("prediction runs: stopped after %d of %d runs (the time cap, %.0f s)"
+                          % (index, args.runs, args.time_cap), flush=True)
+                    break
+                t = time.time()
+                record, lines = one_run(args, work, index)
+                longest = max(longest, time.time() - t)
+                prediction_records.append(args.records, record)
+                sys.stdout.write("\n".join(lines) + "\n\nrecord: " + json.dumps(record, sort_keys=True)
+                                 + "\n\n")
+                sys.stdout.flush()
+    records = prediction_records.load(args.records)
+    text = prediction_records.section(records, TOLERANCE)
+    sys.stdout.write(prediction_records.opening(records, TOLERANCE) + "\n" + text)
+    if args.no_page or not records:
         return 0
     with open(PAGE, encoding="utf-8") as f:
         page = f.read()
@@ -192,9 +294,19 @@ def main():
         raise SystemExit("prediction_table.py: %s has no %s ... %s" % (PAGE, BEGIN, END))
     head, rest = page.split(BEGIN, 1)
     _, tail = rest.split(END, 1)
-    with open(PAGE, "w", encoding="utf-8", newline="\n") as f:
-        f.write(head + BEGIN + "\n" + text + END + tail)
-    print("wrote the prediction table of docs/machines/probe.md")
+    page = head + BEGIN + "\n" + text + END + tail
+    if OPEN_BEGIN in page and OPEN_END in page:
+        head, rest = page.split(OPEN_BEGIN, 1)
+        _, tail = rest.split(OPEN_END, 1)
+        page = (head + OPEN_BEGIN + "\n" + prediction_records.opening(records, TOLERANCE) + OPEN_END
+                + tail)
+    output_file.write(PAGE, page)
+    # analysis/machines.md's conclusions on the probed cluster carry the records' spread: its
+    # opening follows them (from its own tables and these records, without results).
+    if os.path.abspath(args.records) == os.path.abspath(prediction_records.RECORDS):
+        subprocess.run([sys.executable, os.path.join(ROOT, "analysis", "openings.py"),
+                        os.path.join(ROOT, "analysis", "machines.md")], check=True)
+    print("wrote the prediction tables of docs/machines/probe.md from %d records" % len(records))
     return 0
 
 
