@@ -62,7 +62,8 @@ def miss(row):
 
 def label(row):
     if row["kind"] == "hemicube":
-        return "%s, hemicube %s" % (row["scene"], "`%s`" % row["options"] if row["options"] else "(default)")
+        options = row["options"] if row["options"] not in ("", "(default)") else ""
+        return "%s, hemicube %s" % (row["scene"], "`%s`" % options if options else "(default)")
     return row["scene"]
 
 

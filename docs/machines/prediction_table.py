@@ -1,18 +1,24 @@
 #!/usr/bin/python3
-"""Holds the simulator against a real run of its own work: the table of docs/machines/probe.md.
+"""Holds the simulator against a real run of its own work: the tables of docs/machines/probe.md.
 
-    /usr/bin/python3 docs/machines/prediction_table.py [--platform FILE] [--repeats N] [--print]
+    /usr/bin/python3 docs/machines/prediction_table.py [--runs K] [--repeats N] [--platform FILE]
+                                                       [--print] [--no-page] [--regenerate]
 
-Without --platform, build/machine_probe first measures this computer into a temporary platform
-file. Then, for each scene of SCENES, one-node runs (--R 1 --V 0) of N and of 2N iterations on
-that platform, with the host's readable definitions alone on one thread (--reference-visibility
---threads 1): the prediction is the simulated seconds of iterations N+1 .. 2N (the difference
-of the two runs), the measurement the host's CPU seconds of the same iterations (the difference
-of the two processes' CPU time, each the least of N repeats: the least is the run least
-disturbed by the other processes of a shared host). Differences, not whole runs, because a
-process also starts, reads its scene, builds its elements and writes its result, which no
-simulated node does. The table is written between <!-- prediction-table:begin --> and
-<!-- prediction-table:end --> of docs/machines/probe.md (--print: to standard output only).
+A run: without --platform, build/machine_probe first measures this computer into a temporary
+platform file. Then, for each scene of SCENES, one-node runs (--R 1 --V 0) of N and of 2N
+iterations on that platform, with the host's readable definitions alone on one thread
+(--reference-visibility --threads 1): the prediction is the simulated seconds of iterations
+N+1 .. 2N (the difference of the two runs), the measurement the host's CPU seconds of the same
+iterations (the difference of the two processes' CPU time, each the least of N repeats: the
+least is the run least disturbed by the other processes of a shared host). Differences, not
+whole runs, because a process also starts, reads its scene, builds its elements and writes its
+result, which no simulated node does.
+
+Each of the K runs (default 1; bench/prediction_spread.py: 5) is appended as one record to
+docs/machines/prediction_records.jsonl (docs/machines/prediction_records.py), and the page's
+opening and tables (between its prediction-opening and prediction-table markers) are made
+again from all the records (--no-page: printed only). --print: one run's table to standard
+output, no record. --regenerate: no run, the page from the records.
 """
 
 import argparse
@@ -187,12 +193,12 @@ def machine():
 
 
 def commit():
+    """The version the probe binary was built from (its --version: the commit, "-dirty" when
+    built from a changed tree), not the checkout's: --build may name another build."""
     try:
-        head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=10", "HEAD"], check=True,
-                              capture_output=True, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no",
-                                "src"], capture_output=True, text=True).stdout.strip()
-        return head + ("+changes" if dirty else "")
+        out = subprocess.run([PROBE, "--version"], check=True, capture_output=True,
+                             text=True).stdout.split()
+        return out[-1] if out else "?"
     except (OSError, subprocess.CalledProcessError):
         return "?"
 

@@ -174,6 +174,14 @@ double median(std::vector<double> s) {
   return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
 }
 
+// The time a run is fitted on: the median of its repeats, or with --least the least of them
+// (a disturbance only ever adds thread CPU time, and docs/machines/prediction_table.py takes
+// the least of its processes: docs/machines/probe.md, "The probe under load").
+bool fit_least = false;
+double typical(const std::vector<double>& s) {
+  return fit_least ? *std::min_element(s.begin(), s.end()) : median(s);
+}
+
 // (fastest - slowest) / median of a kernel's repeats, as a share.
 double spread(const std::vector<double>& seconds) {
   const auto [least, most] = std::minmax_element(seconds.begin(), seconds.end());
@@ -539,6 +547,8 @@ int machine_probe(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--repeats", repeats, "times each kernel is timed (the median is the rate)")
       ->capture_default_str()->check(ncube::decimal_count(3, 101));
+  app.add_flag("--least", fit_least,
+               "fit each run's least time over its repeats instead of their median");
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
   if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
   ncube::OutputFiles outputs({{"--out", out_file}}, {network_file, cost_model_file});
@@ -564,7 +574,7 @@ int machine_probe(int argc, char** argv) {
   time_rooms(prepared, hemicubes, repeats);
   std::vector<ncube::TimedRun> hemicube_runs;
   for (const auto& timed : hemicubes) {
-    ncube::TimedRun run{{}, median(timed->timing.seconds)};
+    ncube::TimedRun run{{}, typical(timed->timing.seconds)};
     for (const std::string& kind : kHemicubeKinds)
       run.flops.push_back(ncube::kind_flops(costs, timed->timing.counts, kind));
     hemicube_runs.push_back(run);
@@ -573,11 +583,11 @@ int machine_probe(int argc, char** argv) {
     loops.push_back(timed->loop);
     gathers.push_back(timed->gather);
     const Timing& t = loops.back();
-    ncube::TimedRun run{{}, median(t.seconds)};
+    ncube::TimedRun run{{}, typical(t.seconds)};
     for (const std::string& kind : kLoopKinds)
       run.flops.push_back(ncube::kind_flops(costs, t.counts, kind));
     runs.push_back(run);
-    ncube::TimedRun gather_run{{}, median(timed->gather.seconds)};
+    ncube::TimedRun gather_run{{}, typical(timed->gather.seconds)};
     for (const std::string& kind : kGatherKinds)
       gather_run.flops.push_back(ncube::kind_flops(costs, timed->gather.counts, kind));
     gather_runs.push_back(gather_run);
@@ -651,7 +661,8 @@ int machine_probe(int argc, char** argv) {
         << "ray_speed + test flops / test_speed + blocked flops / blocked_ray_speed\n       "
         << "(src/machine/rate_fit.h; test flops: the ray-patch tests' and their plane crossings'),"
         << "\n       root mean square residual " << percent(fit.rms_relative_residual)
-        << " %. Each run: its counts a repeat, median of " << repeats << " repeats,\n       spread "
+        << " %. Each run: its counts a repeat, median of " << repeats << " repeats"
+        << (fit_least ? " (the fits: the least of them)" : "") << ",\n       spread "
         << "(fastest - slowest over the median), fitted - measured:\n";
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const Timing& t = loops[k];
