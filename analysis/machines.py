@@ -991,7 +991,9 @@ def probed_spread():
             "low": min(min(ratios), 1.0), "high": max(max(ratios), 1.0),
             "test_low": min(test), "test_high": max(test),
             "worst_miss": max(misses, key=abs) if misses else None,
-            "misses": (min(misses), max(misses)) if misses else None}
+            "misses": (min(misses), max(misses)) if misses else None,
+            "load": (min(r["load_before"][0] for r in records),
+                     max(r["load_after"][0] for r in records))}
 
 
 def probed_note(low_factor, high_factor):
@@ -1004,11 +1006,12 @@ def probed_note(low_factor, high_factor):
         return f"{x:,.0f}" if x >= 100 else f"{x:.2f}"
     text = (f"its rates are one probe of the host; over {spread['probes']} fresh probes on "
             f"{spread['machines']} machine{'s' if spread['machines'] != 1 else ''} "
-            f"(docs/machines/probe.md) each rate lay within {100 * (spread['low'] - 1):+.0f} to "
+            f"(load average {spread['load'][0]:.1f} to {spread['load'][1]:.1f}; "
+            f"docs/machines/probe.md) each rate lay within {100 * (spread['low'] - 1):+.0f} to "
             f"{100 * (spread['high'] - 1):+.0f} % of the file's (test_speed, nearly all of a "
             f"brute-force split's computing, {100 * (spread['test_low'] - 1):+.1f} to "
             f"{100 * (spread['test_high'] - 1):+.1f} %), so its factors lie within "
-            f"{shown(low_factor * spread['low'])} to {shown(high_factor * spread['high'])} (every "
+            f"{shown(low_factor * spread['low'])} to {shown(high_factor * spread['high'])} times as fast (every "
             "rate at its least, or at its largest, alike)")
     if spread["misses"]:
         text += (f"; and a one-thread run of the host itself was predicted "

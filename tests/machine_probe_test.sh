@@ -87,6 +87,10 @@ for rate in test_speed ray_speed blocked_ray_speed arithmetic_speed edge_term_sp
   grep -q "$rate = [0-9.e+]* flop/s" "$tmp/probed.xml" || fail "no measurement of $rate in the file"
 done
 grep -q "median of 3 repeats" "$tmp/probed.xml" || fail "the file does not give the repeats"
+# The median is the default statistic; --least (each run's least repeat, docs/machines/probe.md,
+# "Why the runs spread") is named in the file only when asked for.
+! grep -q "the least of them" "$tmp/probed.xml" || fail "the default probe says it fitted the least"
+"$probe" --help | grep -q -- "--least" || fail "machine_probe --help does not offer --least"
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
 [[ $(grep -c "), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 8 ]] ||
   fail "the file does not give the loop's 8 runs with their residuals"

@@ -133,8 +133,14 @@ def opening(records, tolerance):
                for k, v in rows) + ".",
            "* **The bound, %d %%, held against the worst run**: " % bound +
            ("it holds for every row in every run." if not missed else
-            ("it holds in every run for %s; " % ", ".join(held) if held else "") +
-            "it does **not** hold for %s." % ", ".join(missed))]
+            ("it holds in every run for %s; " % "; ".join(held) if held else "") +
+            "it does **not** hold for %s." % "; ".join(missed))]
+    quiet = [r for r in records if max(r["load_before"][0], r["load_after"][0]) <= r["cores"]]
+    if len(quiet) < len(records):
+        out.append("* **Load**: %d of the %d runs had a load average above the cores' count "
+                   "before or after; how much of the spread that makes, and how much is the "
+                   "model's, is measured below (\"Why the runs spread\")." % (
+                       len(records) - len(quiet), len(records)))
     return "\n".join(out) + "\n"
 
 
