@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs/machines/prediction_records.py through docs/machines/prediction_table.py --regenerate
-# (the page's tables from the records of the prediction's runs; bench/prediction_spread.py):
+# (the page's tables from the records of the prediction's runs):
 #  - each row's median, least and worst miss over the runs, over all machines and per machine,
 #    and the bound (10 %) held against the worst run: on six records worked out by hand (two
 #    machines), the Cornell box is outside the bound in one run of the first machine (-12 %)

@@ -1,5 +1,5 @@
-"""The records of the prediction's runs (docs/machines/prediction_table.py --runs K,
-bench/prediction_spread.py) and the page's tables made from all of them.
+"""The records of the prediction's runs (docs/machines/prediction_table.py, 5 runs
+at a time by default) and the page's tables made from all of them.
 
 One JSON object a line in RECORDS, one line a run: when, on what machine (the CPU's name and a
 hash of its machine id), the load average before and after, the probe's rates and each row's
@@ -104,7 +104,7 @@ def opening(records, tolerance):
     the records (the rates' spread over probes, each row's worst miss over runs and machines,
     where the bound holds)."""
     if not records:
-        return "No runs of the prediction recorded yet (`bench/prediction_spread.py`).\n"
+        return "No runs of the prediction recorded yet (`docs/machines/prediction_table.py`).\n"
     bound = round(100 * tolerance)
     machines = sorted({machine_label(r) for r in records})
     rows = spread_rows(records, tolerance)

@@ -14,7 +14,7 @@ least is the run least disturbed by the other processes of a shared host). Diffe
 whole runs, because a process also starts, reads its scene, builds its elements and writes its
 result, which no simulated node does.
 
-Each of the K runs (default 1; bench/prediction_spread.py: 5) is appended as one record to
+Each of the K runs (default 5; --time-cap S starts none that would end past S seconds) is appended as one record to
 docs/machines/prediction_records.jsonl (docs/machines/prediction_records.py), and the page's
 opening and tables (between its prediction-opening and prediction-table markers) are made
 again from all the records (--no-page: printed only). --print: one run's table to standard
@@ -245,7 +245,7 @@ def one_run(args, work, index):
     return record, lines
 
 
-def main(argv=None, default_runs=1):
+def main(argv=None, default_runs=5):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--platform", help="a probed platform file (default: probe now, each run)")
     parser.add_argument("--repeats", type=int, default=3, help="processes a measurement (least)")

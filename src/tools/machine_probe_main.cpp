@@ -53,6 +53,7 @@
 #include "scene/scene.h"
 #include "tools/option_table.h"
 #include "tools/output_files.h"
+#include "tools/scene_test_cost.h"
 #include "tools/simulate_options.h"
 #include "tools/tool_exits.h"
 #include "util/input_error.h"
@@ -539,7 +540,8 @@ int machine_probe(int argc, char** argv) {
   CLI::App app{"Times the project's own counted kernels on this computer (one thread) and writes "
                "a platform file of 64 such nodes with its rates per kind of work.",
                "machine_probe"};
-  app.add_option("--out", out_file, "the platform file to write (SimGrid XML)")->required();
+  int scene_rounds = 0;
+  app.add_option("--out", out_file, "the platform file to write (SimGrid XML)");
   app.add_option("--network", network_file,
                  "a platform of platforms/machines/ whose network and other figures are kept")
       ->capture_default_str();
@@ -547,10 +549,19 @@ int machine_probe(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--repeats", repeats, "times each kernel is timed (the median is the rate)")
       ->capture_default_str()->check(ncube::decimal_count(3, 101));
+  app.add_option("--scenes", scene_rounds,
+                 "instead of probing: the loop's cost a test in each scene of scenes/, timed "
+                 "round by round this many rounds (against --network's rates), no file written")
+      ->check(ncube::decimal_count(1, 1001));
   app.add_flag("--least", fit_least,
                "fit each run's least time over its repeats instead of their median");
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
   if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
+  if (scene_rounds > 0) return ncube::print_scene_test_costs(scene_rounds, network_file);
+  if (out_file.empty()) {
+    std::cerr << "machine_probe: --out is required (the platform file to write)\n";
+    return 2;
+  }
   ncube::OutputFiles outputs({{"--out", out_file}}, {network_file, cost_model_file});
   const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
   const std::string network = ncube::read_input_file(network_file, ncube::kSimgridPlatformFile);

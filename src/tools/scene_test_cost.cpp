@@ -1,25 +1,26 @@
-// What a ray-patch test costs the host in each scene the simulator is held against (a reported
-// figure, not a test): the paper's brute-force visibility loop (visible_parts over
-// BruteForceOccluders, the code build/machine_probe times in its rooms and the node programs
-// charge), on the scenes themselves, every variant timed round by round in one process so that
-// the host's other work falls on all of them alike (docs/machines/probe.md, "What a test costs
-// in each scene").
-//
-//   build/test_cost_scenes [ROUNDS] [PLATFORM]
+// What a ray-patch test costs the host in each scene the simulator is held against
+// (build/machine_probe --scenes ROUNDS; a reported figure, not a rate written anywhere): the
+// paper's brute-force visibility loop (visible_parts over BruteForceOccluders, the code the
+// probe times in its rooms and the node programs charge) on the scenes themselves, every
+// variant timed round by round in one process so that the host's other work falls on all of
+// them alike (docs/machines/probe.md, "Why the runs spread").
 //
 // Variants: each scene of scenes/ (cornell-box, scene0, scene1, scene2) with its patches tested
 // in the scene's own order and in a shuffled order (seed 1994: the same tests and crossings, a
 // different sequence of branches and of memory reads). Shooters as the probe's: the brightest
 // patch and three spread through the list, 64 parts each; a scene whose shots are more than
 // about 1.5e8 counted flops is cut to every k-th receiver. Each variant's time is the median of
-// ROUNDS (default 9) thread-CPU timings; from it the rays' and blocked rays' share at
-// PLATFORM's rates (default platforms/machines/cluster-2024.xml) is taken off, and what is left
-// over the counted test and crossing flops is the test rate the scene shows (compare
-// test_speed). Prints one line per variant.
+// the rounds' thread-CPU timings; from it the rays' and blocked rays' share at the platform's
+// rates is taken off, and what is left over the counted test and crossing flops is the test
+// rate the scene shows (compare the platform's test_speed). Prints one line per variant.
+#include "tools/scene_test_cost.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
+#include <stdexcept>
 #include <random>
 #include <regex>
 #include <string>
@@ -29,10 +30,12 @@
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene_loader.h"
 #include "tools/simulate_options.h"
+#include "util/input_error.h"
 #include "util/input_file.h"
 #include "visibility/brute_force_occluders.h"
 #include "visibility/shooter.h"
 
+namespace ncube {
 namespace {
 
 double thread_seconds() {
@@ -47,10 +50,10 @@ double median(std::vector<double> s) {
   return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
 }
 
-double prop(const std::string& text, const std::string& id) {
+double prop(const std::string& file, const std::string& text, const std::string& id) {
   std::smatch m;
-  if (!std::regex_search(text, m, std::regex("<prop id=\"" + id + "\" value=\"([^\"]+)\"")))
-    throw std::runtime_error("no " + id + " in the platform");
+  if (!std::regex_search(text, m, std::regex("<prop id=\"" + id + "\" value=\"([0-9.eE+-]+)\"")))
+    throw InputError(file + ": no <prop id=\"" + id + "\"> (a probed platform's rates are needed)");
   return std::stod(m[1]);
 }
 
@@ -73,14 +76,13 @@ constexpr double kFlopsAPass = 1.5e8;
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int print_scene_test_costs(int rounds, const std::string& platform_file) {
   const std::string root = ncube::repository_root();
-  const int rounds = argc > 1 ? std::stoi(argv[1]) : 9;
-  const std::string platform_file = argc > 2 ? argv[2] : root + "/platforms/machines/cluster-2024.xml";
   const ncube::CostModel costs = ncube::load_cost_model(root + "/platforms/cost_model.json");
   const std::string platform = ncube::read_input_file(platform_file, ncube::kSimgridPlatformFile);
-  const double ray_speed = prop(platform, "ray_speed"), blocked_speed = prop(platform, "blocked_ray_speed"),
-               test_speed = prop(platform, "test_speed");
+  const double ray_speed = prop(platform_file, platform, "ray_speed"),
+               blocked_speed = prop(platform_file, platform, "blocked_ray_speed"),
+               test_speed = prop(platform_file, platform, "test_speed");
   std::vector<std::unique_ptr<Variant>> variants;
   for (const std::string scene_name : {"cornell-box", "scene0", "scene1", "scene2"}) {
     for (const bool shuffled : {false, true}) {
@@ -135,7 +137,7 @@ int main(int argc, char** argv) {
       v->pass(c);
       v->seconds.push_back(thread_seconds() - t0);
     }
-  std::printf("variant | patches | tests a ray | crossing share | blocked a ray | median s | spread | "
+  std::printf("scene, patches' order | patches | tests a ray | crossing share | blocked a ray | median s | spread | "
               "test rate shown, flop/s | over test_speed | ns a test\n");
   for (const auto& v : variants) {
     const ncube::WorkCounts& c = v->counts;
@@ -154,3 +156,5 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace ncube
