@@ -260,7 +260,9 @@ def main(argv=None, default_runs=5):
                         help="the records file each run is appended to (default %s)"
                         % os.path.relpath(prediction_records.RECORDS, ROOT))
     parser.add_argument("--no-page", action="store_true",
-                        help="record the runs and print the summary, leave the page alone")
+                        help="record the runs and print the summary, leave the pages alone "
+                        "(before committing records, --regenerate: analysis/machines.md's "
+                        "opening follows them)")
     parser.add_argument("--regenerate", action="store_true",
                         help="run nothing: the page's tables from the records file")
     parser.add_argument("--build", default=os.path.join(ROOT, "build"),
