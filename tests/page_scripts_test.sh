@@ -12,12 +12,13 @@ fail() { echo "FAIL: $*"; failed=1; }
 
 clone="$work/clone"
 git clone --quiet --no-hardlinks "$root" "$clone" 2>/dev/null || { echo "FAIL: git clone $root"; exit 1; }
-# The working tree's tracked files, committed changes or not, so the test sees what it tests.
-(cd "$root" && git ls-files -z | while IFS= read -r -d '' f; do
-   [ -f "$f" ] && { mkdir -p "$clone/$(dirname "$f")"; cp -p "$f" "$clone/$f"; }; done)
-for f in $(cd "$root" && git ls-files --others --exclude-standard -- analysis tests docs experiments); do
-  mkdir -p "$clone/$(dirname "$f")"; cp -p "$root/$f" "$clone/$f"
-done
+# The working tree's tracked files, committed changes or not, so the test sees what it tests
+# (a tracked file deleted in the working tree is left out), and its new files in analysis,
+# tests, docs and experiments: one tar, not a copy per file (about 700 files).
+(cd "$root" && { git ls-files -z | while IFS= read -r -d '' f; do [ -f "$f" ] && printf '%s\0' "$f"; done
+                 git ls-files -z --others --exclude-standard -- analysis tests docs experiments; } |
+   tar --null --files-from=- -cf - | tar -C "$clone" -xf -) ||
+  { echo "FAIL: copying the working tree into $clone"; exit 1; }
 git -C "$clone" add -A && git -C "$clone" -c user.name=test -c user.email=test@localhost \
   commit --quiet --allow-empty -m "the tree under test"
 [ -z "$(git -C "$clone" status --porcelain)" ] || fail "the clone is not clean to begin with"

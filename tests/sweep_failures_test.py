@@ -24,6 +24,10 @@ failures = []
 
 TINY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2, 4]}\n")
+# Two cells where one that fails or waits and one other are all a case needs (each cell is a
+# job: a Python and a ./simulate); the full disk keeps three, its filler sized for them.
+PAIR = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
+        "grid: {scene: [scene0], R: [1, 2]}\n")
 
 
 def check(condition, what):
@@ -63,7 +67,7 @@ def paused_sweep(sweep_file, results_dir, point, cell, signals_dir):
 
 
 def test_folder_in_use(work):
-    (work / "busy.yaml").write_text(TINY)
+    (work / "busy.yaml").write_text(PAIR)
     cells = sweep.load(work / "busy.yaml").cells
     results_dir = work / "busy"
     first, reached = paused_sweep(work / "busy.yaml", results_dir, "started", cells[0],
@@ -96,7 +100,7 @@ def test_folder_in_use(work):
 
 
 def test_cell_failing(work):
-    (work / "fails.yaml").write_text(TINY)
+    (work / "fails.yaml").write_text(PAIR)
     cells = sweep.load(work / "fails.yaml").cells
     failing = next(c for c in cells if c.R == 2)
     wrapper = work / "simulate-fails-R2"

@@ -23,9 +23,13 @@ WORK = Path(os.environ["SLURM_TEST_WORK"])
 MODEL = ROOT / "tests" / "models" / "cornell-box.obj"
 failures = []
 
-# 12 cells: scene0, the Cornell box scene file and its model, R 1 or 2, V 0 or 1.
+# 4 cells: a scene by name, the Cornell box scene file and its model (each kind of scene a
+# job must find on the cluster), with V = 0 and V > 0, on 1 to 3 nodes. Each cell is a Slurm
+# job: more cells would show nothing more and cost a job each.
 STUDY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
-         f"grid: {{scene: [scene0, cornell-box.json, {MODEL}], R: [1, 2], V: [0, 1]}}\n")
+         "cells: [{scene: scene0, R: 1, V: 0}, {scene: scene0, R: 2, V: 1},\n"
+         f"        {{scene: cornell-box.json, R: 2, V: 0}}, {{scene: '{MODEL}', R: 1, V: 1}}]\n")
+CELLS = 4
 # A model the sweep accepts (it imports) but whose simulation fails: the job's ./simulate
 # (a wrapper) is handed a broken copy, as if the file had been damaged on the cluster's disk.
 BROKEN = "broken.yaml"
@@ -104,7 +108,7 @@ def main():
     wrapper.chmod(0o755)
     cells = sweep.load(WORK / "study.yaml").cells
     broken = sweep.load(WORK / BROKEN).cells[0]
-    check(len(cells) == 12, f"the study has 12 cells ({len(cells)})")
+    check(len(cells) == CELLS, f"the study has {CELLS} cells ({len(cells)})")
 
     local_dir = WORK / "local"
     start = time.monotonic()
@@ -144,9 +148,9 @@ def main():
     log_file = cluster_dir / "logs" / "snakemake.log"
     log = out + err + (log_file.read_text() if log_file.exists() else "")
     submitted = re.findall(r"Submitted job \d+ with external jobid '(\d+)'", log)
-    check(len(submitted) == 13 and len(set(submitted)) == 13,
+    check(len(submitted) == CELLS + 1 and len(set(submitted)) == CELLS + 1,
           f"one Slurm job per cell, their ids in the sweep's log ({len(submitted)} submitted)")
-    if len(submitted) != 13:
+    if len(submitted) != CELLS + 1:
         print(err[-3000:])
     check(first.returncode == 4, f"a cancelled job and a failed cell: exit 4 ({first.returncode})")
     said = [line for line in err.splitlines() if line.startswith("sweep: ")]
@@ -188,8 +192,8 @@ def main():
     same = [c.file for c in cells
             if without_host_fields(cluster_dir / c.file, cluster_dir) ==
             without_host_fields(local_dir / c.file, local_dir)]
-    check(len(same) == 12, f"the cluster's result files are the local run's byte for byte apart "
-                           f"from host fields ({len(same)} of 12)")
+    check(len(same) == CELLS, f"the cluster's result files are the local run's byte for byte "
+                              f"apart from host fields ({len(same)} of {CELLS})")
     over_memory(cells)
     if failures:
         print(f"{len(failures)} check(s) failed")

@@ -10,4 +10,6 @@ if ! slurm_cluster_start "$work/cluster"; then
   exit 77
 fi
 # Snakemake's built-in executor would need $USER; the sweep's path must not (CI has none).
-NCUBE_SIMULATE="$1" SLURM_TEST_WORK="$work" env -u USER /usr/bin/python3 "$2/tests/sweep_slurm_test.py"
+# CI=true: Snakemake 7's cluster executors sleep 10 s between rounds of status checks,
+# 1 s with CI=true (snakemake/executors/__init__.py, sleep()); nothing else reads it.
+CI=true NCUBE_SIMULATE="$1" SLURM_TEST_WORK="$work" env -u USER /usr/bin/python3 "$2/tests/sweep_slurm_test.py"
