@@ -674,9 +674,10 @@ def like_for_like_markdown(data, figure_name="figures/claims_cost.png"):
             "Every converged cell at V = 0 (the rays under the paper's program, the hemicube "
             "under `shooters`, as in the tables above); **front**: no other cell costs at most "
             "as much with a lower error (the cheapest setting for its error), for simulated "
-            "seconds (sim) and host seconds (host) apart. Host seconds are the host's CPU "
-            "seconds of the run (its result file's `host_seconds`), measured on a shared "
-            "machine: they rank, they do not time.", ""]
+            "seconds (sim) and host seconds (host) apart. Host seconds are the run's wall time "
+            "on the host (its result file's `host_seconds`, one host thread a cell, two cells "
+            "at once), measured on a shared machine whose load varies: they rank settings "
+            "roughly, they do not time them.", ""]
     for scene in sorted({r["scene"] for r in data["rows"]}):
         out += [f"#### {scene}", "",
                 "| method | simulated s | host s | (a) patch vs Cycles | front (sim, host) | "
@@ -724,7 +725,7 @@ def like_for_like_markdown(data, figure_name="figures/claims_cost.png"):
             "found; the literature's remedy for near receivers is to integrate over the "
             "shooter, as the paper's receiver-centred rays do: Wallace, Elmquist & Haines "
             "1989); it is a variant option of the method, not the claims' choice (as computed).", "",
-            "| scene | placement | receivers above 1 a run (N: count, shots) | exact structure: "
+            "| scene | placement | receiver-shots above 1 a run (N: count (iterations)) | exact structure: "
             "(element, shooter) pairs above 1 | largest exact factor |",
             "|---|---|---|---:|---:|"]
     for r in reciprocity_rows(data):
