@@ -550,7 +550,8 @@ def main():
     import claims_hemicube
     try:
         hemicube = "" if args.no_hemicube else claims_hemicube.section(args.results.resolve(), args.jobs)
-    except (claims_hemicube.CellFailed, accuracy.AccuracyError, sweep.SweepError) as e:
+    except (claims_hemicube.CellFailed, accuracy.AccuracyError, sweep.SweepError, RuntimeError,
+            ValueError) as e:
         print(f"claims: {e}", file=sys.stderr)
         return 4
     # --- end of the hemicube's section

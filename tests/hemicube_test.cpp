@@ -309,6 +309,49 @@ TEST(Hemicube, TheShootersFormFactorsFollowByReciprocityAndPlacement) {
   EXPECT_EQ(element_counts, counts);
 }
 
+TEST(Hemicube, ReciprocityAboveOneIsCountedAndClampedOnlyWhenAsked) {
+  // A 1 x 1 shooter on z = 0 facing up; a 0.02 x 0.02 receiver 0.01 above its centre facing
+  // down (its point factor from the eye, a square of half-side 1 at distance 1 scaled, about
+  // 0.55, times A_shooter / A_receiver = 2,500: far above 1), and a 1 x 1 receiver 10 above
+  // (about 1/(100 pi) by reciprocity: far below 1).
+  Scene scene;
+  scene.name = "near receiver";
+  Patch shooter;
+  shooter.polygon = Polygon::quad({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});
+  shooter.emission = Rgb(1.0);
+  Patch near;
+  near.polygon = ceiling(0.49, 0.51, 0.49, 0.51, 0.01);
+  Patch far;
+  far.polygon = ceiling(0.0, 1.0, 0.0, 1.0, 10.0);
+  scene.patches = {shooter, near, far};
+  scene.build_elements();
+  const std::vector<HemicubePolygon> receivers = {receiver(scene.patches[1].polygon),
+                                                  receiver(scene.patches[2].polygon)};
+  HemicubeOptions options;
+  WorkCounts counts;
+  const std::vector<double> f = hemicube_form_factors(scene, 0, receivers, {}, options, counts);
+  EXPECT_GT(f[0], 1000.0);
+  EXPECT_LT(f[1], 0.01);
+  EXPECT_EQ(counts.hemicube_reciprocal_above_one, 1u);
+  // Clamped: the near receiver's factor is 1, the far one's unchanged, the count the same.
+  options.reciprocity = HemicubeReciprocity::kClamp;
+  WorkCounts clamped_counts;
+  const std::vector<double> clamped = hemicube_form_factors(scene, 0, receivers, {}, options, clamped_counts);
+  EXPECT_EQ(clamped[0], 1.0);
+  EXPECT_EQ(clamped[1], f[1]);
+  EXPECT_EQ(clamped_counts, counts);
+  // Every eye counts for itself: with the shooter cut into 2 x 2 elements the near receiver
+  // is near no eye (0.25 away), and its factor stays below 1.
+  scene.patches[0].nu = scene.patches[0].nv = 2;
+  scene.build_elements();
+  options.placement = HemicubePlacement::kElements;
+  options.reciprocity = HemicubeReciprocity::kAsComputed;
+  WorkCounts element_counts;
+  const std::vector<double> spread = hemicube_form_factors(scene, 0, receivers, {}, options, element_counts);
+  EXPECT_LT(spread[0], 1.0);
+  EXPECT_EQ(element_counts.hemicube_reciprocal_above_one, 0u);
+}
+
 TEST(Hemicube, WorkOfAOneCellCaseCountedByHand) {
   // N = 10 (cells 0.2 wide). A small ceiling at z = 1 over x in [0.05, 0.25], y in [0.27,
   // 0.47]: on the top face it covers one cell centre, (x, y) = (0.1, 0.3), cell (5, 6).

@@ -3,6 +3,7 @@
 // point-to-rectangle factor of a point under a corner of a parallel rectangle (Howell's
 // catalogue, B-3), summed over the four rectangles a foot point cuts; two-level systems
 // solved by hand; a half-hidden shooter.
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -141,6 +142,112 @@ TEST(StructureSolution, OneSided) {
   scene.patches[1].polygon = Polygon::quad({0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1});
   scene.build_elements();
   EXPECT_EQ(solve(scene, Structure::kPatches, 4).radiosity[0].r, 0.0);
+}
+
+StructureSolve solve_eye(const Scene& scene, Structure structure, int side,
+                         StructureRows* rows_out = nullptr) {
+  StructureOptions options;
+  options.side = side;
+  options.threads = 1;
+  StructureRows rows = eye_form_factors(scene, structure, options);
+  if (rows_out) *rows_out = rows;
+  return solve_structure(scene, rows);
+}
+
+TEST(StructureSolution, HemicubeCentreIsThePointToElementFactorTurnedAround) {
+  // The hemicube's own structure (one eye at the shooter's centroid): the emitting ceiling's
+  // eye (0.5, 0.5, 1) sees each floor element, a 0.5 x 0.5 square with a corner under it at
+  // distance 1 (Howell B-3), and reciprocity gives F(element -> ceiling) = A_ceiling F_q /
+  // A_element = 4 F_q; B = rho 4 F_q. Unoccluded, every cell a closed form: exact.
+  const Scene scene = two_squares(2, Rgb(0.5), Rgb(0.0), Rgb(1.0));
+  const double fq = corner_factor(0.5, 0.5);
+  StructureRows rows;
+  const StructureSolve s = solve_eye(scene, Structure::kHemicubeCentre, 4, &rows);
+  for (int e = 0; e < 4; ++e) {
+    ASSERT_EQ(rows[std::size_t(e)].size(), 1u);
+    EXPECT_EQ(rows[std::size_t(e)][0].shooter, 1);
+    EXPECT_NEAR(rows[std::size_t(e)][0].value, 4.0 * fq, 1e-12) << "element " << e;
+    EXPECT_NEAR(s.radiosity[std::size_t(e)].g, 0.5 * 4.0 * fq, 1e-12);
+  }
+  // Not the receiver-centred structure's: F(centre of an element -> ceiling) differs.
+  EXPECT_GT(std::fabs(4.0 * fq - under_rectangle(0.25, 0.25, 0, 1, 0, 1)), 0.01);
+}
+
+TEST(StructureSolution, HemicubeElementsSumsAnEyeAtEveryShooterElement) {
+  // The ceiling cut into 2 x 2 elements: an eye at each of their centroids (x, y in {0.25,
+  // 0.75}), each of area 0.25: F(floor element -> ceiling) = sum_j 0.25 F(c_j -> e) / 0.25.
+  Scene scene = two_squares(2, Rgb(0.5), Rgb(0.0), Rgb(1.0));
+  scene.patches[1].nu = scene.patches[1].nv = 2;
+  scene.build_elements();
+  StructureRows rows;
+  solve_eye(scene, Structure::kHemicubeElements, 4, &rows);
+  for (int e = 0; e < 4; ++e) {
+    const Polygon& p = scene.elements[std::size_t(e)].polygon;
+    double x0 = 1, x1 = 0, y0 = 1, y1 = 0;
+    for (int c = 0; c < p.count; ++c) {
+      x0 = std::min(x0, p[c].x), x1 = std::max(x1, p[c].x);
+      y0 = std::min(y0, p[c].y), y1 = std::max(y1, p[c].y);
+    }
+    double expected = 0.0;
+    for (double ex : {0.25, 0.75})
+      for (double ey : {0.25, 0.75}) expected += under_rectangle(ex, ey, x0, x1, y0, y1);
+    ASSERT_EQ(rows[std::size_t(e)].size(), 1u);
+    EXPECT_NEAR(rows[std::size_t(e)][0].value, expected, 1e-12) << "element " << e;
+  }
+}
+
+TEST(StructureSolution, HemicubeReciprocityAboveOneIsKept) {
+  // A 0.02 x 0.02 receiver 0.01 below the emitter's centre, facing it: F(eye -> receiver) is
+  // that of a square of half-side 1 at distance 1 (4 x Howell B-3 (1, 1)), and reciprocity
+  // multiplies it by A_emitter / A_receiver = 2,500: far above 1, as the hemicube has it.
+  Scene scene = two_squares(1, Rgb(0.5), Rgb(0.0), Rgb(1.0));
+  scene.patches[0].polygon = Polygon::quad({0.49, 0.49, 0.99}, {0.51, 0.49, 0.99}, {0.51, 0.51, 0.99},
+                                           {0.49, 0.51, 0.99});
+  scene.build_elements();
+  StructureRows rows;
+  solve_eye(scene, Structure::kHemicubeCentre, 4, &rows);
+  ASSERT_EQ(rows[0].size(), 1u);
+  const double point = 4.0 * corner_factor(1.0, 1.0);
+  EXPECT_NEAR(rows[0][0].value, point / 0.0004, 1e-9 * point / 0.0004);
+  EXPECT_GT(rows[0][0].value, 1.0);
+}
+
+TEST(StructureSolution, HemicubeStructureHidesAndIsOneSided) {
+  // A blocker at z = 0.5 over the whole floor's half x < 0.5 hides from the ceiling's eye
+  // (0.5, 0.5, 1) every floor point with x < 0.5 (the rays go down and towards x = 0.5 from
+  // x = 0.5: a point at x < 0.5 is reached through z = 0.5 at x < 0.5): the two elements at
+  // x < 0.5 receive nothing, the two others their whole factor.
+  Scene scene = two_squares(2, Rgb(0.5), Rgb(0.0), Rgb(1.0));
+  Patch blocker;
+  blocker.polygon = Polygon::quad({-1, -1, 0.5}, {-1, 2, 0.5}, {0.5, 2, 0.5}, {0.5, -1, 0.5});
+  scene.patches.push_back(blocker);
+  scene.build_elements();
+  StructureRows rows;
+  solve_eye(scene, Structure::kHemicubeCentre, 4, &rows);
+  const double fq = corner_factor(0.5, 0.5);
+  for (int e = 0; e < 4; ++e) {
+    const bool hidden = scene.elements[std::size_t(e)].centre.x < 0.5;
+    double to_ceiling = 0.0;
+    for (const StructureEntry& entry : rows[std::size_t(e)])
+      if (entry.shooter == 1) to_ceiling = entry.value;
+    EXPECT_NEAR(to_ceiling, hidden ? 0.0 : 4.0 * fq, 1e-9) << "element " << e;
+  }
+  // The floor turned over (its back to the eye) receives nothing.
+  scene = two_squares(1, Rgb(0.5), Rgb(0.0), Rgb(1.0));
+  scene.patches[0].polygon = Polygon::quad({0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0});
+  scene.build_elements();
+  EXPECT_EQ(solve_eye(scene, Structure::kHemicubeCentre, 4).radiosity[0].r, 0.0);
+}
+
+TEST(StructureSolution, StructureNames) {
+  for (Structure s : {Structure::kPatches, Structure::kElements, Structure::kHemicubeCentre,
+                      Structure::kHemicubeElements}) {
+    Structure back = Structure::kPatches;
+    ASSERT_TRUE(structure_of(structure_name(s), &back));
+    EXPECT_EQ(back, s);
+  }
+  Structure unused;
+  EXPECT_FALSE(structure_of("hemicube", &unused));
 }
 
 }  // namespace

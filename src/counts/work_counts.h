@@ -65,7 +65,10 @@ namespace ncube {
   X(hemicube_depth_tests, flops_per_hemicube_depth_test,                                        \
     "hemicube: cells whose centre a polygon covers, depth computed and compared")               \
   X(hemicube_cells_read, flops_per_hemicube_cell_read,                                          \
-    "hemicube: item-buffer cells read out (delta form factor added to the cell's receiver)")
+    "hemicube: item-buffer cells read out (delta form factor added to the cell's receiver)")    \
+  X(hemicube_reciprocal_above_one, flops_per_hemicube_reciprocal_above_one,                     \
+    "hemicube: receivers of a shot whose form factor to the shooter came out above 1 by "       \
+    "reciprocity (an observation of the run, charged nothing)")
 
 // Work a core of today does that the paper's counters do not tell apart, part of the list
 // above (issue 40; docs/machines/probe.md, "Where the prediction misses"): counted always,

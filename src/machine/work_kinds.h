@@ -40,6 +40,7 @@ namespace ncube {
   X(flops_per_hemicube_row_scanned, raster_speed)                                               \
   X(flops_per_hemicube_depth_test, raster_speed)                                                \
   X(flops_per_hemicube_cell_read, raster_speed)                                                 \
+  X(flops_per_hemicube_reciprocal_above_one, raster_speed)                                      \
   X(flops_per_blocked_ray, blocked_ray_speed)                                                   \
   X(flops_per_form_factor_edge_term, edge_term_speed)                                           \
   X(flops_per_render_vertex, arithmetic_speed)                                                  \
@@ -76,7 +77,8 @@ namespace ncube {
   X(flops_per_hemicube_polygon_scanned, arithmetic_speed)                                       \
   X(flops_per_hemicube_row_scanned, arithmetic_speed)                                           \
   X(flops_per_hemicube_depth_test, test_speed)                                                  \
-  X(flops_per_hemicube_cell_read, memory_speed)
+  X(flops_per_hemicube_cell_read, memory_speed)                                                 \
+  X(flops_per_hemicube_reciprocal_above_one, memory_speed)
 
 // X(host work counter, the paper's counter whose work it is). On a platform that charges the
 // host counter, the paper's counter is not charged: the same work, counted as the host does

@@ -112,7 +112,7 @@ FormFactorMethod hemicube() {
   FormFactorMethod m;
   m.name = "hemicube";
   m.doc = "Cohen & Greenberg's hemicube at the shooter (--hemicube-resolution, "
-          "--hemicube-placement, --hemicube-back-faces); V = 0 only";
+          "--hemicube-placement, --hemicube-back-faces, --hemicube-reciprocity); V = 0 only";
   m.shoot = shoot_hemicube;
   m.form_factors = hemicube_shot_form_factors;
   m.without_visibility_processors =
@@ -129,7 +129,8 @@ FormFactorMethod hemicube() {
     return items;
   };
   m.traces_rays = false;
-  m.own_options = {"hemicube_resolution", "hemicube_placement", "hemicube_back_faces"};
+  m.own_options = {"hemicube_resolution", "hemicube_placement", "hemicube_back_faces",
+                   "hemicube_reciprocity"};
   m.changed_options = [](const ProgressiveOptions& options) {
     const HemicubeOptions& o = options.hemicube;
     const HemicubeOptions defaults;
@@ -141,6 +142,10 @@ FormFactorMethod hemicube() {
     if (o.back_faces != defaults.back_faces)
       changed.push_back(std::string("--hemicube-back-faces ") +
                         hemicube_back_faces_name(o.back_faces));
+    // The guard, a variant of the method (docs/model.md, "The hemicube": "Reciprocity").
+    if (o.reciprocity != defaults.reciprocity)
+      changed.push_back(std::string("--hemicube-reciprocity ") +
+                        hemicube_reciprocity_name(o.reciprocity));
     return changed;
   };
   m.refused_options = [](const ProgressiveOptions& options) {
@@ -156,7 +161,9 @@ FormFactorMethod hemicube() {
   m.counted = [](const WorkCounts& counts) {
     return std::make_pair(std::string("hemicube cells"),
                           std::to_string(counts.hemicube_depth_tests) + " depth-tested, " +
-                              std::to_string(counts.hemicube_cells_read) + " read out");
+                              std::to_string(counts.hemicube_cells_read) + " read out, " +
+                              std::to_string(counts.hemicube_reciprocal_above_one) +
+                              " receivers' form factors above 1 by reciprocity");
   };
   m.counter_prefix = "hemicube_";
   return m;

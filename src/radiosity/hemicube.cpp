@@ -16,6 +16,10 @@ const char* hemicube_back_faces_name(HemicubeBackFaces back_faces) {
   return back_faces == HemicubeBackFaces::kBlock ? "block" : "pass";
 }
 
+const char* hemicube_reciprocity_name(HemicubeReciprocity reciprocity) {
+  return reciprocity == HemicubeReciprocity::kAsComputed ? "as-computed" : "clamp";
+}
+
 bool is_valid_hemicube_resolution(int resolution) {
   return resolution >= kMinHemicubeResolution && resolution <= kMaxHemicubeResolution &&
          resolution % 2 == 0;
@@ -292,9 +296,15 @@ std::vector<double> hemicube_form_factors(const Scene& scene, int shooter_patch,
                         element.area(), sums, counts, options.back_faces);
       }
   }
-  // Reciprocity: F(k -> shooter) = F(shooter -> k) A_shooter / A_k.
-  for (std::size_t k = 0; k < receivers.size(); ++k)
+  // Reciprocity: F(k -> shooter) = F(shooter -> k) A_shooter / A_k. Above 1 it is counted
+  // (an observation, charged nothing) and, with kClamp, taken as 1.
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
     sums[k] = receivers[k].area > 0.0 ? sums[k] / receivers[k].area : 0.0;
+    if (sums[k] > 1.0) {
+      ++counts.hemicube_reciprocal_above_one;
+      if (options.reciprocity == HemicubeReciprocity::kClamp) sums[k] = 1.0;
+    }
+  }
   return sums;
 }
 

@@ -50,6 +50,18 @@ const char* hemicube_placement_name(HemicubePlacement placement);  // "centre", 
 enum class HemicubeBackFaces { kBlock, kPass };
 const char* hemicube_back_faces_name(HemicubeBackFaces back_faces);  // "block", "pass"
 
+// What the shooter's reciprocity does with a factor it makes above 1. F(receiver -> shooter)
+// = A_shooter F(eye -> receiver) / A_receiver comes out above 1 (no receiver can send more
+// than all of its light anywhere) where a small receiver stands close in front of the eye:
+// the eye's point factor stands for the whole shooter (the proximity error). kAsComputed
+// (the default) keeps it, as the classic method does; kClamp takes min(1, F), a guard
+// assumed here, not taken from a source (the literature's remedy for near receivers is to
+// integrate over the shooter instead: receiver-centred rays, Wallace, Elmquist & Haines 1989,
+// which is the paper's method). Every run counts such receivers either way
+// (counts.hemicube_reciprocal_above_one).
+enum class HemicubeReciprocity { kAsComputed, kClamp };
+const char* hemicube_reciprocity_name(HemicubeReciprocity reciprocity);  // "as-computed", "clamp"
+
 // N, top-face cells on a side: even (the side faces are N x N/2).
 constexpr int kMinHemicubeResolution = 2;
 constexpr int kMaxHemicubeResolution = 2000;
@@ -59,6 +71,7 @@ struct HemicubeOptions {
   int resolution = 100;  // the era's public codes (Graphics Gems II, HELIOS)
   HemicubePlacement placement = HemicubePlacement::kCentre;
   HemicubeBackFaces back_faces = HemicubeBackFaces::kBlock;
+  HemicubeReciprocity reciprocity = HemicubeReciprocity::kAsComputed;
 };
 
 // The delta form factors of every cell: top[j * N + i] for the top face's cell (i, j), x and

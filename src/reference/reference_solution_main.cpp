@@ -108,7 +108,13 @@ int run_structure(const Scene& scene, const std::string& scene_file, reference::
     reference::StructureOptions options;
     options.side = int(std::lround(std::sqrt(double(points))));
     options.threads = threads;
-    return reference::solve_structure(shooters, reference::structure_form_factors(shooters, options, &stats));
+    const bool eye = structure == reference::Structure::kHemicubeCentre ||
+                     structure == reference::Structure::kHemicubeElements;
+    const reference::StructureRows rows =
+        eye ? reference::eye_form_factors(shooters, structure, options, &stats)
+            : reference::structure_form_factors(shooters, options, &stats);
+    if (eye && points == samples) run.above_one = reference::entries_above_one(rows);
+    return reference::solve_structure(shooters, rows);
   };
   const reference::StructureSolve check = solve(run.check_samples, run.check_stats);
   run.solve = solve(samples, run.stats);
@@ -170,8 +176,12 @@ int run(int argc, char** argv) {
                  "instead of the reference, the exact solution of ./simulate's own structure "
                  "(receivers at element centres, shooters sending their elements' mean) with "
                  "exact form factors: patches (the paper's two levels) or elements (every "
-                 "element its own patch); --samples is then K visibility points a shooter")
-      ->check(CLI::IsMember({"patches", "elements"}));
+                 "element its own patch); or the hemicube's own structure, point-to-element "
+                 "factors from an eye on the shooter turned around by reciprocity: "
+                 "hemicube-centre (one eye at the shooter's centroid) or hemicube-elements (an "
+                 "eye at each shooter element's centroid); --samples is then K visibility "
+                 "points a shooter (the hemicube's: a receiving element)")
+      ->check(CLI::IsMember({"patches", "elements", "hemicube-centre", "hemicube-elements"}));
   // ---- end
   try {
     app.parse(argc, argv);
@@ -204,10 +214,9 @@ int run(int argc, char** argv) {
   const Scene scene = load_scene(scene_file);
   if (!structure_choice.empty()) {  // the exact structure's block (run_structure above)
     OutputFiles outputs({{"--out", out_path}, {"--mesh", mesh_path}}, {scene_file});
-    return run_structure(scene, scene_file,
-                         structure_choice == "patches" ? reference::Structure::kPatches
-                                                       : reference::Structure::kElements,
-                         samples, threads, quiet, mesh_path, outputs);
+    reference::Structure structure = reference::Structure::kPatches;
+    reference::structure_of(structure_choice, &structure);  // one of the names checked above
+    return run_structure(scene, scene_file, structure, samples, threads, quiet, mesh_path, outputs);
   }
   // The scene solved: every patch's grid `refine` times finer. Its parts tile each element
   // exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's element

@@ -44,11 +44,27 @@ bool some_corner_in_front(const Polygon& polygon, const Vec3& point, const Vec3&
 }  // namespace
 
 std::string structure_name(Structure structure) {
-  return structure == Structure::kPatches ? "patches" : "elements";
+  switch (structure) {
+    case Structure::kPatches: return "patches";
+    case Structure::kElements: return "elements";
+    case Structure::kHemicubeCentre: return "hemicube-centre";
+    case Structure::kHemicubeElements: return "hemicube-elements";
+  }
+  return "";
+}
+
+bool structure_of(const std::string& name, Structure* structure) {
+  for (Structure s : {Structure::kPatches, Structure::kElements, Structure::kHemicubeCentre,
+                      Structure::kHemicubeElements})
+    if (structure_name(s) == name) {
+      *structure = s;
+      return true;
+    }
+  return false;
 }
 
 Scene shooter_scene(const Scene& scene, Structure structure) {
-  if (structure == Structure::kPatches) return scene;
+  if (structure != Structure::kElements) return scene;
   Scene own;
   own.name = scene.name;
   own.camera = scene.camera;
@@ -126,6 +142,87 @@ StructureRows structure_form_factors(const Scene& shooters, const StructureOptio
   return rows;
 }
 
+StructureRows eye_form_factors(const Scene& scene, Structure structure,
+                               const StructureOptions& options, StructureStats* stats) {
+  if (options.side < 2 || options.side % 2 != 0)
+    throw std::invalid_argument("eye_form_factors: side must be even and >= 2");
+  if (structure != Structure::kHemicubeCentre && structure != Structure::kHemicubeElements)
+    throw std::invalid_argument("eye_form_factors: not a hemicube structure");
+  const int cells = options.side / kPointsPerCellSide;  // g: cells on a side of a receiver
+  const int n = int(scene.elements.size());
+  const int patches = int(scene.patches.size());
+  const RayVisibility rays(scene);
+  // Every shooter's eyes: (point, area weight), as src/radiosity/hemicube.cpp places them
+  // (the centroid of the patch, or of each cell of its nu x nv grid).
+  struct Eye {
+    Vec3 point;
+    double area;
+  };
+  std::vector<std::vector<Eye>> eyes(static_cast<std::size_t>(patches));
+  for (int p = 0; p < patches; ++p) {
+    const Patch& shooter = scene.patches[std::size_t(p)];
+    if (structure == Structure::kHemicubeCentre) {
+      eyes[std::size_t(p)].push_back({shooter.polygon.centroid(), shooter.area});
+    } else {
+      for (int j = 0; j < shooter.nv; ++j)
+        for (int i = 0; i < shooter.nu; ++i) {
+          const Polygon element = grid_cell(shooter.polygon, shooter.nu, shooter.nv, i, j);
+          eyes[std::size_t(p)].push_back({element.centroid(), element.area()});
+        }
+    }
+  }
+  StructureRows rows(static_cast<std::size_t>(n));
+  long long ray_total = 0, pair_total = 0;
+  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) reduction(+ : ray_total, pair_total)
+  for (int e = 0; e < n; ++e) {
+    const Element& receiver = scene.elements[std::size_t(e)];
+    const Vec3& ne = scene.patches[std::size_t(receiver.patch)].normal;
+    std::vector<Polygon> receiver_cells;
+    for (int j = 0; j < cells; ++j)
+      for (int i = 0; i < cells; ++i) receiver_cells.push_back(grid_cell(receiver.polygon, cells, cells, i, j));
+    for (int p = 0; p < patches; ++p) {
+      if (p == receiver.patch) continue;  // the shooter's own elements lie in the eye's plane
+      const Patch& shooter = scene.patches[std::size_t(p)];
+      double sum = 0.0;  // sum over the eyes of A_eye F(eye -> e)
+      for (std::size_t k = 0; k < eyes[std::size_t(p)].size(); ++k) {
+        const Eye& eye = eyes[std::size_t(p)][k];
+        // One-sided: the receiver receives on its front only (the hemicube gives a polygon
+        // seen from behind nothing), and something of it must lie in front of the eye.
+        if (glm::dot(ne, eye.point - receiver.polygon[0]) <= 0.0) continue;
+        if (!some_corner_in_front(receiver.polygon, eye.point, shooter.normal)) continue;
+        ++pair_total;
+        double factor = 0.0;
+        for (int c = 0; c < cells * cells; ++c) {
+          const Polygon& cell = receiver_cells[std::size_t(c)];
+          const double unoccluded = point_polygon_factor(eye.point, shooter.normal, cell);
+          if (unoccluded <= 0.0) continue;
+          const std::vector<AreaSample> points = stratified_points(
+              cell, kPointsPerCellSide,
+              mix_seed(options.seed, std::uint64_t(e),
+                       (std::uint64_t(p) * 65536u + std::uint64_t(k)) * std::uint64_t(cells * cells) +
+                           std::uint64_t(c)));
+          double seen = 0.0, all = 0.0;
+          for (const AreaSample& y : points) {
+            // The kernel seen from the eye: the receiver's point y with normal ne.
+            const double weight = kernel_weight(eye.point, shooter.normal, y, ne);
+            if (weight <= 0.0) continue;
+            all += weight;
+            ++ray_total;
+            if (rays.visible(eye.point, shooter.normal, y.point, ne)) seen += weight;
+          }
+          factor += unoccluded * (all > 0.0 ? seen / all : 1.0);
+        }
+        sum += eye.area * factor;
+      }
+      // Reciprocity, as the hemicube applies it: F(e -> p) = sum_eyes A_eye F(eye -> e) / A_e.
+      if (sum > 0.0) rows[std::size_t(e)].push_back({p, sum / receiver.area});
+    }
+  }
+  if (stats) *stats = {ray_total, pair_total};
+  return rows;
+}
+
 StructureSolve solve_structure(const Scene& shooters, const StructureRows& rows, double tolerance,
                                int max_sweeps) {
   const std::size_t n = shooters.elements.size();
@@ -176,12 +273,24 @@ std::string structure_text(const Scene& scene, const StructureRun& run) {
   out["code_version"] = code_version();
   out["structure"] = structure_name(run.structure);
   out["method"] =
-      "the exact solution of ./simulate's structure: every element receives at its centre, "
-      "every " + std::string(run.structure == Structure::kPatches ? "patch" : "element (its own patch)") +
-      " shoots its elements' area-weighted mean radiosity; F(centre -> shooter) = the shooter cut "
-      "into cells, each cell's closed-form point-to-polygon factor (Lambert) times the "
-      "kernel-weighted visible share of 2 x 2 jittered Embree rays; Gauss-Seidel to "
-      "convergence (docs/accuracy.md)";
+      run.structure == Structure::kPatches || run.structure == Structure::kElements
+          ? "the exact solution of ./simulate's structure: every element receives at its "
+            "centre, every " +
+                std::string(run.structure == Structure::kPatches ? "patch" : "element (its own patch)") +
+                " shoots its elements' area-weighted mean radiosity; F(centre -> shooter) = the "
+                "shooter cut into cells, each cell's closed-form point-to-polygon factor "
+                "(Lambert) times the kernel-weighted visible share of 2 x 2 jittered Embree "
+                "rays; Gauss-Seidel to convergence (docs/accuracy.md)"
+          : "the exact solution of the hemicube's structure (" +
+                std::string(run.structure == Structure::kHemicubeCentre
+                                ? "one eye at the shooter's centroid"
+                                : "an eye at each shooter element's centroid, weighted by its area") +
+                "): F(element -> shooter) = sum over the eyes of A_eye F(eye -> element) / "
+                "A_element (reciprocity as the hemicube applies it, not clamped), F(eye -> "
+                "element) = the element cut into cells, each cell's closed-form point-to-polygon "
+                "factor (Lambert) times the kernel-weighted visible share of 2 x 2 jittered "
+                "Embree rays from the eye; every patch shoots its elements' area-weighted mean "
+                "radiosity; Gauss-Seidel to convergence (docs/accuracy.md)";
   out["samples"] = run.samples;
   out["check_samples"] = run.check_samples;
   out["self_agreement"] = {{"element_rms", run.self_element_rms},
@@ -213,8 +322,26 @@ std::string structure_text(const Scene& scene, const StructureRun& run) {
     text += (e ? ",\n  " : "\n  ") +
             nlohmann::json({scene.elements[e].patch, scene.elements[e].area, b.r, b.g, b.b}).dump();
   }
-  text += "\n ]\n}\n";
+  text += "\n ]";
+  if (run.structure == Structure::kHemicubeCentre || run.structure == Structure::kHemicubeElements) {
+    // Where reciprocity gave a factor above 1: [element, shooter, F(element -> shooter)].
+    text += ",\n \"above_one_columns\": [\"element\", \"shooter\", \"factor\"],\n \"above_one\": [";
+    for (std::size_t k = 0; k < run.above_one.size(); ++k)
+      text += (k ? ",\n  " : "\n  ") +
+              nlohmann::json({run.above_one[k].first, run.above_one[k].second.shooter,
+                              run.above_one[k].second.value}).dump();
+    text += "\n ]";
+  }
+  text += "\n}\n";
   return text;
+}
+
+std::vector<std::pair<int, StructureEntry>> entries_above_one(const StructureRows& rows) {
+  std::vector<std::pair<int, StructureEntry>> out;
+  for (std::size_t e = 0; e < rows.size(); ++e)
+    for (const StructureEntry& entry : rows[e])
+      if (entry.value > 1.0) out.push_back({int(e), entry});
+  return out;
 }
 
 }  // namespace ncube::reference

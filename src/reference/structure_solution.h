@@ -19,17 +19,35 @@
 //
 // The structure "elements" (every element its own patch) is the same with each element
 // shooting its own radiosity: point collocation at the centres with constant elements.
+//
+// The hemicube's own structures (docs/accuracy.md, "Each method against its own structure"):
+// the hemicube does not receive at element centres; it reads a receiver off by the cells its
+// whole polygon covers, seen from an eye on the shooter, and turns that point factor around by
+// reciprocity. Its exact counterpart, "hemicube-centre", puts F(e -> p) = A_p F(c_p -> e) / A_e
+// with c_p the shooter's centroid (the eye of --hemicube-placement centre) and F(c -> e) =
+// integral over the element e of cos cos / (pi r^2) V dA, one-sided (nothing when the eye is
+// behind e's plane; e cut to the eye's front half-space); "hemicube-elements" sums the same
+// over an eye at each of the shooter's elements' centroids, weighted by their areas
+// (--hemicube-placement elements): F(e -> p) = sum_j A_j F(c_j -> e) / A_e. Reciprocity is
+// kept as the hemicube keeps it, so a factor may exceed 1 (a small receiver close in front of
+// an eye). The patch still shoots its elements' mean (the same solve). F(c -> e) is the same
+// reference code turned around: e cut into g x g cells, each cell's closed form times the
+// kernel-weighted visible share of 2 x 2 jittered points of the cell, rays from the eye.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene.h"
 
 namespace ncube::reference {
 
-enum class Structure { kPatches, kElements };
+enum class Structure { kPatches, kElements, kHemicubeCentre, kHemicubeElements };
+// The structure of a name ("patches", "elements", "hemicube-centre", "hemicube-elements");
+// false for another name.
+bool structure_of(const std::string& name, Structure* structure);
 
 struct StructureOptions {
   int side = 32;              // sqrt(K): K = side^2 visibility points a shooter; even
@@ -69,6 +87,12 @@ struct StructureSolve {
   double last_change = 0.0;
 };
 
+// The hemicube's structures: F(e -> p) for every element e of `scene` and patch p, from an
+// eye at p's centroid (kHemicubeCentre) or at each of p's elements' centroids
+// (kHemicubeElements), by reciprocity (above).
+StructureRows eye_form_factors(const Scene& scene, Structure structure,
+                               const StructureOptions& options, StructureStats* stats = nullptr);
+
 // Gauss-Seidel sweeps until no element's luminance changes by more than `tolerance` of the
 // largest.
 StructureSolve solve_structure(const Scene& shooters, const StructureRows& rows,
@@ -89,9 +113,15 @@ struct StructureRun {
   double self_element_rms = 0.0, self_patch_rms = 0.0, self_patch_max = 0.0;
   int self_worst_patch = -1;
   std::vector<Rgb> check_radiosity;  // the K/4 solution, each element's luminance in the file
+  // The hemicube's structures only: every (element, shooter) whose factor F(element ->
+  // shooter) came out above 1 by reciprocity, with the factor (written as "above_one").
+  std::vector<std::pair<int, StructureEntry>> above_one;
   double host_seconds = 0.0;
 };
 
 std::string structure_text(const Scene& scene, const StructureRun& run);
+
+// The entries of `rows` above 1, (element, entry) in element order.
+std::vector<std::pair<int, StructureEntry>> entries_above_one(const StructureRows& rows);
 
 }  // namespace ncube::reference

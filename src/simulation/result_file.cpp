@@ -90,6 +90,7 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
                  {"hemicube_resolution", config.options.hemicube.resolution},
                  {"hemicube_placement", hemicube_placement_name(config.options.hemicube.placement)},
                  {"hemicube_back_faces", hemicube_back_faces_name(config.options.hemicube.back_faces)},
+                 {"hemicube_reciprocity", hemicube_reciprocity_name(config.options.hemicube.reciprocity)},
                  {"convergence_fraction", config.options.convergence_fraction},
                  {"max_iterations", config.options.max_iterations},
                  {"block_size", config.block_size},
@@ -121,6 +122,8 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   // every hemicube run did before the option (--hemicube-back-faces).
   if (config.options.hemicube.back_faces == HemicubeBackFaces::kBlock)
     j["config"].erase("hemicube_back_faces");
+  if (config.options.hemicube.reciprocity == HemicubeReciprocity::kAsComputed)
+    j["config"].erase("hemicube_reciprocity");
   if (parallelisations().at(config.parallelisation).name == parallelisations().paper_default().name)
     for (const char* field : {"parallelisation", "shooters_per_iteration"}) j["config"].erase(field);
   j["status"] = status_name(result.status);

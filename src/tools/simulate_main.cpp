@@ -81,6 +81,9 @@ void print_summary(std::FILE* out, const ncube::Scene& scene, const ncube::Simul
   if (config.options.hemicube.back_faces != ncube::HemicubeBackFaces::kBlock)
     std::fprintf(out, "hemicube back faces   %s (seen from behind, a polygon is culled)\n",
                  ncube::hemicube_back_faces_name(config.options.hemicube.back_faces));
+  if (config.options.hemicube.reciprocity != ncube::HemicubeReciprocity::kAsComputed)
+    std::fprintf(out, "hemicube reciprocity  %s (a form factor to the shooter at most 1)\n",
+                 ncube::hemicube_reciprocity_name(config.options.hemicube.reciprocity));
   std::fprintf(out, "status                %s\n", ncube::status_name(r.status));
   if (r.status == ncube::RunStatus::kOutOfMemory)
     std::fprintf(out, "                      node %d (%s processor) needs %.0f bytes, has %.0f\n",

@@ -120,6 +120,14 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "(block), or is culled and passes the light on (pass); it receives nothing "
                "either way",
                "hemicube_back_faces");
+  // The reciprocity's guard: as computed, the default, as every run before the option;
+  // recorded for `clamp` runs only, so that every earlier hemicube result file stays as it was.
+  std::string hemicube_reciprocity = hemicube_reciprocity_name(config.options.hemicube.reciprocity);
+  table.choice("--hemicube-reciprocity", hemicube_reciprocity, {"as-computed", "clamp"},
+               "hemicube: a receiver's form factor to the shooter by reciprocity, which can "
+               "come out above 1 for a small receiver near the eye, kept (as-computed) or taken "
+               "as at most 1 (clamp, a guard assumed, not from a source); counted either way",
+               "hemicube_reciprocity");
   // The result file records the method for every run but the paper's and each method's own
   // options for its runs only (so that the paper's runs keep their files); the sweep tool
   // compares them likewise and reads each method's rules (tools/method_options.h).
@@ -127,6 +135,9 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   table.annotate("--hemicube-back-faces", "recorded_when",
                  {{"form_factors", nlohmann::json::array({"hemicube"})},
                   {"hemicube_back_faces", "pass"}});
+  table.annotate("--hemicube-reciprocity", "recorded_when",
+                 {{"form_factors", nlohmann::json::array({"hemicube"})},
+                  {"hemicube_reciprocity", "clamp"}});
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",
@@ -316,6 +327,9 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
       hemicube_placement == "elements" ? HemicubePlacement::kElements : HemicubePlacement::kCentre;
   config.options.hemicube.back_faces =
       hemicube_back_faces == "pass" ? HemicubeBackFaces::kPass : HemicubeBackFaces::kBlock;
+  config.options.hemicube.reciprocity = hemicube_reciprocity == "clamp"
+                                            ? HemicubeReciprocity::kClamp
+                                            : HemicubeReciprocity::kAsComputed;
   config.render.enabled = render_parallel != "off";
   config.render.partition =
       render_parallel == "scanlines" ? RowPartition::kScanlines : RowPartition::kBlocks;
