@@ -35,7 +35,7 @@ for program in $programs; do
   for flag in $(printf '%s' "$options" | /usr/bin/python3 -c '
 import json, sys
 for option in json.load(sys.stdin):
-    if option["type"] in ("int", "whole_number") and option["nargs"] is None:
+    if option["flags"] and option["type"] in ("int", "whole_number") and option["nargs"] is None:
         print(option["flags"][-1])'); do
     for value in 0x10; do
       (cd "$work" && timeout 30 /usr/bin/python3 "$root/$program" "$flag" "$value" \
