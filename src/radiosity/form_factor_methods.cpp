@@ -130,6 +130,8 @@ FormFactorMethod hemicube() {
   };
   m.traces_rays = false;
   m.own_options = {"hemicube_resolution", "hemicube_placement", "hemicube_back_faces"};
+  // Every hemicube run blocked at back faces before --hemicube-back-faces existed.
+  m.recorded_unless = {{"hemicube_back_faces", "block"}};
   m.changed_options = [](const ProgressiveOptions& options) {
     const HemicubeOptions& o = options.hemicube;
     const HemicubeOptions defaults;
