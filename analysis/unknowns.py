@@ -29,7 +29,7 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 import numpy as np  # noqa: E402
 
 from ncube import opening as op  # noqa: E402
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file  # noqa: E402
 from ncube import page as page_rule  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, ROOT  # noqa: E402
 
@@ -698,10 +698,10 @@ def main():
         print(f"unknowns: {e}; nothing written", file=sys.stderr)
         return 2
     if not args.summary:
-        output_file.write(out / "unknowns-worlds.json",
+        page_rule.write(out / "unknowns-worlds.json",
                           json.dumps(summary, indent=1, sort_keys=True) + "\n")
     figure(summary, out / "figures" / figure_name)
-    output_file.write(out / "unknowns.md", text)
+    page_rule.write(out / "unknowns.md", text)
     print(f"unknowns: {len(summary['worlds']) - 1} worlds; written: {out / 'unknowns.md'}, "
           f"{out / 'figures' / figure_name}; {time.time() - started:.0f} s wall time")
     return 0

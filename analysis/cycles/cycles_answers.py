@@ -57,7 +57,8 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import numpy as np  # noqa: E402
 
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file  # noqa: E402
+from ncube import page  # noqa: E402
 
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 SCENE_DIAGONAL = 10.0
@@ -81,13 +82,17 @@ def resolve_scene(name):
 
 def load_scene(path):
     data = input_file.read_input_bytes(path, "scene file", input_file.SCENE_FILE_BYTES)
+    # The gate's strict JSON (nesting bounded, a NaN anywhere refused) on the bytes hashed.
+    scene = input_file.read_json(path, "scene file", input_file.SCENE_FILE_BYTES)
     try:
-        depth = input_file.json_depth_problem(data.decode("utf-8", errors="replace"))
-        if depth:
-            raise Refusal(f"{path}: {depth}", 2)
-        scene = json.loads(data, parse_constant=lambda name: float("nan"))
         patches = []
         for index, patch in enumerate(scene["patches"]):
+            for item in ("vertices", "reflectance", "emission"):
+                values = patch.get(item, [])
+                flat = [v for row in values for v in (row if isinstance(row, list) else [row])] \
+                    if isinstance(values, list) else [values]
+                if any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in flat):
+                    raise Refusal(f"{path}: patch {index}: {item}: not numbers", 2)
             corners = np.array(patch["vertices"], dtype=float)
             if corners.shape not in ((3, 3), (4, 3)):
                 raise Refusal(f"{path}: patch {index}: vertices: 3 or 4 points of 3 coordinates", 2)
@@ -163,6 +168,9 @@ def read_bake(job_path, job, quads):
 def run(args):
     scene_path = resolve_scene(args.scene)
     name, patches, sha256 = load_scene(scene_path)
+    # The output under the output rule before minutes of baking (onto the scene, a folder, a
+    # missing folder: one line, exit 2 or 5).
+    page.check_outputs("cycles_answers", [args.out], folders_made=False)
     blender = shutil.which(args.blender)
     if blender is None:
         raise Refusal(f"--blender {args.blender}: not found (Debian: apt-get install blender)", 2)
@@ -236,7 +244,10 @@ def run(args):
     text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
     text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])
                                           for r in rows) + "\n ]\n}\n"
-    output_file.write(args.out, text)
+    # Its answers are committed (analysis/cycles/SCENE.json, experiments/claims/cycles-answers).
+    code = page.write_output("cycles_answers", "--out", args.out, text, replace_committed=True)
+    if code:
+        raise SystemExit(code)   # its one line said why
     return rows
 
 

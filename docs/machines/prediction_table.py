@@ -166,6 +166,17 @@ def main():
     parser.add_argument("--repeats", type=int, default=3, help="processes a measurement (least)")
     parser.add_argument("--print", action="store_true", help="print the table, write no page")
     args = parser.parse_args()
+    if not 1 <= args.repeats <= 100:
+        parser.error("argument --repeats: from 1 to 100")
+    for binary in (SIMULATE, PROBE):
+        if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+            print("prediction_table.py: it runs %s, which is not built (cmake --build build -j2); "
+                  "nothing written" % os.path.relpath(binary, ROOT), file=sys.stderr)
+            return 2
+    if args.platform and not os.path.isfile(args.platform):
+        print("prediction_table.py: --platform %s: not a regular file; nothing written"
+              % args.platform, file=sys.stderr)
+        return 2
     with tempfile.TemporaryDirectory() as work:
         platform = args.platform
         if not platform:

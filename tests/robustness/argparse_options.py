@@ -34,15 +34,21 @@ def describe(parser, *_args, **_kwargs):
     raise Parsed
 
 
-argparse.ArgumentParser.parse_args = describe
-argparse.ArgumentParser.parse_known_args = describe
-program = sys.argv[1]
-sys.argv = [program]
-sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(program)))
-try:
-    runpy.run_path(program, run_name="__main__")
-except Parsed:
-    sys.exit(0)
-except SystemExit:
-    pass
-print("null")
+def install():
+    """Makes every parser print its options and stop (Parsed) instead of parsing."""
+    argparse.ArgumentParser.parse_args = describe
+    argparse.ArgumentParser.parse_known_args = describe
+
+
+if __name__ == "__main__":
+    install()
+    program = sys.argv[1]
+    sys.argv = [program]
+    sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(program)))
+    try:
+        runpy.run_path(program, run_name="__main__")
+    except Parsed:
+        sys.exit(0)
+    except SystemExit:
+        pass
+    print("null")
