@@ -271,11 +271,21 @@ def _imported(path):
     return json.loads(run.stdout)
 
 
+_summaries = {}   # (path, signature) -> (name, patches): a grid names a scene in many cells
+
+
 def scene_summary(path):
-    """(name, patches) of a scene file, or of a model as imported."""
+    """(name, patches) of a scene file, or of a model as imported; read again only when the
+    file has changed (a study's 258 cells parsed its scenes 258 times)."""
+    key = (str(path), _signature(path))
+    if key[1] is not None and key in _summaries:
+        return _summaries[key]
     scene = (_imported(str(path)) if is_model(path)
              else json.loads(read_input(path, "scene file", input_file.SCENE_FILE_BYTES)))
-    return scene.get("name", Path(path).stem), len(scene.get("patches", []))
+    summary = scene.get("name", Path(path).stem), len(scene.get("patches", []))
+    if key[1] is not None:
+        _summaries[key] = summary
+    return summary
 
 
 def _signature(file):

@@ -183,7 +183,36 @@ def describe(path, cwd):
     return options or []
 
 
-def _run_child(path, argv, folder, out, err, memory_bytes, cpu_seconds):
+def preload(tree):
+    """Imports the tree's own shared library (analysis/ncube: the same files the programs
+    import, so their paths are the tree's) once, before any fork: a case then compiles none of
+    it again (PYTHONDONTWRITEBYTECODE leaves no bytecode to reuse)."""
+    import importlib
+    sys.path.insert(0, str(tree / "analysis"))
+    for module in sorted((tree / "analysis" / "ncube").glob("*.py")):
+        if module.stem != "__init__":
+            try:
+                importlib.import_module("ncube." + module.stem)
+            except Exception:   # a module that needs what a case gives it: imported there
+                pass
+
+
+def compiled(path):
+    """The program's code, compiled once for all its cases."""
+    return compile(Path(path).read_bytes(), path, "exec")
+
+
+def run_as_main(path, code):
+    """What runpy.run_path does, with `code` compiled once: the program as __main__."""
+    import types
+    module = types.ModuleType("__main__")
+    module.__file__ = path
+    module.__builtins__ = __builtins__
+    sys.modules["__main__"] = module
+    exec(code, module.__dict__)
+
+
+def _run_child(path, code, argv, folder, out, err, memory_bytes, cpu_seconds):
     os.setsid()
     resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
@@ -199,7 +228,7 @@ def _run_child(path, argv, folder, out, err, memory_bytes, cpu_seconds):
     sys.path.insert(0, str(Path(path).parent))
     code = 0
     try:
-        runpy.run_path(path, run_name="__main__")
+        run_as_main(path, code)
     except SystemExit as e:
         if e.code is None:
             code = 0
@@ -500,6 +529,7 @@ def prepare(case, folder, tree, files):
 def run_program(program, cases, tree, work, files, args, memory_bytes, results):
     """Runs `cases` of one program, `args.jobs` at once; appends (case, problems, seconds)."""
     path = str(tree / program)
+    code = compiled(path)
     pending = list(enumerate(cases))
     running = {}
     while pending or running:
@@ -516,7 +546,7 @@ def run_program(program, cases, tree, work, files, args, memory_bytes, results):
             sys.stderr.flush()
             pid = os.fork()
             if pid == 0:
-                _run_child(path, argv, folder, out, err, memory_bytes, int(args.timeout))
+                _run_child(path, code, argv, folder, out, err, memory_bytes, int(args.timeout))
             running[pid] = (case, time.monotonic(), out, err, reader, None)
         time.sleep(0.02)
         for pid in list(running):
@@ -601,6 +631,7 @@ def main():
         work.mkdir()
         copy_tree(root, tree)
         before = status(tree)
+        preload(tree)
         for program, is_open in programs():
             if args.only and program != args.only:
                 continue
