@@ -212,7 +212,7 @@ def run_as_main(path, code):
     exec(code, module.__dict__)
 
 
-def _run_child(path, code, argv, folder, out, err, memory_bytes, cpu_seconds):
+def _run_child(path, program_code, argv, folder, out, err, memory_bytes, cpu_seconds):
     os.setsid()
     resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
@@ -228,7 +228,7 @@ def _run_child(path, code, argv, folder, out, err, memory_bytes, cpu_seconds):
     sys.path.insert(0, str(Path(path).parent))
     code = 0
     try:
-        run_as_main(path, code)
+        run_as_main(path, program_code)
     except SystemExit as e:
         if e.code is None:
             code = 0
@@ -529,7 +529,7 @@ def prepare(case, folder, tree, files):
 def run_program(program, cases, tree, work, files, args, memory_bytes, results):
     """Runs `cases` of one program, `args.jobs` at once; appends (case, problems, seconds)."""
     path = str(tree / program)
-    code = compiled(path)
+    program_code = compiled(path)
     pending = list(enumerate(cases))
     running = {}
     while pending or running:
@@ -546,7 +546,8 @@ def run_program(program, cases, tree, work, files, args, memory_bytes, results):
             sys.stderr.flush()
             pid = os.fork()
             if pid == 0:
-                _run_child(path, code, argv, folder, out, err, memory_bytes, int(args.timeout))
+                _run_child(path, program_code, argv, folder, out, err, memory_bytes,
+                           int(args.timeout))
             running[pid] = (case, time.monotonic(), out, err, reader, None)
         time.sleep(0.02)
         for pid in list(running):
@@ -603,9 +604,11 @@ def copy_tree(root, tree):
                     "-q", "-m", "the tree under test"], **quiet)
 
 
-def status(tree):
-    return subprocess.run(["git", "status", "--porcelain", "--ignored"], capture_output=True,
-                          text=True, cwd=tree).stdout
+def status(tree, ignored=True):
+    """`git status` of `tree`, its ignored files too (a results/ folder made in the copy);
+    the repository's own without them (other tests' build outputs come and go meanwhile)."""
+    return subprocess.run(["git", "status", "--porcelain"] + (["--ignored"] if ignored else []),
+                          capture_output=True, text=True, cwd=tree).stdout
 
 
 def main():
@@ -620,7 +623,7 @@ def main():
     root, simulate = Path(args.root).resolve(), Path(args.simulate).resolve()
     for variable in ("NCUBE_SIMULATE", "NCUBE_ROOT"):
         os.environ.pop(variable, None)
-    root_status = status(root)
+    root_status = status(root, ignored=False)
     adopt_orphans()
     # The address space of this process (numpy's and matplotlib's mappings) plus 1 GiB each.
     memory_bytes = _address_space() + (1 << 30)
@@ -656,7 +659,7 @@ def main():
                 print(f"FAIL {program}: the tree changed: {now.strip()[:500]}")
                 subprocess.run(["git", "checkout", "-q", "--", "."], cwd=tree)
                 subprocess.run(["git", "clean", "-qfdx"], cwd=tree)
-    if status(root) != root_status:
+    if status(root, ignored=False) != root_status:
         failures += 1
         print("FAIL: the repository's own tree changed")
     print(f"options_harness: {total} cases of {len(programs())} programs, {failures} failed, "
