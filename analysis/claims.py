@@ -31,7 +31,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
-from ncube import (accuracy, claim_one, error_parts, output_file, page, paths, plotting,  # noqa: E402
+from ncube import (accuracy, claim_one, error_parts, page, paths, plotting,  # noqa: E402
                    runner, sweep)
 from ncube import opening as op  # noqa: E402
 
@@ -558,7 +558,7 @@ def main():
     decisions = claim_one_decisions(rows, truths, solutions)
     body = markdown(rows, truths, decisions, [s.file for s in sweeps], labels, schemes) + "\n" + \
         (hemicube.rstrip() + "\n" if hemicube else "")
-    output_file.write(args.out, op.with_opening(body, opening(op.tables(body)), "analysis/claims.py"))
+    page.write(args.out, op.with_opening(body, opening(op.tables(body)), "analysis/claims.py"))
     written = [args.out, args.figure] + ([args.pictures_figure] if labels else [])
     print(f"claims: {len(rows)} cells; written: " + ", ".join(str(p) for p in written))
     return 0

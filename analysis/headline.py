@@ -34,7 +34,7 @@ import json
 import tempfile
 from pathlib import Path
 
-from ncube import headline, output_file, page, simulate  # noqa: E402
+from ncube import headline, page, simulate  # noqa: E402
 from ncube.paths import ANALYSIS, ROOT  # noqa: E402
 
 OUTPUT = ANALYSIS / "headline.json"
@@ -135,7 +135,7 @@ def main():
             said = (f"flips at x{found[0]:.3g} ({headline.row_text(found[1])})" if found
                     else "no positive factor flips it")
             print(f"headline.py: {parameter}: {said}", flush=True)
-    output_file.write(OUTPUT, json.dumps(study, indent=1, sort_keys=True) + "\n")
+    page.write(OUTPUT, json.dumps(study, indent=1, sort_keys=True) + "\n")
     print(f"headline.py: wrote {OUTPUT.relative_to(ROOT)}")
 
 

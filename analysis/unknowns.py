@@ -29,7 +29,7 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 import numpy as np  # noqa: E402
 
 from ncube import opening as op  # noqa: E402
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file  # noqa: E402
 from ncube import page as page_rule  # noqa: E402
 from ncube.paths import ANALYSIS, EXPERIMENTS, ROOT  # noqa: E402
 
@@ -349,7 +349,7 @@ def page(summary, figure_name, small_run_note=None):
         f"(5th to 95th percentile over the worlds) in {inside} of the {len(rows)} cells**; "
         f"{len(rows) - inside} lie outside (section 5).", ""]
     # 0. The unknowns.
-    listed = json.loads((ANALYSIS / "unknowns.json").read_text())
+    listed = input_file.read_json(ANALYSIS / "unknowns.json", "list of unknowns", STUDY_BYTES)
     lines += ["## The unknowns", "",
               "Drawn (`analysis/unknowns.json` gives each one's reason in full):", "",
               "| unknown | per scene | drawn from | default | basis |", "|---|---|---|---|---|"]
@@ -598,10 +598,32 @@ def check_summary(path, summary):
                     f"{path}: world {index}: cell {key}: {value!r} is not a finite number above 0")
 
 
+STUDY_BYTES = 1 << 20   # a few lines: how many worlds, the seed
+
+
+def read_study(path=STUDY):
+    """The study file through the input gate (ncube.input_file): {"worlds": n >= 1, "seed":
+    s >= 0}, whole numbers, else an InputFileError naming the file and the item."""
+    study = input_file.read_json(path, "study file", STUDY_BYTES)
+    if not isinstance(study, dict):
+        raise input_file.InputFileError(f"{path}: study file: not an object with \"worlds\" "
+                                        "and \"seed\"")
+    for item, low in (("worlds", 1), ("seed", 0)):
+        value = study.get(item)
+        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= 100000:
+            raise input_file.InputFileError(f"{path}: study file: {item}: {value!r} is not a "
+                                            f"whole number from {low} to 100000")
+    return study
+
+
 @page_rule.refusing_outputs("unknowns.py")
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    study_defaults = json.loads(STUDY.read_text())
+    try:
+        study_defaults = read_study()
+    except input_file.InputFileError as e:
+        print(f"unknowns: {e}; nothing written", file=sys.stderr)
+        return 2
     parser.add_argument("--run", action="store_true", help="run the study first (resumable)")
     parser.add_argument("--worlds", type=int, default=study_defaults["worlds"])
     parser.add_argument("--seed", type=int, default=study_defaults["seed"])
@@ -670,11 +692,16 @@ def main():
         print(f"unknowns: --out-dir {out}: cannot make its figures/ folder: {e.strerror or e}; "
               "nothing written", file=sys.stderr)
         return 5
+    try:
+        text = page(summary, figure_name, label)
+    except input_file.InputFileError as e:
+        print(f"unknowns: {e}; nothing written", file=sys.stderr)
+        return 2
     if not args.summary:
-        output_file.write(out / "unknowns-worlds.json",
+        page_rule.write(out / "unknowns-worlds.json",
                           json.dumps(summary, indent=1, sort_keys=True) + "\n")
     figure(summary, out / "figures" / figure_name)
-    output_file.write(out / "unknowns.md", page(summary, figure_name, label))
+    page_rule.write(out / "unknowns.md", text)
     print(f"unknowns: {len(summary['worlds']) - 1} worlds; written: {out / 'unknowns.md'}, "
           f"{out / 'figures' / figure_name}; {time.time() - started:.0f} s wall time")
     return 0

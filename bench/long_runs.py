@@ -156,6 +156,19 @@ def main():
                         help="replay each run's messages with SimGrid alone (build/simgrid_replay)")
     parser.add_argument("--runs", default=",".join(RUNS), help="which runs (comma-separated)")
     options = parser.parse_args()
+    # Checked before minutes of runs: one line and exit 2 for a count or a build that cannot be.
+    if options.iterations is not None and options.iterations < 1:
+        parser.error(f"argument --iterations: {options.iterations}: at least 1")
+    unknown = [name for name in options.runs.split(",") if name not in RUNS]
+    if unknown:
+        parser.error(f"argument --runs: no run {unknown[0]!r} (the runs: {', '.join(RUNS)})")
+    needed = [os.path.join(ROOT, "build", "benchmarks"), os.path.join(options.new, "simulate")]
+    needed += [os.path.join(options.old, "simulate")] if options.old else []
+    for binary in needed:
+        if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+            print(f"long_runs.py: {binary}: not a built program (cmake --build build -j2)",
+                  file=sys.stderr)
+            return 2
     embree = embree_two_threads()
     to_the_end = embree_two_threads("scene3_to_the_end_2threads")
     report = {"embree_alone_rays_per_second_2_threads": embree,

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Writes the option table of docs/cli.md from what ./simulate says of its options.
+"""Writes the option table of docs/cli.md, and docs/result-format.md's table of the counters
+each form-factor method alone counts, from what ./simulate says of its options.
 
     /usr/bin/python3 docs/options_table.py          # rewrites the table in docs/cli.md
     /usr/bin/python3 docs/options_table.py --check  # exit 1 if docs/cli.md is not up to date
@@ -21,6 +22,7 @@ from model_tables import cell, generate, rewritten  # noqa: E402
 ROOT = Path(__file__).resolve().parent.parent
 DESCRIPTION = ROOT / "analysis" / "ncube" / "simulate_options.json"
 CLI_DOC = ROOT / "docs" / "cli.md"
+RESULT_DOC = ROOT / "docs" / "result-format.md"
 
 PLACEHOLDERS = {"integer": "N", "number": "X", "file": "FILE", "output": "FILE",
                 "setting": "SETTING"}
@@ -87,13 +89,35 @@ def table(options):
     return rows
 
 
+def counters_table(options):
+    """docs/result-format.md's table of the counters each form-factor method alone counts, from
+    the methods' registrations as --form-factors describes them."""
+    methods = next(o for o in options if o["flag"] == "--form-factors")["methods"]
+    rows = ["| method | counter | what it counts |", "|---|---|---|"]
+    for name, rule in methods.items():
+        for counter in rule.get("counters", []):
+            rows.append("| `%s` | `%s` | %s |" % (name, counter["counter"], cell(counter["counts"])))
+    if len(rows) == 2:
+        raise ValueError("no form-factor method describes counters of its own")
+    return rows
+
+
 def main():
     def rewrite():
         options = json.loads(DESCRIPTION.read_text(encoding="utf-8"))
         current = CLI_DOC.read_text(encoding="utf-8")
         return current, rewritten(current, {"all": table(options)}, "options", "docs/cli.md")
-    return generate("docs/options_table.py", "docs/cli.md", "the option table",
-                    "analysis/ncube/simulate_options.json", rewrite)
+
+    def rewrite_counters():
+        options = json.loads(DESCRIPTION.read_text(encoding="utf-8"))
+        current = RESULT_DOC.read_text(encoding="utf-8")
+        return current, rewritten(current, {"methods": counters_table(options)},
+                                  "result-counters", "docs/result-format.md")
+    status = generate("docs/options_table.py", "docs/cli.md", "the option table",
+                      "analysis/ncube/simulate_options.json", rewrite)
+    return status or generate("docs/options_table.py", "docs/result-format.md",
+                              "the table of each form-factor method's counters",
+                              "analysis/ncube/simulate_options.json", rewrite_counters)
 
 
 if __name__ == "__main__":

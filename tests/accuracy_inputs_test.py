@@ -82,8 +82,9 @@ with tempfile.TemporaryDirectory() as folder:
         (w / "bad.ply").write_bytes(ply_bytes(faces))
         refused(f"a {name} value in the mesh", w / "bad.ply", ref, says=says)
     # Values out of range in the reference.
-    for name, change, says in (("NaN radiosity", (0, 2, "NaN"), "radiosity_r"),
-                               ("infinite radiosity", (1, 3, "Infinity"), "radiosity_g"),
+    # NaN and Infinity anywhere: refused by the input gate's strict JSON, by line.
+    for name, change, says in (("NaN radiosity", (0, 2, "NaN"), "NaN is not a number"),
+                               ("infinite radiosity", (1, 3, "Infinity"), "Infinity is not a number"),
                                ("zero area", (2, 1, 0.0), "area"),
                                ("patch -1", (0, 0, -1), "patch"),
                                ("string area", (0, 1, "1"), "area")):
@@ -94,7 +95,7 @@ with tempfile.TemporaryDirectory() as folder:
         (w / "bad.json").write_text(text)
         refused(f"a {name} in the reference", mesh, w / "bad.json", says=says)
     (w / "bad.json").write_text("[" * 100000)
-    refused("JSON nested 100,000 deep", mesh, w / "bad.json", says="not JSON")
+    refused("JSON nested 100,000 deep", mesh, w / "bad.json", says="nesting deeper")
     (w / "bad.json").write_text(json.dumps({"reference_file_version": 1, "elements": GOOD_REF}))
     refused("no self_agreement", mesh, w / "bad.json", says="self_agreement")
     (w / "bad.json").write_text(json.dumps(reference(GOOD_REF[:2])))

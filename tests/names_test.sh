@@ -98,5 +98,17 @@ grep -q $'\e' stderr && fail "an escape character in a value reached the termina
 refused "is not one of" -- scene0 --visibility $'\e]0;title\a'
 grep -q $'[\e\a]' stderr && fail "an escape character in a choice reached the terminal"
 
+# --check-settings lists the files SimGrid would write as every other message names a file:
+# control characters escaped, a long name cut (the sweep tool shows these lines).
+"$simulate" --check-settings $'--cfg=tracing/filename:t\e[2J.paje' --cfg=tracing:yes >stdout 2>stderr \
+  || fail "--check-settings with a trace file: exit $?: $(cat stderr)"
+grep -q $'\e' stdout && fail "--check-settings printed an escape character raw: $(od -c stdout | head -3)"
+grep -qF 'output: t\e[2J.paje' stdout || fail "--check-settings does not show the escaped name: $(cat stdout)"
+"$simulate" --check-settings "--cfg=tracing/filename:$(head -c 100000 /dev/zero | tr '\0' 'z')" \
+  --cfg=tracing:yes >stdout 2>stderr || fail "--check-settings with a long trace name: exit $?: $(head -c 300 stderr)"
+[ "$(wc -c <stdout)" -lt 1000 ] || fail "--check-settings printed a 100,000-character name whole ($(wc -c <stdout) bytes)"
+grep -qF "[... " stdout || fail "--check-settings does not cut a long name: $(head -c 300 stdout)"
+rm -f stdout stderr
+
 [ "$failures" -eq 0 ] && echo "names_test: all passed"
 exit "$failures"

@@ -26,6 +26,8 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/docs/machines" "$tmp/platforms/machines"
 cp "$root/docs/machines/network_tables.py" "$tmp/docs/machines/"
+# The published figures are read through the project's input gate (analysis/ncube).
+mkdir -p "$tmp/analysis" && cp -r "$root/analysis/ncube" "$tmp/analysis/"
 cp "$root/docs/ncube2-sources.md" "$tmp/docs/"
 cp "$root/platforms/ncube2.xml" "$root/platforms/cost_model.json" "$tmp/platforms/"
 published() {  # one-way time (s), its tolerance; a second machine whose files are absent

@@ -22,7 +22,7 @@ if ! cmp -s "$tmp/described.json" "$root/analysis/ncube/simulate_options.json"; 
 fi
 
 if ! "$python" "$root/docs/options_table.py" --check; then
-  echo "FAIL: docs/cli.md's option table has drifted from analysis/ncube/simulate_options.json" >&2
+  echo "FAIL: docs/cli.md's option table or docs/result-format.md's counter table has drifted from analysis/ncube/simulate_options.json" >&2
   exit 1
 fi
 
@@ -60,9 +60,10 @@ EOF
 # The check itself must notice a change: a copy whose description has one help text edited
 # has to fail it, and rewriting the table puts the edit in.
 mkdir -p "$tmp/repo/docs" "$tmp/repo/analysis/ncube"
-cp "$root/docs/options_table.py" "$root/docs/model_tables.py" "$root/docs/cli.md" "$tmp/repo/docs/"
-sed 's/"radiosity processors"/"EDITED radiosity processors"/' "$tmp/described.json" \
-  > "$tmp/repo/analysis/ncube/simulate_options.json"
+cp "$root/docs/options_table.py" "$root/docs/model_tables.py" "$root/docs/cli.md" \
+   "$root/docs/result-format.md" "$tmp/repo/docs/"
+sed 's/"radiosity processors"/"EDITED radiosity processors"/; s/"hemicube: cells whose centre/"EDITED hemicube: cells whose centre/' \
+  "$tmp/described.json" > "$tmp/repo/analysis/ncube/simulate_options.json"
 if cmp -s "$tmp/repo/analysis/ncube/simulate_options.json" "$tmp/described.json"; then
   echo "FAIL: the test's edit of the description did not apply" >&2
   exit 1
@@ -74,5 +75,10 @@ fi
 "$python" "$tmp/repo/docs/options_table.py" >/dev/null
 grep -q "EDITED radiosity processors" "$tmp/repo/docs/cli.md" || {
   echo "FAIL: docs/options_table.py did not write the edited help text" >&2; exit 1; }
+# docs/result-format.md's table of each method's counters comes from the registry likewise:
+# the edited text of a hemicube counter is in it after the rewrite.
+grep -q "| \`hemicube\` | \`hemicube_depth_tests\` | EDITED hemicube: cells whose centre" \
+  "$tmp/repo/docs/result-format.md" || {
+  echo "FAIL: docs/options_table.py did not write the counter table from the registry" >&2; exit 1; }
 echo "PASS: simulate --describe-options, analysis/ncube/simulate_options.json, options.py and" \
      "docs/cli.md agree"

@@ -8,7 +8,7 @@
 #  - claims.py and claims_hemicube.py: --jobs 0, -1 and 0x10; claims.py with --sweeps empty;
 #  - experiments/sweep --check without a simulator built (the platform's node count estimated
 #    from its dimension): 1e9, 1e400, 3.5, -1 and "7" refused before any power is computed.
-root="$2"
+root=$(cd "$2" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -57,7 +57,7 @@ expect 2 "nesting" $python "$compare" "$work/deep.json" "$work/good-cyc.json" --
 
 answers="$root/analysis/cycles/cycles_answers.py"
 expect 2 "nesting" $python "$answers" "$work/deep.json" --out "$work/a.json"
-expect 2 "patch 0: vertices" $python "$answers" "$work/nan-scene.json" --out "$work/a.json"
+expect 2 "NaN" $python "$answers" "$work/nan-scene.json" --out "$work/a.json"
 [ ! -e "$work/a.json" ] || fail "cycles_answers.py wrote an output after a refusal"
 
 for script in claims claims_hemicube; do
@@ -84,6 +84,69 @@ for dimension in 1e9 1e400 3.5 -1 '"7"'; do
 done
 cp "$root/platforms/ncube2.json" "$work/p.json"
 NCUBE_SIMULATE="$work/no-simulator" expect 0 "" $python "$root/experiments/sweep" "$work/s.yaml" --check
+
+# The reads routed through the gate (ncube.input_file): a FIFO, a NaN and deep nesting are
+# refused at once, never a hang or a traceback.
+mkfifo "$work/fifo"
+printf '{"status": NaN}' > "$work/nan.json"
+printf '%s' "$(printf '[%.0s' $(seq 200))" > "$work/deep-plan.json"
+timeout 20 $python - "$root/analysis" "$work" <<'PY' || fail "results.read, unknowns' study file: see above"
+import json, sys
+sys.path.insert(0, sys.argv[1])
+work = sys.argv[2]
+from ncube import input_file, results
+for name in ("fifo", "nan.json", "deep-plan.json", "missing.json"):
+    if results.read(f"{work}/{name}") is not None:
+        sys.exit(f"results.read({name}) is not None")
+    if results.trace_mismatch(f"{work}/{name}") is None:
+        sys.exit(f"results.trace_mismatch({name}) is None")
+import runpy
+unknowns = runpy.run_path(sys.argv[1] + "/unknowns.py", run_name="not_main")
+for content in ('{"worlds": 0, "seed": 41}', '{"worlds": NaN, "seed": 41}',
+                '{"worlds": 1e400, "seed": 41}', '{"worlds": "32", "seed": 41}', '[32, 41]'):
+    open(f"{work}/study.json", "w").write(content)
+    try:
+        unknowns["read_study"](f"{work}/study.json")
+        sys.exit(f"read_study took {content}")
+    except input_file.InputFileError as e:
+        assert "study.json" in str(e) and "\n" not in str(e), e
+try:
+    unknowns["read_study"](f"{work}/fifo")
+    sys.exit("read_study read a FIFO")
+except input_file.InputFileError:
+    pass
+PY
+for plan in fifo nan.json deep-plan.json; do
+  (cd "$work" && PYTHONPATH="$root/analysis" expect 2 "$plan" $python -m ncube.summary "$work/$plan" s)
+  (cd "$work" && PYTHONPATH="$root/analysis" expect 1 "" $python -m ncube.run_cell "$work/$plan" c.json)
+  grep -qF "$plan" "$work/err" && [ "$(wc -l < "$work/err")" = 1 ] \
+    || fail "run_cell on a $plan plan: $(head -c 300 "$work/err")"
+done
+
+# cycles_answers.py reads what Blender wrote through the gate: a fake Blender that leaves a
+# FIFO, a NaN normal or deep nesting as its report ends in exit 7 and one line, and one that
+# fails prints one line of its last words, not its log.
+cat > "$work/blender" <<'SH'
+#!/bin/bash
+job="${@: -1}"
+case "$FAKE_REPORT" in
+  fifo) mkfifo "$job.report.json" ;;
+  nan) printf '{"normals": [[[0, 0, NaN]]]}' > "$job.report.json" ;;
+  deep) printf '%s' "$(printf '[%.0s' $(seq 200))" > "$job.report.json" ;;
+  fail) printf 'line one\nline two\nError: it broke\n'; exit 3 ;;
+esac
+SH
+chmod +x "$work/blender"
+printf '{"name": "q", "patches": [{"vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "emission": [1,1,1]}]}' \
+  > "$work/quad.json"
+for report in fifo nan deep fail; do
+  FAKE_REPORT=$report expect 7 "$( [ $report = fail ] && echo "it broke" || echo report)" \
+    $python "$answers" "$work/quad.json" --out "$work/a.json" --blender "$work/blender" --seeds 2 --texels 2 --samples 1
+done
+[ ! -e "$work/a.json" ] || fail "cycles_answers.py wrote an output from a bad bake"
+for bad in "--samples 100000" "--texels 100000" "--seeds 1" "--bounces 0" "--threads -1"; do
+  expect 2 "${bad%% *}" $python "$answers" "$work/quad.json" --out "$work/a.json" --blender "$work/blender" $bad
+done
 
 [ "$failed" = 0 ] && echo "python_inputs_test: passed"
 exit "$failed"

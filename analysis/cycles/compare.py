@@ -16,7 +16,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file  # noqa: E402
+from ncube import page  # noqa: E402
 
 LIMIT = 64 << 20
 
@@ -63,8 +64,25 @@ def compare(reference, cycles, names=("reference file", "Cycles answer file")):
             "per_patch": per_patch}
 
 
+# What each file must hold at its top (the rest is checked where it is used, by number()).
+SHAPES = {"reference file": {"scene_sha256": str, "scene_file": str, "patch_luminance": list},
+          "Cycles answer file": {"scene_sha256": str, "scene_file": str, "patches": list}}
+
+
 def load(path, what):
-    return input_file.read_json(path, what, LIMIT)
+    """The file through the input gate, with the items compare() reads of the right types;
+    else a ValueError naming the file and the item."""
+    document = input_file.read_json(path, what, LIMIT)
+    if not isinstance(document, dict):
+        raise ValueError(f"{path}: {what}: not a JSON object")
+    for item, kind in SHAPES[what].items():
+        if not isinstance(document.get(item), kind):
+            raise ValueError(f"{path}: {what}: {item}: missing or not a {kind.__name__}")
+    if what == "Cycles answer file":
+        for index, row in enumerate(document["patches"]):
+            if not isinstance(row, list) or len(row) < 10:
+                raise ValueError(f"{path}: {what}: patches[{index}]: not a row of 10 numbers")
+    return document
 
 
 def main(argv=None):
@@ -81,6 +99,8 @@ def main(argv=None):
         print(f"compare: {e if not isinstance(e, (KeyError, IndexError)) else 'a field is missing: ' + str(e)}",
               file=sys.stderr)
         return 2
+    if args.json:   # before anything is printed: a refusal is the only line (exit 2 or 5)
+        page.check_outputs("compare", [args.json], folders_made=False, replace_committed=False)
     print(f"patch RMS {result['patch_rms']:.4f}  largest patch {result['patch_max']:.4f} "
           f"(patch {result['worst_patch']})  largest |d|/se {result['largest_sigmas']:.1f}  "
           f"Cycles' own se (RMS) {result['cycles_se_rms']:.4f}")
@@ -89,7 +109,8 @@ def main(argv=None):
             print(f"  patch {p['patch']:4d}  reference {p['reference']:.6g}  Cycles {p['cycles']:.6g}"
                   f"  d {p['difference']:+.4f}  se {p['cycles_se']:.4f}")
     if args.json:
-        output_file.write(args.json, json.dumps(result, indent=1) + "\n")
+        return page.write_output("compare", "--json", args.json,
+                                 json.dumps(result, indent=1, allow_nan=False) + "\n")
     return 0
 
 

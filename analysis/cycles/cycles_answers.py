@@ -38,6 +38,7 @@ simulator's). Exit codes: 0; 2 bad input or Blender missing; 5 output not writab
 failed."""
 import argparse
 import hashlib
+import io
 import json
 import math
 import os
@@ -56,7 +57,8 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import numpy as np  # noqa: E402
 
-from ncube import input_file, output_file  # noqa: E402
+from ncube import input_file  # noqa: E402
+from ncube import page  # noqa: E402
 
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 SCENE_DIAGONAL = 10.0
@@ -80,13 +82,17 @@ def resolve_scene(name):
 
 def load_scene(path):
     data = input_file.read_input_bytes(path, "scene file", input_file.SCENE_FILE_BYTES)
+    # The gate's strict JSON (nesting bounded, a NaN anywhere refused) on the bytes hashed.
+    scene = input_file.read_json(path, "scene file", input_file.SCENE_FILE_BYTES)
     try:
-        depth = input_file.json_depth_problem(data.decode("utf-8", errors="replace"))
-        if depth:
-            raise Refusal(f"{path}: {depth}", 2)
-        scene = json.loads(data, parse_constant=lambda name: float("nan"))
         patches = []
         for index, patch in enumerate(scene["patches"]):
+            for item in ("vertices", "reflectance", "emission"):
+                values = patch.get(item, [])
+                flat = [v for row in values for v in (row if isinstance(row, list) else [row])] \
+                    if isinstance(values, list) else [values]
+                if any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in flat):
+                    raise Refusal(f"{path}: patch {index}: {item}: not numbers", 2)
             corners = np.array(patch["vertices"], dtype=float)
             if corners.shape not in ((3, 3), (4, 3)):
                 raise Refusal(f"{path}: patch {index}: vertices: 3 or 4 points of 3 coordinates", 2)
@@ -125,9 +131,46 @@ def texel_weights(quad, n):
     return np.where(rows < columns, first, np.where(rows > columns, second, 0.5 * (first + second)))
 
 
+REPORT_BYTES = 64 << 20   # Blender's report: the quads' normals, a few KiB
+
+
+def read_bake(job_path, job, quads):
+    """Blender's report and texels through the input gate (ncube.input_file: a regular file
+    within its limit, strict JSON): what Blender wrote, checked before it is used; anything
+    else is a Refusal with exit 7 (the bake, not the user's input, went wrong)."""
+    try:
+        report = input_file.read_json(f"{job_path}.report.json", "Blender's report", REPORT_BYTES)
+        normals = report["normals"] if isinstance(report, dict) else None
+        if not isinstance(normals, list) or len(normals) != len(quads):
+            raise Refusal(f"{job_path}.report.json: Blender's report: normals: not one list "
+                          f"per quad ({len(quads)})", 7)
+        for index, listed in enumerate(normals):
+            array = np.array(listed, dtype=float) if isinstance(listed, list) else None
+            if array is None or array.ndim != 2 or array.shape[1:] != (3,) \
+                    or not np.isfinite(array).all():
+                raise Refusal(f"{job_path}.report.json: Blender's report: normals[{index}]: "
+                              "not finite 3-vectors", 7)
+        per_seed = []
+        for seed in job["seeds"]:
+            path = f"{job_path}.texels-{seed}.npy"
+            data = input_file.read_input_bytes(path, "Blender's texels", input_file.SCENE_FILE_BYTES)
+            texels = np.load(io.BytesIO(data), allow_pickle=False)
+            if not np.isfinite(texels).all():
+                raise Refusal(f"{path}: Blender's texels: not finite numbers", 7)
+            per_seed.append(texels)
+    except input_file.InputFileError as e:
+        raise Refusal(str(e), 7) from None
+    except (ValueError, TypeError) as e:
+        raise Refusal(f"{job_path}: Blender's output: {e}", 7) from None
+    return report, per_seed
+
+
 def run(args):
     scene_path = resolve_scene(args.scene)
     name, patches, sha256 = load_scene(scene_path)
+    # The output under the output rule before minutes of baking (onto the scene, a folder, a
+    # missing folder: one line, exit 2 or 5).
+    page.check_outputs("cycles_answers", [args.out], folders_made=False)
     blender = shutil.which(args.blender)
     if blender is None:
         raise Refusal(f"--blender {args.blender}: not found (Debian: apt-get install blender)", 2)
@@ -154,10 +197,11 @@ def run(args):
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         report_path = Path(str(job_path) + ".report.json")
         if done.returncode != 0 or not report_path.exists():
-            tail = "\n".join(done.stdout.splitlines()[-15:])
-            raise Refusal(f"blender failed (exit {done.returncode}):\n{tail}", 7)
-        report = json.loads(report_path.read_text())
-        per_seed = [np.load(f"{job_path}.texels-{seed}.npy") for seed in job["seeds"]]
+            # One line: Blender's last words, cut (its log is hundreds of lines).
+            tail = " | ".join(line.strip() for line in done.stdout.splitlines()[-3:]
+                              if line.strip())[-300:]
+            raise Refusal(f"blender failed (exit {done.returncode}): {tail or 'no output'}", 7)
+        report, per_seed = read_bake(job_path, job, quads)
     # The quads' normals as Blender built them face as the scene's (one-sidedness).
     for quad, normals in zip(quads, report["normals"]):
         c = quad["corners"]
@@ -200,7 +244,10 @@ def run(args):
     text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
     text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])
                                           for r in rows) + "\n ]\n}\n"
-    output_file.write(args.out, text)
+    # Its answers are committed (analysis/cycles/SCENE.json, experiments/claims/cycles-answers).
+    code = page.write_output("cycles_answers", "--out", args.out, text, replace_committed=True)
+    if code:
+        raise SystemExit(code)   # its one line said why
     return rows
 
 
@@ -216,11 +263,14 @@ def main(argv=None):
     parser.add_argument("--blender", default="blender")
     args = parser.parse_args(argv)
     try:
-        for option in ("samples", "texels", "bounces", "threads"):
-            if getattr(args, option) < 1:
-                raise Refusal(f"--{option} {getattr(args, option)}: must be 1 or more", 2)
-        if args.seeds < 2:
-            raise Refusal(f"--seeds {args.seeds}: must be 2 or more (the standard error)", 2)
+        # Bounded before use: a bake's time and memory grow with each (seeds at least 2: the
+        # standard error).
+        for option, low, high in (("samples", 1, 1 << 16), ("texels", 1, 1024),
+                                  ("bounces", 1, 1 << 16), ("threads", 1, 1024),
+                                  ("seeds", 2, 1024)):
+            if not low <= getattr(args, option) <= high:
+                raise Refusal(f"--{option} {getattr(args, option)}: must be {low} to {high}"
+                              + (" (the standard error)" if option == "seeds" else ""), 2)
         rows = run(args)
     except Refusal as e:
         print(f"cycles_answers: {e}", file=sys.stderr)

@@ -45,7 +45,7 @@ import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import input_file, output_file, page  # noqa: E402
+from ncube import input_file, page  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -166,13 +166,10 @@ def solution_from_ply(path):
 
 
 def read_reference(path):
-    try:
-        reference = json.loads(input_file.read_input_text(path, "reference file", REFERENCE_BYTES),
-                               parse_constant=lambda name: name)   # NaN, Infinity: refused below
+    try:   # the gate's JSON: strict (a NaN anywhere refused), nesting bounded
+        reference = input_file.read_json(path, "reference file", REFERENCE_BYTES)
     except input_file.InputFileError as e:
         raise AccuracyError(str(e)) from None
-    except (ValueError, RecursionError) as e:
-        raise AccuracyError(f"{path}: cannot read the reference: not JSON ({e})") from None
     if not isinstance(reference, dict) or reference.get("reference_file_version") != 1 \
             or not isinstance(reference.get("elements"), list) or not reference["elements"]:
         raise AccuracyError(f"{path}: not a reference file (build/reference_solution)")
@@ -271,14 +268,8 @@ def main(argv=None):
     if args.json:
         # page.write: the output rule with docs/cli.md's exits (onto an input, a loop of links
         # or a missing folder 2; anything else 5).
-        try:
-            page.write(args.json, json.dumps(result, indent=1, allow_nan=False) + "\n")
-        except output_file.OutputIsInputError as e:
-            print(f"accuracy: --json {e}", file=sys.stderr)
-            return 2
-        except page.PageWriteError as e:
-            print(f"accuracy: --json {e}", file=sys.stderr)
-            return e.code
+        return page.write_output("accuracy", "--json", args.json,
+                                 json.dumps(result, indent=1, allow_nan=False) + "\n")
     return 0
 
 

@@ -10,7 +10,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-from . import input_file
+from . import input_file, paths
 
 MAX_LINKS = 40   # as ./simulate (src/tools/output_files.cpp) and Linux
 
@@ -21,6 +21,40 @@ class OutputPathError(OSError):
 
 class OutputIsInputError(OutputPathError):
     """A path that leads to a file this process read: bad input (exit 2, as ./simulate)."""
+
+
+class MissingFolderError(OutputPathError):
+    """A path whose folder does not exist: bad input (exit 2, as ./simulate)."""
+
+
+class CommittedFileError(OutputPathError):
+    """A path that leads to a file the repository tracks, for an output that is never one of
+    its pages (a tool's --json): bad input (exit 2)."""
+
+
+def committed(final):
+    """Whether `final` (a path with its links followed) is a file the repository's git tracks;
+    False outside the repository or without git (a tarball)."""
+    try:
+        relative = Path(os.path.abspath(final)).relative_to(paths.ROOT)
+    except ValueError:
+        return False
+    if not (paths.ROOT / ".git").exists():
+        return False
+    import subprocess
+    try:
+        listed = subprocess.run(["git", "-C", str(paths.ROOT), "ls-files", "--error-unmatch",
+                                 "--", str(relative)], capture_output=True, timeout=60)
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+    return listed.returncode == 0
+
+
+def _refuse_committed(path, final, replace_committed):
+    if not replace_committed and committed(final):
+        raise CommittedFileError(f"{path}: is a committed file of the repository "
+                                 f"({Path(os.path.abspath(final)).relative_to(paths.ROOT)}); "
+                                 "name another place")
 
 
 def target(path):
@@ -46,15 +80,20 @@ def _refuse_inputs(path, final):
         raise OutputIsInputError(f"{path}: is the input file {read}")
 
 
-def check(path):
+def check(path, folder_made=True, replace_committed=True):
     """Raises what write(path) would for a path it refuses (an input of this process, a folder,
-    a socket, a block device, a loop of links) without writing anything: a script checks every
-    output first, so that a refusal leaves none of them written."""
+    a socket, a block device, a loop of links; unless `folder_made`, a path whose folder does
+    not exist, which the script will not make; unless `replace_committed`, a file the
+    repository tracks) without writing anything: a script checks every output first, so that a
+    refusal leaves none of them written."""
     final = target(path)
     _refuse_inputs(path, final)
+    _refuse_committed(path, final, replace_committed)
     try:
         mode = os.stat(final).st_mode
     except FileNotFoundError:
+        if not folder_made and not final.parent.is_dir():
+            raise MissingFolderError(f"{path}: its folder does not exist") from None
         return
     if not (stat.S_ISREG(mode) or stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
         kind = "a folder" if stat.S_ISDIR(mode) else "a socket" if stat.S_ISSOCK(mode) else \
@@ -62,11 +101,14 @@ def check(path):
         raise OutputPathError(f"{path}: cannot be written: it is {kind}")
 
 
-def write(path, data):
-    """Writes `data` (str or bytes) to `path` by the rule above; returns `path`."""
+def write(path, data, replace_committed=True):
+    """Writes `data` (str or bytes) to `path` by the rule above (unless `replace_committed`,
+    never onto a file the repository tracks: a tool's output is never one of its pages);
+    returns `path`."""
     data = data.encode() if isinstance(data, str) else bytes(data)
     final = target(path)
     _refuse_inputs(path, final)
+    _refuse_committed(path, final, replace_committed)
     try:
         mode = os.stat(final).st_mode
     except FileNotFoundError:

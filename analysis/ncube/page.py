@@ -36,21 +36,25 @@ def refuse(script, line):
     sys.exit(REFUSED)
 
 
-def check_outputs(script, outputs, committed=(), complete=True, how="name another place"):
+def check_outputs(script, outputs, committed=(), complete=True, how="name another place",
+                  folders_made=True, replace_committed=True):
     """Before anything is written, every output under the output rule (ncube.output_file: not
     an input of this script, not a folder, a socket or a block device), and, for a page of an
     incomplete run (a --partial page with cells missing, a small study), none of them a
     committed page (`committed`: the script's default outputs): one line and exit 2 (5 for a
-    path that cannot be a file), nothing written."""
+    path that cannot be a file; unless `folders_made`, 2 for a path in a missing folder too;
+    unless `replace_committed`, 2 for a file the repository tracks), nothing written."""
     for path in outputs:
         try:
-            output_file.check(path)
+            output_file.check(path, folders_made, replace_committed)
         except output_file.OutputIsInputError as e:   # refusing_outputs' own line
             print(f"{script}: an output {e}; not written", file=sys.stderr, flush=True)
             sys.exit(REFUSED)
         except output_file.OutputPathError as e:
             print(f"{script}: {e}; nothing written", file=sys.stderr, flush=True)
-            sys.exit(REFUSED if "symbolic links" in str(e) else CANNOT_WRITE)
+            sys.exit(REFUSED if "symbolic links" in str(e) or
+                     isinstance(e, (output_file.MissingFolderError,
+                                    output_file.CommittedFileError)) else CANNOT_WRITE)
     if complete:
         return
     pages = {Path(c).resolve() for c in committed}
@@ -105,23 +109,40 @@ class PageWriteError(OSError):
         self.code = code
 
 
-def write(path, data):
+def write(path, data, replace_committed=True):
     """Writes a page or figure under the output rule (ncube.output_file): never onto a file
     this script read (its results, its sweep files: ncube.results and ncube.sweep read them
     through the gate), whatever link leads there. Under refusing_outputs, a refusal is one
     line and exit 2 (onto an input, a loop of links, a missing folder) or 5."""
     try:
-        return output_file.write(path, data)
+        return output_file.write(path, data, replace_committed)
     except output_file.OutputIsInputError:
         raise
     except output_file.OutputPathError as e:
-        raise PageWriteError(str(e), REFUSED if "symbolic links" in str(e) else CANNOT_WRITE) \
-            from None
+        refused = "symbolic links" in str(e) or isinstance(
+            e, (output_file.MissingFolderError, output_file.CommittedFileError))
+        raise PageWriteError(str(e), REFUSED if refused else CANNOT_WRITE) from None
     except FileNotFoundError:
         raise PageWriteError(f"{path}: its folder does not exist", REFUSED) from None
     except OSError as e:
         raise PageWriteError(f"{path}: cannot be written: {e.strerror or e}", CANNOT_WRITE) \
             from None
+
+
+def write_output(script, option, path, data, replace_committed=False):
+    """Writes a tool's output (`option`, e.g. --json) by page.write, never onto a committed file
+    unless `replace_committed` (a tool's output is not a page); a refusal is one line
+    `script: option path: why` on stderr. Returns the exit: 0, 2 (onto an input or a committed
+    file, a loop of links, a missing folder) or 5 (a folder, a socket, a full disk)."""
+    try:
+        write(path, data, replace_committed)
+    except output_file.OutputIsInputError as e:
+        print(f"{script}: {option} {e}; not written", file=sys.stderr, flush=True)
+        return REFUSED
+    except PageWriteError as e:
+        print(f"{script}: {option} {e}", file=sys.stderr, flush=True)
+        return e.code
+    return 0
 
 
 def refusing_outputs(script):

@@ -20,7 +20,7 @@ import json
 import matplotlib
 
 from . import options as opts
-from . import output_file
+from . import page
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -32,7 +32,7 @@ def save(fig, path):
     picture = io.BytesIO()
     fig.savefig(picture, format="png", dpi=100, bbox_inches="tight", metadata={"Software": None})
     plt.close(fig)
-    return output_file.write(path, picture.getvalue())
+    return page.write(path, picture.getvalue())   # the output rule, one line on refusal
 
 
 # What makes a cell's configuration, beside R: a line joins only cells equal in all of these.

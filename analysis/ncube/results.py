@@ -1,7 +1,5 @@
 """Result files (docs/result-format.md): reading them, the measures a sweep reports, and
 whether a result file is a finished result of a given cell."""
-import json
-from pathlib import Path
 
 from . import input_file
 
@@ -17,14 +15,22 @@ MEASURES = {
 }
 
 
+# A result file holds every patch's radiosity (a few MiB for the largest scenes); a trace every
+# event of a run (hundreds of MiB for long ones): far below these, which bound what a bad file
+# (a device, an endless link) costs.
+RESULT_FILE_BYTES = input_file.SCENE_FILE_BYTES
+TRACE_FILE_BYTES = 1 << 30
+
+
 def read(path):
-    """The result file as a dict, None when it is missing or not JSON. A file read counts as an
-    input of this process (ncube.input_file.protect): no page is written onto it."""
+    """The result file as a dict, None when it is missing, not a regular file within its limit,
+    or not strict JSON (ncube.input_file's gate: never a hang on a FIFO, never a device read
+    whole, no NaN). A file read counts as an input of this process (ncube.input_file.protect):
+    no page is written onto it."""
     try:
-        result = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+        result = input_file.read_json(path, "result file", RESULT_FILE_BYTES)
+    except input_file.InputFileError:
         return None
-    input_file.protect([path])
     return result
 
 
@@ -71,7 +77,7 @@ def mismatch(result, cell):
 def trace_mismatch(path):
     """Why the trace file is not complete, None when it is."""
     try:
-        trace = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+        trace = input_file.read_json(path, "trace file", TRACE_FILE_BYTES)
+    except input_file.InputFileError:
         return "trace missing or not JSON"
     return None if isinstance(trace, dict) and "traceEvents" in trace else "not a trace-event file"

@@ -14,7 +14,6 @@ DIR/POINT (holding the cell's file) and waits. The points, in order: "started" (
 runs), "verified" (its result checked, still under the temporary name), "written" (the result
 has its final name; the job has not exited, so Snakemake has not recorded it)."""
 import ctypes
-import json
 import os
 import signal
 import subprocess
@@ -22,7 +21,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import output_file, paths, results
+from . import input_file, output_file, paths, results
 from .sweep import Cell, protect_plan_inputs
 
 PR_SET_PDEATHSIG = 1
@@ -34,7 +33,10 @@ def _die_with_parent():
 
 def find_cell(plan_path, cell_file):
     """The cell, and whether it may replace a finished result (reruns forced)."""
-    plan = json.loads(Path(plan_path).read_text())
+    try:
+        plan = input_file.read_json(plan_path, "sweep plan", input_file.SCENE_FILE_BYTES)
+    except input_file.InputFileError as e:
+        raise SystemExit(f"run_cell: {e}") from None
     protect_plan_inputs(plan_path, plan)
     for sweep in plan["sweeps"]:
         for cell in sweep["cells"]:

@@ -310,6 +310,19 @@ def main(argv=None):
         return 128 + signal.SIGPIPE
 
 
+def simulator_missing():
+    """Why the cells could not run ./simulate (its binary not built, or $NCUBE_SIMULATE not
+    a program), else None: said once, before Snakemake starts a job per cell."""
+    binary = Path(paths.simulate_binary())
+    if binary == paths.ROOT / "simulate":   # the wrapper runs build/simulate
+        binary = paths.ROOT / "build" / "simulate"
+    if binary.is_file() and os.access(binary, os.X_OK):
+        return None
+    return (f"{binary} is not built (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake "
+            f"--build build -j2)" if binary.parent == paths.ROOT / "build" else
+            f"NCUBE_SIMULATE={binary} is not a program")
+
+
 def run(argv=None):
     parser = argparse.ArgumentParser(
         prog="experiments/sweep", description=HELP, epilog=HELP_END,
@@ -378,6 +391,10 @@ def run(argv=None):
             return outcome.FOLDER_IN_USE
         forced = forces_reruns(args.snakemake)
         pending = cells_to_run(sweeps, results_dir, forced)
+        missing = simulator_missing() if pending and not dry_run(args.snakemake) else None
+        if missing:   # before the plan: every cell would fail the same way
+            outcome.say(f"{len(pending)} cells to run, and {missing}; nothing run")
+            return outcome.BAD_INPUT
         plan = write_plan(sweeps, results_dir, pending, forced)
     except OSError as e:
         code = not_written(e, results_dir)

@@ -19,7 +19,7 @@ import sys
 from pathlib import Path, PurePath
 
 from . import options as opts
-from . import output_file, paths, results
+from . import input_file, output_file, paths, results
 from .sweep import Sweep, protect_plan_inputs
 
 COLUMNS = (["sweep", "cell", "scene", "scene_label", "scene_file", "R", "V", "nodes"] +
@@ -355,7 +355,11 @@ def summarize(sweep, results_dir="."):
 
 def main():
     plan, name = sys.argv[1], sys.argv[2]
-    planned = json.loads(Path(plan).read_text())
+    try:
+        planned = input_file.read_json(plan, "sweep plan", input_file.SCENE_FILE_BYTES)
+    except input_file.InputFileError as e:
+        print(f"summary: {e}", file=sys.stderr)
+        return 2
     protect_plan_inputs(plan, planned)
     for document in planned["sweeps"]:
         if document["name"] == name:

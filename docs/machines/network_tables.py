@@ -176,17 +176,35 @@ def main():
                         help="the published figures (default: platforms/machines/published_network.json)")
     args = parser.parse_args()
 
-    have_published = os.path.exists(args.published)
+    if not (os.path.isfile(args.bench) and os.access(args.bench, os.X_OK)):
+        print("network_tables.py: --bench %s: not a program (cmake --build build -j2 builds "
+              "build/network_bench); nothing written" % args.bench, file=sys.stderr)
+        return 2
+    have_published = os.path.lexists(args.published)
     if have_published:
-        with open(args.published) as f:
-            machines = json.load(f)["machines"]
+        # Through the input gate (analysis/ncube/input_file.py): a regular file within 1 MiB,
+        # strict JSON, nesting bounded; a FIFO, a device or a folder refused at once.
+        sys.path.insert(0, str(ROOT / "analysis"))
+        from ncube import input_file
+        try:
+            machines = input_file.read_json(args.published, "published figures", 1 << 20)
+            machines = machines["machines"] if isinstance(machines, dict) else None
+            if not isinstance(machines, dict) or not all(
+                    isinstance(e, dict) and isinstance(e.get("platform"), str) and
+                    isinstance(e.get("page"), str) for e in machines.values()):
+                raise input_file.InputFileError("%s: published figures: machines: not an object "
+                                                "of machines with their platform and page"
+                                                % args.published)
+        except input_file.InputFileError as e:
+            print("network_tables.py: %s; nothing written" % e, file=sys.stderr)
+            return 2
     elif args.check:
         print("network_tables.py: SKIP published figures: %s is not in this tree; checking the "
               "nCube2's simulated table only" % os.path.relpath(args.published, ROOT), file=sys.stderr)
         machines = NCUBE2
     else:
         print("network_tables.py: %s not found: nothing written" % args.published, file=sys.stderr)
-        return 1
+        return 2
 
     problems = []
     for machine, entry in machines.items():

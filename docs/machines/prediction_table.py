@@ -270,8 +270,20 @@ def main(argv=None, default_runs=5):
     args = parser.parse_args(argv)
     global SIMULATE, PROBE
     SIMULATE, PROBE = os.path.join(args.build, "simulate"), os.path.join(args.build, "machine_probe")
-    if args.repeats < 1 or args.runs < 0:
-        parser.error("--repeats must be 1 or more, --runs 0 or more")
+    if not 1 <= args.repeats <= 100 or not 0 <= args.runs <= 1000:
+        parser.error("--repeats must be from 1 to 100, --runs from 0 to 1000")
+    if args.time_cap < 0 or args.time_cap != args.time_cap or args.time_cap == float("inf"):
+        parser.error("argument --time-cap: seconds, 0 or more (0: no cap)")
+    if not args.regenerate:
+        for binary in (SIMULATE, PROBE):
+            if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+                print("prediction_table.py: it runs %s, which is not built (cmake --build build "
+                      "-j2); nothing written" % os.path.relpath(binary, ROOT), file=sys.stderr)
+                return 2
+        if args.platform and not os.path.isfile(args.platform):
+            print("prediction_table.py: --platform %s: not a regular file; nothing written"
+                  % args.platform, file=sys.stderr)
+            return 2
     if not args.regenerate:
         with tempfile.TemporaryDirectory() as work:
             if args.print:

@@ -336,7 +336,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--out", default=HERE, help="output folder (default: platforms/machines/)")
     args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    # The output folder checked before any work: a file, a FIFO or a device there is one line
+    # and exit 5 (an output that cannot be written), as every program's (docs/cli.md).
+    if os.path.lexists(args.out) and not os.path.isdir(args.out):
+        print("%s: --out %s: not a folder; nothing written" % ("platforms/machines/generate.py", args.out), file=sys.stderr)
+        return 5
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        print("%s: --out %s: cannot make the folder: %s; nothing written"
+              % ("platforms/machines/generate.py", args.out, e.strerror or e), file=sys.stderr)
+        return 5
     for name, text in outputs():
         with open(os.path.join(args.out, name), "w", encoding="utf-8", newline="\n") as f:
             f.write(text)

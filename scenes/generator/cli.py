@@ -60,6 +60,17 @@ def main(argv=None, description=None, default_out=None):
     if args.partition_table:
         sys.stdout.write(partition_table(build_all()))
         return 0
+    # The output folder checked before any work: a file, a FIFO or a device there is one line
+    # and exit 5 (an output that cannot be written), as every program's (docs/cli.md).
+    if os.path.lexists(args.out) and not os.path.isdir(args.out):
+        print("%s: --out %s: not a folder; nothing written" % ("scenes/generate.py", args.out), file=sys.stderr)
+        return 5
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        print("%s: --out %s: cannot make the folder: %s; nothing written"
+              % ("scenes/generate.py", args.out, e.strerror or e), file=sys.stderr)
+        return 5
     outputs = []
     failed = False
     for b, target in build_all():
@@ -71,7 +82,6 @@ def main(argv=None, description=None, default_out=None):
         outputs.append((b.name + ".json", text))
     if failed:
         return 1
-    os.makedirs(args.out, exist_ok=True)
     for filename, text in outputs:
         with open(os.path.join(args.out, filename), "w", encoding="utf-8", newline="\n") as f:
             f.write(text)

@@ -131,6 +131,9 @@ FormFactorMethod hemicube() {
   m.traces_rays = false;
   m.own_options = {"hemicube_resolution", "hemicube_placement", "hemicube_back_faces",
                    "hemicube_reciprocity"};
+  // Every hemicube run blocked at back faces, and kept its reciprocal factors as computed,
+  // before --hemicube-back-faces and --hemicube-reciprocity existed.
+  m.recorded_unless = {{"hemicube_back_faces", "block"}, {"hemicube_reciprocity", "as-computed"}};
   m.changed_options = [](const ProgressiveOptions& options) {
     const HemicubeOptions& o = options.hemicube;
     const HemicubeOptions defaults;

@@ -57,6 +57,10 @@ struct FormFactorMethod {
   // any other method; `refused_options` gives why their values cannot be honoured ("": they
   // can; empty function: no such values).
   std::vector<std::string> own_options;
+  // Own options the result file records only when their value (as the option names it) is not
+  // the one given here: the value every run of the method had before the option existed, so
+  // that those runs keep their result files ({field, value}).
+  std::vector<std::pair<std::string, std::string>> recorded_unless;
   std::function<std::vector<std::string>(const ProgressiveOptions& options)> changed_options;
   std::function<std::string(const ProgressiveOptions& options)> refused_options;
   // The run summary: how the method is set ("16 samples per shooter"), and the line of what

@@ -118,12 +118,15 @@ nlohmann::json result_to_json(const Scene& scene, const SimulationConfig& config
   for (const FormFactorMethod& other : form_factor_methods().all())
     if (other.name != method.name)
       for (const std::string& field : other.own_options) j["config"].erase(field);
-  // The back faces only when they pass: a hemicube run's file without the field blocked, as
-  // every hemicube run did before the option (--hemicube-back-faces).
-  if (config.options.hemicube.back_faces == HemicubeBackFaces::kBlock)
-    j["config"].erase("hemicube_back_faces");
-  if (config.options.hemicube.reciprocity == HemicubeReciprocity::kAsComputed)
-    j["config"].erase("hemicube_reciprocity");
+  // An own option at the value every run of the method had before the option existed is not
+  // recorded (FormFactorMethod::recorded_unless): a hemicube run's file without
+  // hemicube_back_faces blocked, as every hemicube run did before --hemicube-back-faces.
+  for (const auto& [field, value] : method.recorded_unless) {
+    const auto found = j["config"].find(field);
+    if (found != j["config"].end() &&
+        (found->is_string() ? found->get<std::string>() : found->dump()) == value)
+      j["config"].erase(field);
+  }
   if (parallelisations().at(config.parallelisation).name == parallelisations().paper_default().name)
     for (const char* field : {"parallelisation", "shooters_per_iteration"}) j["config"].erase(field);
   j["status"] = status_name(result.status);

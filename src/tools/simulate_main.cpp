@@ -154,7 +154,7 @@ int simulate(int argc, char** argv) {
     // Each file the settings would make SimGrid write, one line each: the sweep tool refuses
     // a cell's settings that write outside its results folder (docs/sweeps.md, "What runs").
     for (const ncube::SimgridOutput& output : simgrid_outputs.outputs())
-      std::cout << "output: " << output.path << "\n";
+      std::cout << "output: " << ncube::shown_text(output.path) << "\n";
     return ncube::kExitOk;
   }
   if (options.platform_nodes) {  // the platform alone, found and read as a run finds and reads it

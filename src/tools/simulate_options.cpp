@@ -111,9 +111,8 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
                "hemicube: one at the shooter's centre (centre), or one at the centre of each "
                "of the shooter's elements, weighted by area (elements)",
                "hemicube_placement");
-  // The hemicube's back faces (issue 38 item 6): block, the default, as every run before the
-  // option; recorded for `pass` runs only, so that every earlier hemicube result file stays
-  // as it was (a hemicube result without the field blocked).
+  // The hemicube's back faces: block, the default, as every run before the option; recorded
+  // for `pass` runs only (the method's registration, FormFactorMethod::recorded_unless).
   std::string hemicube_back_faces = hemicube_back_faces_name(config.options.hemicube.back_faces);
   table.choice("--hemicube-back-faces", hemicube_back_faces, {"block", "pass"},
                "hemicube: a polygon seen from behind takes cells and hides what lies beyond it "
@@ -132,12 +131,6 @@ int parse_simulate_options(int argc, char** argv, SimulateOptions& options) {
   // options for its runs only (so that the paper's runs keep their files); the sweep tool
   // compares them likewise and reads each method's rules (tools/method_options.h).
   annotate_form_factor_methods(table);
-  table.annotate("--hemicube-back-faces", "recorded_when",
-                 {{"form_factors", nlohmann::json::array({"hemicube"})},
-                  {"hemicube_back_faces", "pass"}});
-  table.annotate("--hemicube-reciprocity", "recorded_when",
-                 {{"form_factors", nlohmann::json::array({"hemicube"})},
-                  {"hemicube_reciprocity", "clamp"}});
   table.flag("--skip-facing-away", config.options.skip_facing_away,
              "trace no rays from elements that cannot see the shooter's front (default: every "
              "element traces its rays, section 2.2)",

@@ -466,9 +466,17 @@ MODEL_OUTCOMES = {"--element-size": lambda v: "ok" if v == 0 or v >= 0.05 else "
                   "--hemicube-resolution": lambda v: "ok" if v <= 400 else "oom"}
 
 
+# Special values per option: every option goes through the one parser of numbers
+# (src/tools/option_table.cpp), so each option is tried with a few of them in turn (option i
+# with values 3i, 3i + 1, 3i + 2 of the list, round it) and every value meets several options
+# of each kind; each option's own range ends are all tried.
+SPECIAL_PER_OPTION = 3
+
+
 def number_cases(simulate, work):
     """Every numeric option that `simulate --describe-options` lists (so a new option is tried
-    without a new line here) x the special values, its range's ends and one past each end."""
+    without a new line here) x SPECIAL_PER_OPTION of the special values, its range's ends and
+    one past each end."""
     described = json.loads(subprocess.run([str(simulate), "--describe-options"], check=True,
                                           capture_output=True, text=True).stdout)
     scene, out = work / "numbers.json", work / "numbers.out.json"
@@ -478,12 +486,12 @@ def number_cases(simulate, work):
     model_scene.write_bytes((models / "room.obj").read_bytes())
     (work / "room.mtl").write_bytes((models / "room.mtl").read_bytes())
     cases = []
-    for option in described:
-        if option["kind"] not in ("integer", "number"):
-            continue
+    numeric = [o for o in described if o["kind"] in ("integer", "number")]
+    for index, option in enumerate(numeric):
         r = option["range"]
         ends = [r["low"], r["high"]]
-        texts = list(SPECIAL_VALUES)
+        texts = [SPECIAL_VALUES[(SPECIAL_PER_OPTION * index + k) % len(SPECIAL_VALUES)]
+                 for k in range(SPECIAL_PER_OPTION)]
         for end, step in ((r["low"], -1), (r["high"], 1)):
             texts += [str(end) if option["kind"] == "integer" else repr(float(end)),
                       _past(end, step, option["kind"])]

@@ -5,8 +5,10 @@ add_executable (but the test binary), or a tracked file outside tests/ that is e
 starts with "#!"; tests/slurm_cluster.sh too, which users run. A new one fails the test until it
 is listed here with the tests that try it (each must name it), or as open with why.
 
-usage: executables.py ROOT   (prints what is shipped and not listed, listed and gone, and
-                              listed tests that do not name their program; exit 1 if any)"""
+usage: executables.py ROOT   (prints what is shipped and not listed, listed and gone,
+                              listed tests that do not name their program, and whether
+                              docs/threat-model.md's table is this list; exit 1 if any)
+       executables.py [ROOT] --page   (rewrites docs/threat-model.md's table)"""
 import os
 import re
 import subprocess
@@ -72,6 +74,89 @@ COVERED = {
 }
 
 
+# program -> (what it reads, what it writes, what it runs): docs/threat-model.md's table is
+# written from this and COVERED (executables.py ROOT --page; --check fails when it differs), so
+# a program shipped and listed above is on the page too.
+SURFACE = {
+    "simulate": ("a scene or model (OBJ, PLY, glTF, .glb) and the files the model names, a platform (JSON or SimGrid XML), a cost model; found by the lookup rule (NCUBE_ROOT)",
+                 "--json, --image, --mesh, --trace, --export-scene; SimGrid's log files and trace (--log, --cfg); NCUBE_RECORD_ACTIVITIES", "itself in a child per SimGrid setting (--check-settings)"),
+    "reference_solution": ("a scene file", "--out, --mesh", "nothing"),
+    "machine_probe": ("--network (SimGrid XML), --cost-model", "--out (a SimGrid platform)", "its own timing kernels"),
+    "network_bench": ("--platform (JSON or XML), --cost-model", "--json", "nothing"),
+    "simgrid_replay": ("a recording of a run's messages", "stdout", "nothing"),
+    "embree_floor": ("a scene file", "stdout", "nothing"),
+    "simulate_throwaway": ("as simulate", "as simulate", "as simulate (a test build with throwaway methods)"),
+    "simgrid_alone": ("a recording", "stdout", "nothing"),
+    "benchmarks": ("scenes of scenes/", "stdout", "nothing"),
+    "simulate (wrapper)": ("build/simulate's arguments", "as build/simulate", "cmake (when build/simulate is missing), build/simulate"),
+    "tests/slurm_cluster.sh": ("its folder's configuration and pid files", "a Slurm configuration, logs and pid files in its folder", "slurmctld, slurmd; signals only the daemons it started"),
+    ".ci/install-deps": ("nothing", "Debian packages (root)", "apt-get"),
+    ".ci/run": ("the repository", "build/", "install-deps, cmake, ./simulate, ctest"),
+    "experiments/sweep": ("sweep files (YAML or JSON), the scenes, platforms and cost models they name, result files", "--results folder: plan.json, one result file per cell, sweeps/NAME/ summaries", "Snakemake, ./simulate per cell (locally or through Slurm's sbatch)"),
+    "experiments/reproduce": ("experiments/table1-5.json, timeline.json", "--results folder", "experiments/sweep"),
+    "experiments/claims/references": ("scenes", "analysis/reference/SCENE.json", "build/reference_solution"),
+    "experiments/claims/cycles-answers": ("scenes", "--out folder (default analysis/cycles/)", "analysis/cycles/cycles_answers.py"),
+    "analysis/report.py": ("--results folder's result files, experiments/*.json", "--out-dir: report.md, figures/ (a committed page only from complete results)", "nothing"),
+    "analysis/machines.py": ("--sweep, --results", "--output, --figures", "experiments/sweep (--run)"),
+    "analysis/unknowns.py": ("experiments/unknowns/study.json, analysis/unknowns.json, --summary, --results", "--out-dir: unknowns.md, unknowns-worlds.json, figures/", "experiments/sweep (--run)"),
+    "analysis/claims.py": ("--sweeps, --pictures, --results", "--out, --figure, --pictures-figure", "experiments/sweep, build/simulate"),
+    "analysis/claims_hemicube.py": ("--sweep, --results", "its section of analysis/claims.md", "experiments/sweep"),
+    "analysis/claims_schemes.py": ("--sweep, --results", "--figure and its section of analysis/claims.md", "experiments/sweep"),
+    "analysis/adaptive.py": ("scenes", "--output and its figures", "--simulate"),
+    "analysis/calibrate.py": ("analysis/calibration.json, platforms/cost_model.json", "platforms/cost_model.json, analysis/calibration-fit.json (not with --dry-run)", "build/simulate"),
+    "analysis/memory_sensitivity.py": ("scenes, platforms", "analysis/memory-sensitivity.md, .json, its figure", "build/simulate"),
+    "analysis/patch_order.py": ("--results", "analysis/patch-order.md, .json", "experiments/sweep"),
+    "analysis/predictions.py": ("experiments/predictions/, --results", "analysis/predictions.md", "experiments/sweep"),
+    "analysis/ncube/accuracy.py": ("a solution mesh (PLY), a reference file", "--json", "nothing"),
+    "analysis/cycles/compare.py": ("a reference file, a Cycles answer file", "--json", "nothing"),
+    "analysis/cycles/cycles_answers.py": ("a scene file; Blender's report and texels", "--out", "--blender (Debian's blender) in a scratch folder"),
+    "docs/model_tables.py": ("platforms/cost_model.json", "docs/model.md's tables", "nothing"),
+    "docs/options_table.py": ("analysis/ncube/simulate_options.json", "docs/cli.md's and docs/result-format.md's tables", "nothing"),
+    "docs/platform_tables.py": ("src/machine/machine_parameters.h's list", "tables of docs/model.md, docs/platforms.md, docs/result-format.md", "nothing"),
+    "docs/machines/index_table.py": ("platforms/machines/*.xml", "docs/machines/README.md's table", "nothing"),
+    "docs/machines/network_tables.py": ("--published, platforms/machines/*.xml", "the machine pages' tables", "--bench (build/network_bench)"),
+    "docs/machines/prediction_table.py": ("--platform (or a probe's)", "docs/machines/probe.md's table (not with --print)", "build/machine_probe, build/simulate"),
+    "docs/machines/balance_table.py": ("platforms/", "docs/machines/'s balance table (not with --print)", "build/simulate"),
+    "analysis/openings.py": ("the pages named", "each page's opening", "nothing"),
+    "analysis/headline.py": ("scene2, platforms", "analysis/headline.json", "build/simulate"),
+    "platforms/generate.py": ("platforms/ncube2.json", "--out: ncube2-d7.json .. ncube2-d13.json", "nothing"),
+    "platforms/machines/generate.py": ("its own table of machines", "--out: platforms/machines/*.xml", "nothing"),
+    "scenes/generate.py": ("nothing", "--out: the scenes", "nothing"),
+    "bench/hypercube_scale.py": ("--scene, platforms", "stdout", "--simulate, /usr/bin/time"),
+    "bench/long_runs.py": ("--old, --new build folders", "stdout", "their simulate, simgrid_replay"),
+    "bench/memory_fit.py": ("--scene, --platform", "stdout", "--simulate"),
+    "bench/parallel_bench.sh": ("scene3", "stdout", "build/simulate"),
+    "bench/speed_report.py": ("--old build folder", "bench/measured/", "simulate of both builds"),
+}
+
+PAGE = "docs/threat-model.md"
+
+
+def page_rows(root):
+    """The rows of docs/threat-model.md's table: every program COVERED lists, with SURFACE's
+    reads, writes and runs and the tests that try it (or why none does)."""
+    tried = sum(not isinstance(t, str) for t in COVERED.values())
+    rows = [f"{len(COVERED)} programs and scripts: {tried} tried by the tests named, "
+            f"{len(COVERED) - tried} open with why.", "",
+            "| program | reads | writes | runs | tried by |", "|---|---|---|---|---|"]
+    for program, tests in COVERED.items():
+        reads, writes, runs = SURFACE[program]
+        tried = (tests if isinstance(tests, str) else
+                 ", ".join(f"`tests/{t}`" for t in tests))
+        rows.append(f"| `{program}` | {reads} | {writes} | {runs} | {tried} |".replace("\n", " "))
+    return rows
+
+
+def page_text(root):
+    """docs/threat-model.md as it should be: its text with the table between the markers."""
+    text = (root / PAGE).read_text()
+    begin, end = "<!-- programs begin -->\n", "<!-- programs end -->"
+    if text.count(begin) != 1 or text.count(end) != 1:
+        raise SystemExit(f"{PAGE}: needs one '{begin.strip()}' and one '{end}'")
+    start = text.index(begin) + len(begin)
+    return text[:start] + "\n".join(page_rows(root)) + "\n" + text[text.index(end):]
+
+
 def shipped(root):
     """Every program the repository ships, by the rule of the module's doc."""
     cmake = (root / "CMakeLists.txt").read_text()
@@ -95,6 +180,12 @@ def problems(root):
     out = [f"{p}: shipped, not listed in tests/robustness/executables.py (add it with the tests "
            "that try it, or as open with why)" for p in sorted(found - set(COVERED))]
     out += [f"{p}: listed, no longer shipped" for p in sorted(set(COVERED) - found)]
+    out += [f"{p}: listed, with no reads, writes and runs in SURFACE (docs/threat-model.md)"
+            for p in sorted(set(COVERED) - set(SURFACE))]
+    out += [f"{p}: in SURFACE, not in COVERED" for p in sorted(set(SURFACE) - set(COVERED))]
+    if not out and page_text(root) != (root / PAGE).read_text():
+        out.append(f"{PAGE}: its table differs from tests/robustness/executables.py; run: "
+                   f"/usr/bin/python3 tests/robustness/executables.py --page")
     for program, tests in sorted(COVERED.items()):
         if isinstance(tests, str):
             if not tests.startswith("open: "):
@@ -112,7 +203,12 @@ def problems(root):
 
 
 if __name__ == "__main__":
-    root = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).resolve().parents[2])
+    arguments = [a for a in sys.argv[1:] if a != "--page"]
+    root = Path(arguments[0] if arguments else Path(__file__).resolve().parents[2])
+    if "--page" in sys.argv[1:]:
+        (root / PAGE).write_text(page_text(root))
+        print(f"wrote the table of {PAGE}")
+        sys.exit(0)
     found = problems(root)
     for line in found:
         print("FAIL " + line)

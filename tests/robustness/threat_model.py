@@ -100,8 +100,9 @@ TOOL_INPUTS = [
     Input("accuracy.py reference", "reference.json", "reference", "accuracy"),
     Input("sweep --slurm sweep file", "sweep.json", "sweep", "sweep-slurm"),
 ]
-TOOL_INPUT_KINDS = ["regular", "link", "dangling link", "link loop", "fifo", "folder",
-                    "endless via link", "huge"]
+# The gate's branches (src/util/input_file.h, analysis/ncube/input_file.py: every kind of link
+# is held for ./simulate above): a plain read, a FIFO, a folder, a huge file.
+TOOL_INPUT_KINDS = ["regular", "fifo", "folder", "huge"]
 # machine_probe times its kernels (about 2 s a run that gets that far): fewer kinds, so that
 # robustness_test stays under about 90 s on the loaded machine.
 PROBE_INPUT_KINDS = ["regular", "dangling link", "fifo", "huge"]
@@ -119,10 +120,20 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
                     "file URI"}
 
 
+# A file a model names, read for the sweep tool by ./simulate --list-inputs: through the same
+# C++ gate and reference rule that every kind holds for ./simulate's own reads above, so the
+# kinds that show the sweep asks it (not a reader of its own): a regular file, a FIFO, a huge
+# file and the references out of the folder.
+SWEEP_PART_KINDS = ["regular", "fifo", "huge", "absolute reference", "escaping reference",
+                    "link out of the folder", "file URI"]
+
+
 def input_kinds(surface):
     if surface in TOOL_INPUTS:
         return PROBE_INPUT_KINDS if surface.run == "probe" else TOOL_INPUT_KINDS
     kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
+    if surface.run.startswith("sweep-") and surface.named_by:
+        kinds = [k for k in kinds if k in SWEEP_PART_KINDS]
     if surface.absolute:   # only where the model's own path matters
         kinds = ["regular", "link", *MODEL_ONLY_KINDS]
     return [k for k in kinds if k != "file URI" or surface.uri]
@@ -244,9 +255,6 @@ PAGE_SCRIPTS = {
     "headline.py": "held", "openings.py": "held",
 }
 
-TOOL_OUTPUT_KINDS = ["new", "regular", "link", "dangling link", "link loop", "fifo",
-                     "full device", "folder", "socket", "missing folder"]
-
 
 def outputs(simulate):
     described = json.loads(subprocess.run([str(simulate), "--describe-options"], check=True,
@@ -274,6 +282,10 @@ OUTPUT_KINDS = {
     "socket": ("write", "socket", False),
     "missing folder": ("error", None, False),
 }
+# The kinds and inputs an output option of ./simulate other than --json meets (cells()).
+SHARED_RULE_KINDS = ["new", "link", "dangling link", "fifo", "null device", "full device",
+                     "folder", "missing folder"]
+SHARED_RULE_INPUTS = ["scene.json", "model.obj", "lamp.mtl", "platform.json"]
 # An output named as one of the run's inputs: exit 2 (which inputs: threat_cases.base_run).
 OUTPUT_IS_INPUT = ["scene.json", "model.obj", "lamp.mtl", "model.gltf", "mesh.bin", "tex.png",
                    "platform.json", "platform.xml", "cost.json"]
@@ -330,11 +342,13 @@ def cells(simulate):
             found.append(Cell(f"read {surface.id} / {kind}", "read", surface, kind,
                               probe_expect(expect) if surface.run == "probe" else expect))
         contents = CONTENT_CLASSES[surface.fmt] if not surface.absolute else []
+        if surface.run.startswith("sweep-") and surface.named_by:
+            contents = contents[:1]   # its content is ./simulate's to read (held above)
         for content in contents if surface.run != "probe" else ["garbage", "deep nesting"]:
             found.append(Cell(f"content {surface.id} / {content}", "content", surface, content,
                               {"error"}))
     for output in TOOL_OUTPUTS:
-        for kind in PROBE_OUTPUT_KINDS if output.run == "probe" else TOOL_OUTPUT_KINDS:
+        for kind in PROBE_OUTPUT_KINDS if output.run == "probe" else SHARED_RULE_KINDS:
             expect = {OUTPUT_KINDS[kind][0]}
             found.append(Cell(f"write {output.id} / {kind}", "write", output, kind,
                               probe_expect(expect) if output.run == "probe" else expect))
@@ -342,7 +356,15 @@ def cells(simulate):
             found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
     for output in outputs(simulate):
+        # Every output option of ./simulate writes through the one output rule
+        # (src/tools/output_files.cpp): --json meets every kind of path and every input, each
+        # other option the kinds that take each branch of the rule and three inputs (a scene or
+        # model, a file a model names, a platform). SimGrid's own writers (EXTRA_OUTPUTS), which
+        # the rule reaches another way, meet them all.
+        whole = output.id == "--json" or output in EXTRA_OUTPUTS
         for kind, (outcome, _, _) in OUTPUT_KINDS.items():
+            if not whole and kind not in SHARED_RULE_KINDS:
+                continue
             # A full device refuses bytes, not the lack of them: an output that may stay empty
             # (a log with nothing to say) ends well there.
             if kind == "full device" and not output.content:
@@ -350,6 +372,8 @@ def cells(simulate):
             found.append(Cell(f"write {output.id} / {kind}", "write", output, kind, {outcome}))
         for name in OUTPUT_IS_INPUT:
             if output.model_only and name in ("scene.json",):
+                continue
+            if not whole and name not in SHARED_RULE_INPUTS:
                 continue
             found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
