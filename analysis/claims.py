@@ -447,8 +447,12 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
            + ", ".join(f"`{shown(f)}`" for f in sweep_files)
            + "; how to run it: `docs/reproduce.md`; the truths, the error parts, the intervals "
            "and the threshold: `docs/accuracy.md`. Every figure is an area-weighted RMS of "
-           "relative luminance errors with its 95 % interval (a paired bootstrap over patches, "
-           "widened by the truth's own error: `analysis/ncube/error_parts.py`). Time: the "
+           "symmetric relative luminance differences (the one error measure, "
+           "`analysis/ncube/error_measure.py`: a solution without light transport scores about "
+           "2) with its 95 % interval: a paired bootstrap over the scene's patches, widened by "
+           "the truth's own error (`analysis/ncube/error_parts.py`), which answers how much the "
+           "figure would move on another scene made of patches like these; the runs themselves "
+           "are deterministic, so no interval is over repeated runs. Time: the "
            "simulated seconds of the whole run to convergence (largest unshot power below 1e-4 "
            "of the emitted power). The paper's method runs as the paper's program "
            "(`--parallelisation receivers`); the hemicube in its natural parallel form "
@@ -467,9 +471,12 @@ def markdown(rows, truths, decisions, sweep_files, picture_labels=(), schemes=No
             "(receivers at element centres, a patch shooting its elements' mean) is not counted "
             "(for the hemicube in part: see the threats); the ratio "
             "hemicube / paper's method (at its largest M) per element and per patch, with its "
-            "paired 95 % interval. **Threshold** (fixed in `docs/accuracy.md` before the runs): "
+            "paired 95 % interval. **Threshold** (the project's convention, fixed in "
+            "`docs/accuracy.md` before the runs; the paper does not say how much \"much\" is): "
             f"\"much\" is a ratio of at least {claim_one.THRESHOLD:g} with the interval's low "
-            "end at least as high; below it everywhere, it does not hold; straddling, undecided.",
+            "end at least as high; below it everywhere, it does not hold; straddling, undecided. "
+            "The decisions are **exploratory**: many are taken from the same data and none is "
+            "corrected for multiple comparisons (docs/accuracy.md).",
             ""]
     out += claim_one.decision_rows(decisions) + ["", "1. " + claim_one.claim_sentence(decisions), ""]
     out += ["**What it rests on**: the exact structure (`build/reference_solution --structure "

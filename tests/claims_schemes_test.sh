@@ -85,7 +85,7 @@ if sum(n["bytes_sent"] for n in circ["nodes"]) != expected:
 if not re.search(r"all \d+ circulation runs agree with it to the byte", text):
     problems.append("the formula check does not say the circulation runs agree")
 # The time to the fixed error: the checkpoint shown is the first under the level.
-level = float(re.search(r"element RMS at most ([0-9.]+)", text).group(1))
+level = float(re.search(r"element error at most ([0-9.]+)", text).group(1))
 for scheme in ("receivers", "shooters", "circulation"):
     cells = row(f"| 4 | {scheme} | 4 | 0 |")
     band = re.fullmatch(r"\[([0-9.]+), ([0-9.]+|not reached)\]", cells[12])
