@@ -547,7 +547,8 @@ def markdown(rows, levels, host=None):
         runs, summed, wall = host
         out += [f"Host time: {runs} runs of ./simulate in the results folder's claims/schemes/ "
                 f"(cells, twins, checkpoints), {summed:.0f} s summed over their result files' "
-                "host_seconds"
+                "host_seconds (each run's wall seconds on the machine it ran on, loaded or not; "
+                "the study's CPU time from an empty folder: docs/reproduce.md)"
                 + (f"; {wall:.0f} s wall from an empty results folder, two runs at once"
                    if wall is not None else "") + ".", ""]
     out += ["![speedup](figures/claims_schemes_speedup.png)", "",

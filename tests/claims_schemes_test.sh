@@ -7,7 +7,8 @@
 # iteration and the one before) and lies in its band, scene2's shooters are a row "no (exit 3)"
 # with a † twin while circulation fits, and the claim's sentence turns with the figures (its
 # ratios the result files'; canned rows: the paper's program faster, slower, slower only
-# somewhere, a band across 1). About 20 s.
+# somewhere, a band across 1). About 50 CPU seconds (the error after every checkpoint up to the
+# band's late end).
 set -u
 simulate=$1 root=$2
 scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
