@@ -254,14 +254,14 @@ def pictures(cells, results, jobs, path):
     return [picture_label(c) for c in cells]
 
 
-def schemes_section(results):
+def schemes_section(results, jobs=2):
     """The second claim's section (analysis/claims_schemes.py, another part of the study),
-    when that module is there."""
+    when that module is there; its cells run `jobs` at once as the first claim's do."""
     try:
         import claims_schemes
     except ImportError:
         return None
-    return claims_schemes.section(results)
+    return claims_schemes.section(results, jobs)
 
 
 def series_colour(row):
@@ -584,7 +584,7 @@ def main():
         print(f"claims: {e}", file=sys.stderr)
         return 4
     plot(rows, args.figure)
-    schemes = None if args.no_schemes else schemes_section(args.results.resolve())
+    schemes = None if args.no_schemes else schemes_section(args.results.resolve(), args.jobs)
     # --- the hemicube's section (analysis/claims_hemicube.py): included whole
     import claims_hemicube
     try:
