@@ -146,11 +146,11 @@ for scene in ("cornell-box", "scene0"):
         check(abs(L - dark_error / 3) < 1e-4, f"{scene}: the level {L} is not a third of {dark_error}")
         check(float(first.group(1)) > L + float(band.group(1)),
               f"{scene}: the first shot's {first.group(1)} is not above the level and its band")
-    rows = table_after(body, heading)
+    scheme_rows = table_after(body, heading)
     swept = table_after(text, "--shooters-per-iteration S at")
-    for n in sorted({r[0] for r in rows}, key=int):
-        paper = [r for r in rows if r[0] == n and r[1].startswith("receivers") and value(r[5]) is not None]
-        other = [(value(r[5]), value(r[6])) for r in rows if r[0] == n and r[1] == "circulation"
+    for n in sorted({r[0] for r in scheme_rows}, key=int):
+        paper = [r for r in scheme_rows if r[0] == n and r[1].startswith("receivers") and value(r[5]) is not None]
+        other = [(value(r[5]), value(r[6])) for r in scheme_rows if r[0] == n and r[1] == "circulation"
                  and value(r[5]) is not None]
         if n == "16":
             other += [(value(r[3]), value(r[4])) for r in swept if r[1] == "circulation"]
