@@ -45,7 +45,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ncube import accuracy, page, paths, plotting, sweep  # noqa: E402
+from ncube import accuracy, error_parts, page, paths, plotting, sweep  # noqa: E402
 
 ROOT = paths.ROOT
 SWEEP = ROOT / "experiments" / "claims" / "schemes.yaml"
@@ -175,9 +175,8 @@ def times_to_error(cell, total_iterations, level, band, folder, reference, refer
 def no_transport_error(reference, reference_path, scene_file):
     """The element error of the solution without light transport: every element its patch's
     emission (B = E), under the one measure."""
-    emits = json.loads(Path(scene_file).read_text())["patches"]
-    solution = [(e[0], tuple(emits[e[0]].get("emission", (0.0, 0.0, 0.0))))
-                for e in reference["elements"]]
+    emission, _ = error_parts.scene_materials(scene_file)   # through the read gate
+    solution = [(e[0], tuple(emission[e[0]])) for e in reference["elements"]]
     return accuracy.compare(solution, reference, "B = E", str(reference_path))["element_rms"]
 
 
