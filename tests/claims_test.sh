@@ -100,7 +100,7 @@ def check(name, got, expected):
     if got != expected:
         problems.append(f"{name}: got {got!r}, expected {expected!r}")
 # The second claim's section: analysis/claims_schemes.py's section(results) when importable.
-sys.modules["claims_schemes"] = types.SimpleNamespace(section=lambda results: f"from {results}")
+sys.modules["claims_schemes"] = types.SimpleNamespace(section=lambda results, jobs=2: f"from {results}")
 check("schemes section", claims.schemes_section("R"), "from R")
 for p in problems:
     print("FAIL:", p)
