@@ -1,6 +1,6 @@
-// Çapın, Aykanat & Özgüç's circulation scheme (--parallelisation circulation;
-// src/nodes/circulation_processor.h, src/nodes/ring_circulation.h, docs/model.md "The
-// published opponent"), against values worked out independently: the sequential solver at
+// The circulation scheme built from the abstracts of Çapın, Aykanat & Özgüç (--parallelisation
+// circulation; src/nodes/circulation_processor.h, src/nodes/ring_circulation.h, docs/model.md
+// "The circulation opponent"), against values worked out independently: the sequential solver at
 // R = 1 (the same radiosities to the last bit), the sequential solver to convergence at R = 4
 // (the same physics, another order of shots: within a stated tolerance), the shares' best
 // patches for the choice, the ring's messages and bytes in closed form, every node's memory by

@@ -7,24 +7,23 @@ usage: analysis/ncube/accuracy.py SOLUTION.ply REFERENCE.json [--per-patch] [--p
 SOLUTION.ply is ./simulate's --mesh of a run without --subdivide (its faces are the scene's
 elements in order, each with its raw radiosity as doubles: src/models/solution_mesh.h);
 REFERENCE.json is build/reference_solution's file of the same scene. Luminance is Rec. 709's,
-as the simulator's (src/scene/scene.cpp: Y = 0.2126 R + 0.7152 G + 0.0722 B). The measures:
+as the simulator's (src/scene/scene.cpp: Y = 0.2126 R + 0.7152 G + 0.0722 B). The measures
+are the one error measure of every study (analysis/ncube/error_measure.py, docs/accuracy.md
+"The error measure"):
 
-* element_rms: the area-weighted RMS of the elements' relative errors,
-  r_e = (Y_e - Yref_e) / Yref_e, sqrt(sum_e A_e r_e^2 / sum_e A_e) over elements with
-  Yref_e > 0 (normalising by the reference's own RMS instead would let the light, about 100
-  times brighter than the walls and exact, hide every other error);
-* patch_rms: the same over patches, a patch's luminance being the area-weighted mean of its
-  elements' (the result file's patch_radiosity);
-* patch_max: the largest relative patch error |Y_p - Yref_p| / Yref_p (patches with
-  Yref_p > 0), and worst_patch, its index;
-* per element and per patch (--per-element, --per-patch): (Y - Yref) / Yref.
+* per element and per patch (a patch's luminance the area-weighted mean of its elements', the
+  result file's patch_radiosity): the symmetric relative difference (Y - Yref) / ((Y + Yref) / 2);
+  an element (patch) whose reference is below the dark floor, 1 % of the area-weighted mean of
+  the reference over the non-emitting ones (which patches emit: the scene file the reference
+  names), is left out (null in --json, "undefined" in the listing; counted: left_out_elements,
+  left_out_patches);
+* element_rms, patch_rms: the area-weighted RMS over the items kept; patch_max: the largest
+  |difference| of a patch kept, and worst_patch, its index.
 
 Every file is read through the project's input gate (ncube.input_file: regular files only, a
 size limit, a FIFO or a device refused at once) and every value is checked: a face's patch and
 element indices whole numbers >= 0, radiosities and areas finite and >= 0 (areas > 0), a PLY
-header's counts within what its file holds. An element whose reference luminance is 0 has no
-relative error: its per-element value is null in --json (and "undefined" in the listing), and
-it is left out of the RMS, as a patch whose reference is 0 is. --json is written under the
+header's counts within what its file holds. --json is written under the
 output rule (ncube.output_file): never onto an input, whatever link leads there.
 
 Exit codes: 0; 2 bad input (a file unreadable, malformed, with a value out of range, or not of
@@ -45,7 +44,7 @@ import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import input_file, page  # noqa: E402
+from ncube import error_measure, input_file, output_file, page  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -188,54 +187,49 @@ def read_reference(path):
     return reference
 
 
-def compare(solution, reference, solution_name="solution", reference_name="reference"):
-    """The measures of the module's docstring, for `solution` ([(patch, rgb)]) against the
-    reference's elements ([patch, area, r, g, b] each)."""
+def scene_emits(reference, reference_name="reference"):
+    """Per patch whether it emits, from the scene file the reference names (`scene_file`, in
+    scenes/, as ./simulate looks a bare name up); a hand-made reference without one: no patch
+    emits."""
+    name = reference.get("scene_file")
+    if name is None:
+        return None
+    path = Path(__file__).resolve().parents[2] / "scenes" / Path(str(name)).name
+    try:
+        scene = json.loads(input_file.read_input_text(path, "scene file", REFERENCE_BYTES))
+        return [luminance(p.get("emission", (0.0, 0.0, 0.0))) > 0 for p in scene["patches"]]
+    except input_file.InputFileError as e:
+        raise AccuracyError(f"{reference_name}: scene_file: {e}") from None
+    except (ValueError, KeyError, TypeError, AttributeError) as e:
+        raise AccuracyError(f"{reference_name}: scene_file {path}: not a scene file ({e})") from None
+
+
+def compare(solution, reference, solution_name="solution", reference_name="reference",
+            emits=None):
+    """The measures of docs/accuracy.md ("The error measure", analysis/ncube/error_measure.py:
+    the symmetric relative difference, the dark floor) for `solution` ([(patch, rgb)]) against
+    the reference's elements ([patch, area, r, g, b] each). emits: per patch whether it emits
+    (default: from the reference's scene file)."""
     elements = reference["elements"]
     if len(solution) != len(elements):
         raise AccuracyError(f"{solution_name}: {len(solution)} elements, {reference_name} has "
                             f"{len(elements)}: not the same scene's element grid")
     patch_count = 1 + max(e[0] for e in elements)
-    squares = weight = 0.0
-    per_element = []
-    patch_sum, patch_ref, patch_area = [0.0] * patch_count, [0.0] * patch_count, [0.0] * patch_count
-    for k, ((patch, rgb), (ref_patch, area, *ref_rgb)) in enumerate(zip(solution, elements)):
+    for k, ((patch, _), (ref_patch, *_)) in enumerate(zip(solution, elements)):
         if patch != ref_patch:
             raise AccuracyError(f"{solution_name}: element {k} is on patch {patch}, in "
                                 f"{reference_name} on patch {ref_patch}")
-        y, y_ref = luminance(rgb), luminance(ref_rgb)
-        if y_ref > 0:
-            relative = (y - y_ref) / y_ref
-            squares += area * relative ** 2
-            weight += area
-        else:
-            relative = 0.0 if y == 0 else None   # no relative error against a black reference
-        per_element.append(relative)
-        patch_sum[patch] += area * y
-        patch_ref[patch] += area * y_ref
-        patch_area[patch] += area
-    per_patch, worst, largest = [], -1, 0.0
-    patch_squares = patch_weight = 0.0
-    for p in range(patch_count):
-        if patch_area[p] == 0:   # a patch number no element has (the numbering has a gap)
-            per_patch.append(None)
-            continue
-        y = patch_sum[p] / patch_area[p]
-        y_ref = patch_ref[p] / patch_area[p]
-        if y_ref > 0:
-            relative = (y - y_ref) / y_ref
-            patch_squares += patch_area[p] * relative ** 2
-            patch_weight += patch_area[p]
-            if worst < 0 or abs(relative) > largest:
-                worst, largest = p, abs(relative)
-        else:
-            relative = 0.0 if y == 0 else None
-        per_patch.append(relative)
-    return {"element_rms": math.sqrt(squares / weight) if weight > 0 else 0.0,
-            "patch_rms": math.sqrt(patch_squares / patch_weight) if patch_weight > 0 else 0.0,
-            "patch_max": largest, "worst_patch": worst,
-            "reference_element_rms": reference["self_agreement"]["element_rms"],
-            "per_element": per_element, "per_patch": per_patch}
+    if emits is None:
+        emits = scene_emits(reference, reference_name)
+    if emits is None:
+        emits = [False] * patch_count
+    if len(emits) < patch_count:
+        raise AccuracyError(f"{reference_name}: {patch_count} patches, its scene has {len(emits)}")
+    out = error_measure.measure([luminance(rgb) for _, rgb in solution],
+                                [luminance(e[2:]) for e in elements], [e[1] for e in elements],
+                                [e[0] for e in elements], list(emits)[:patch_count])
+    out["reference_element_rms"] = reference["self_agreement"]["element_rms"]
+    return out
 
 
 def accuracy(solution_ply, reference_json):

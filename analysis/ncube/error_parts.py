@@ -15,12 +15,11 @@ file of the reference's layout):
     sum A (1 - rho) H with H = (B - E) / rho per element and colour (every reflectance of the
     scenes is > 0), and where the rest goes.
 
-The relative error of an element or a patch is (Y - Y_t) / Y_t; an element (or patch) whose
-truth Y_t is below FLOOR of the area-weighted mean luminance of the truth's non-emitting ones
-is left out (as analysis/ncube/accuracy.py leaves out Y_t = 0): in the dark (the ceiling above
-the Cornell box's light at about 1e-7 of the walls, a floor element whose centre lies under a
-box) a relative error means nothing, and one such element would otherwise be most of the RMS.
-How many are left out is reported (`left_out`). The RMS is area-weighted, as accuracy.py's.
+The error of an element or a patch, its dark floor and the RMS are the one measure of
+analysis/ncube/error_measure.py (docs/accuracy.md, "The error measure"): the symmetric relative
+difference (Y - Y_t) / ((Y + Y_t) / 2), area-weighted RMS, an item whose truth is below FLOOR of
+the area-weighted mean luminance of the truth's non-emitting ones left out (`left_out`, counted
+on the page), the same as analysis/ncube/accuracy.py's.
 
 Intervals (the methods are deterministic: the paper's rays go to the parts' centroids, the
 hemicube has no random element, so there are no seeds to repeat): a paired bootstrap over
@@ -38,10 +37,10 @@ import math
 
 import numpy as np
 
-from ncube import input_file
+from ncube import error_measure, input_file
 from ncube.accuracy import LUMINANCE, solution_from_ply
 
-FLOOR = 0.01          # of the mean luminance: an element darker has no relative error of its own
+FLOOR = error_measure.FLOOR
 BOOTSTRAP = 2000      # draws of the patches
 SEED = 1994
 LEVEL = 0.95
@@ -101,11 +100,10 @@ class Truth:
         self.weight = np.asarray(weight, dtype=float)
         self.patch_of = np.asarray(patch_of, dtype=int)
         self.patches = patches
-        dark = ~np.asarray(emitting)
-        self.floor = FLOOR * float(np.sum(self.weight[dark] * self.y[dark]) / np.sum(self.weight[dark]))
-        # Darker than the floor: no relative error of its own, left out of the RMS (as
-        # accuracy.py leaves out a reference of 0).
-        self.left_out = self.y < self.floor
+        self.floor = error_measure.dark_floor(self.y, self.weight, emitting)
+        # Darker than the floor: no relative error of its own, left out of the RMS (the one
+        # measure: error_measure.kept).
+        self.left_out = ~error_measure.kept(self.y, self.floor)
         self.weight = np.where(self.left_out, 0.0, self.weight)
         self.noise = None if noise is None else np.asarray(noise, dtype=float)
         self.widen = widen
@@ -127,7 +125,8 @@ def _draws(patches):
 
 
 def relative(y, truth):
-    return (np.asarray(y) - truth.y) / np.maximum(truth.y, truth.floor)
+    """Per item the measure's difference (error_measure.difference)."""
+    return error_measure.difference(y, truth.y)
 
 
 def rms(y, truth):
@@ -144,7 +143,7 @@ def _replicates(y, truth, counts):
         return np.sqrt(counts @ per_patch / (counts @ weight))
     rng = np.random.default_rng(SEED + 1)
     noisy = truth.y[None, :] + truth.noise[None, :] * rng.standard_normal((len(counts), len(truth.y)))
-    r = (np.asarray(y)[None, :] - noisy) / np.maximum(noisy, truth.floor)
+    r = error_measure.difference(np.asarray(y)[None, :], np.maximum(noisy, 0.0))
     return np.sqrt(np.sum(counts * truth.weight * r * r, axis=1) / (counts @ truth.weight))
 
 
@@ -227,3 +226,23 @@ def cycles_balance(cycles, emission, reflectance):
     se_absorbed = float(math.sqrt(np.sum((per * se) ** 2)))
     return {"emitted": emitted, "absorbed": absorbed, "absorbed_share": absorbed / emitted,
             "absorbed_share_se": se_absorbed / emitted}
+
+
+def leaving_share(cycles, emission, reflectance):
+    """The share of the emitted power that leaves the scene, as the truth has it: what Cycles'
+    patches do not absorb, 1 - absorbed share, with its 95 % interval (+-1.96 se). In a closed
+    scene it is 0 but for Cycles' own error; in the open Cornell box it is the light through the
+    open front. Taken as the same for every answer of the scene (an answer that sends its light
+    in other proportions loses another share through the opening: docs/accuracy.md)."""
+    c = cycles_balance(cycles, emission, reflectance)
+    share, se = 1 - c["absorbed_share"], c["absorbed_share_se"]
+    return share, share - 1.96 * se, share + 1.96 * se
+
+
+def split_loss(balance_, leaving):
+    """The structure's loss taken apart: what leaves the scene (`leaving`, a share) and the
+    structure's own loss, the rest of it (what exact centre form factors would fail to deliver
+    that the truth delivers)."""
+    if leaving is None or "structure_lost_share" not in balance_:
+        return None, None
+    return leaving, balance_["structure_lost_share"] - leaving

@@ -4,8 +4,9 @@
 // configurations it refuses, each node's memory before the run, the node programs it places
 // on the simulated machine, and what the run reports of them. The paper's program first
 // (receivers: each radiosity processor holds a share of the patches and gathers at them),
-// then the shooter-centred scheme it replaced (nodes/shooter_processor.h), then the published
-// shooter-centred scheme of Çapın, Aykanat & Özgüç (nodes/circulation_processor.h).
+// then the shooter-centred scheme it replaced (nodes/shooter_processor.h), then a
+// shooter-centred scheme built from the abstracts of Çapın, Aykanat & Özgüç
+// (nodes/circulation_processor.h; what is assumed: docs/model.md).
 #pragma once
 
 #include <functional>
