@@ -61,6 +61,7 @@ from ncube import input_file, output_file  # noqa: E402
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 SCENE_DIAGONAL = 10.0
 BAKE_SCRIPT = Path(__file__).resolve().parent / "bake_in_blender.py"
+CAMERA_SCRIPT = Path(__file__).resolve().parent / "camera_in_blender.py"
 
 
 class Refusal(Exception):
@@ -141,7 +142,7 @@ def run(args):
     for quad in quads:
         quad["res"] = args.texels
     job = {"samples": args.samples, "seeds": list(range(args.seeds)), "bounces": args.bounces,
-           "threads": args.threads,
+           "threads": args.threads, "pixels": args.pixels,
            "patches": [{"rho": p["rho"], "emission": p["emission"]} for p in patches],
            "quads": [{"patch": q["patch"], "res": q["res"],
                       "corners": (q["corners"] * scale).tolist()} for q in quads]}
@@ -149,15 +150,18 @@ def run(args):
     with tempfile.TemporaryDirectory(prefix="cycles-answers-") as scratch:
         job_path = Path(scratch) / "job.json"
         job_path.write_text(json.dumps(job))
+        script = CAMERA_SCRIPT if args.estimator == "camera" else BAKE_SCRIPT
         done = subprocess.run([blender, "-b", "--factory-startup", "-t", str(args.threads),
-                               "-P", str(BAKE_SCRIPT), "--", str(job_path)],
+                               "-P", str(script), "--", str(job_path)],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        report_path = Path(str(job_path) + ".report.json")
+        report_path = Path(str(job_path) + (".camera.json" if args.estimator == "camera"
+                                             else ".report.json"))
         if done.returncode != 0 or not report_path.exists():
             tail = "\n".join(done.stdout.splitlines()[-15:])
             raise Refusal(f"blender failed (exit {done.returncode}):\n{tail}", 7)
         report = json.loads(report_path.read_text())
-        per_seed = [np.load(f"{job_path}.texels-{seed}.npy") for seed in job["seeds"]]
+        per_seed = ([] if args.estimator == "camera" else
+                    [np.load(f"{job_path}.texels-{seed}.npy") for seed in job["seeds"]])
     # The quads' normals as Blender built them face as the scene's (one-sidedness).
     for quad, normals in zip(quads, report["normals"]):
         c = quad["corners"]
@@ -166,20 +170,32 @@ def run(args):
         if min(float(np.dot(expected, n)) for n in normals) < 0.999:
             raise Refusal(f"patch {quad['patch']}: Blender's face normal is not the scene's", 7)
     area = np.zeros(len(patches))
-    lighting = np.zeros((len(job["seeds"]), len(patches), 3))
-    offset = 0
     for quad in quads:
-        n = quad["res"]
-        weights = texel_weights(quad["corners"], n)
-        area[quad["patch"]] += weights.sum()
-        for s, texels in enumerate(per_seed):
-            block = texels[offset:offset + n * n * 3].reshape(n, n, 3).astype(float)
-            lighting[s, quad["patch"]] += np.einsum("ij,ijc->c", weights, block)
-        offset += n * n * 3
-    lighting /= area[None, :, None]
+        area[quad["patch"]] += triangle_area(*quad["corners"][:3]) + triangle_area(
+            quad["corners"][0], quad["corners"][2], quad["corners"][3])
     rho = np.array([p["rho"] for p in patches])
     emission = np.array([p["emission"] for p in patches])
-    radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
+    if args.estimator == "camera":
+        # The pixels' sum times a pixel's area is the radiosity's integral over the patch
+        # (camera_in_blender.py), in scaled units as the area below.
+        scaled_area = area * scale * scale
+        radiosity = np.array([[np.array(sums[str(p)]) * report["pixel_area"][str(p)] / scaled_area[p]
+                               for p in range(len(patches))] for sums in report["sums"]])
+    else:
+        lighting = np.zeros((len(job["seeds"]), len(patches), 3))
+        texel_area = np.zeros(len(patches))
+        offset = 0
+        for quad in quads:
+            n = quad["res"]
+            weights = texel_weights(quad["corners"], n)
+            texel_area[quad["patch"]] += weights.sum()
+            for s, texels in enumerate(per_seed):
+                block = texels[offset:offset + n * n * 3].reshape(n, n, 3).astype(float)
+                lighting[s, quad["patch"]] += np.einsum("ij,ijc->c", weights, block)
+            offset += n * n * 3
+        lighting /= texel_area[None, :, None]
+        area = texel_area   # the same area to the last bit (sums of the texels' weights)
+        radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
     y = radiosity @ LUMINANCE
     count = len(job["seeds"])
     mean, se = radiosity.mean(axis=0), radiosity.std(axis=0, ddof=1) / math.sqrt(count)
@@ -188,15 +204,29 @@ def run(args):
             [float(y_mean[p]), float(y_se[p])] for p in range(len(patches))]
     header = {
         "scene": name, "scene_file": scene_path.name, "scene_sha256": "sha256:" + sha256,
-        "renderer": f"Blender {report['blender']} Cycles (CPU), analysis/cycles/bake_in_blender.py",
-        "method": "bake of diffuse direct + indirect lighting without colour, B = E + rho * lighting",
-        "samples_per_texel": args.samples, "seeds": count, "texels_a_side": args.texels,
-        "bounces": args.bounces, "threads": args.threads, "scale": float(scale),
-        "texels": int(sum(q["res"] ** 2 for q in quads)),
-        "bake_seconds": [round(s, 1) for s in report["seconds"]],
+        "renderer": f"Blender {report['blender']} Cycles (CPU), analysis/cycles/"
+                    + ("camera_in_blender.py" if args.estimator == "camera" else "bake_in_blender.py"),
+    }
+    if args.estimator == "camera":
+        header.update({
+            "method": "camera rays averaged over each patch's area (an orthographic camera on its "
+                      "front, only the patch visible to camera rays, box pixel filter)",
+            "estimator": "camera", "samples_per_pixel": args.samples, "seeds": count,
+            "pixels_a_patch": args.pixels, "bounces": args.bounces,
+            "threads": args.threads, "scale": float(scale),
+            "pixels": int(sum(a * b for a, b in report["pixels"].values())),
+            "camera_seconds": [round(s, 1) for s in report["seconds"]]})
+    else:
+        header.update({
+            "method": "bake of diffuse direct + indirect lighting without colour, B = E + rho * lighting",
+            "samples_per_texel": args.samples, "seeds": count, "texels_a_side": args.texels,
+            "bounces": args.bounces, "threads": args.threads, "scale": float(scale),
+            "texels": int(sum(q["res"] ** 2 for q in quads)),
+            "bake_seconds": [round(s, 1) for s in report["seconds"]]})
+    header.update({
         "host_seconds": round(time.time() - start, 1),
         "columns": ["patch", "area", "R", "G", "B", "se_R", "se_G", "se_B", "Y", "se_Y"],
-    }
+    })
     text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
     text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])
                                           for r in rows) + "\n ]\n}\n"
@@ -210,7 +240,12 @@ def main(argv=None):
     parser.add_argument("--out", required=True)
     parser.add_argument("--samples", type=int, default=256, help="Cycles samples per texel and bake")
     parser.add_argument("--seeds", type=int, default=8, help="independent bakes (the standard error)")
-    parser.add_argument("--texels", type=int, default=24, help="texels a side of every quad")
+    parser.add_argument("--texels", type=int, default=24, help="texels a side of every quad (bake)")
+    parser.add_argument("--estimator", choices=("bake", "camera"), default="bake",
+                        help="bake: texels baked on every patch; camera: camera rays averaged over "
+                             "each patch's area")
+    parser.add_argument("--pixels", type=int, default=256,
+                        help="pixels on each patch: its area over a pixel's (camera)")
     parser.add_argument("--bounces", type=int, default=1024)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--blender", default="blender")
@@ -221,6 +256,8 @@ def main(argv=None):
                 raise Refusal(f"--{option} {getattr(args, option)}: must be 1 or more", 2)
         if args.seeds < 2:
             raise Refusal(f"--seeds {args.seeds}: must be 2 or more (the standard error)", 2)
+        if args.pixels < 16:
+            raise Refusal(f"--pixels {args.pixels}: must be 16 or more", 2)
         rows = run(args)
     except Refusal as e:
         print(f"cycles_answers: {e}", file=sys.stderr)
