@@ -85,5 +85,18 @@ sys.exit(0 if abs(mean / exact - 1) < 0.005 else "squares: the receiver %.6f, ex
 # fingerprint the recorded one.
 /usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$root/analysis/reference" \
   --build "$(dirname "$solver")" --scenes-dir "$root/scenes" || fail "the committed references (above)"
+# The references' own command, small (K = 4, --refine 1): it writes the reference and its
+# records, and the check passes on what it wrote; an edited file then fails it.
+"$root/experiments/claims/references" --build "$(dirname "$solver")" --out "$scratch/refs" \
+  --samples 4 --refine 1 cornell-box > /dev/null &&
+  /usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$scratch/refs" \
+    --build "$(dirname "$solver")" --scenes-dir "$root/scenes" > /dev/null ||
+  fail "experiments/claims/references: its own output does not check"
+sed -i 's/"element_pairs": /"element_pairs": 1/' "$scratch/refs/cornell-box.json"
+/usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$scratch/refs" \
+  --build "$(dirname "$solver")" --scenes-dir "$root/scenes" > "$scratch/out" &&
+  fail "an edited reference passes the check"
+grep -q "cornell-box.json: its content is not what its command made" "$scratch/out" ||
+  fail "an edited reference: $(cat "$scratch/out")"
 [[ $failed == 0 ]] && echo "reference_solution_test: passed"
 exit $failed
