@@ -332,7 +332,7 @@ def truths_section(truths):
     out = ["## What the errors are measured against", "",
            "| scene | reference (per element): K, self-agreement element RMS, its patch RMS against "
            "Cycles | exact structure (patches): K, self-agreement element / patch RMS | every "
-           "element its own patch: K | Cycles: samples a texel, seeds | elements left out "
+           "element its own patch: K | Cycles: samples a pixel, seeds | elements left out "
            "(darker than the floor): exact structure, reference |",
            "|---|---|---|---|---|---|"]
     for scene, t in sorted(truths.items()):
@@ -346,7 +346,8 @@ def truths_section(truths):
         out.append(f"| {scene} | {ref_text} | K = {s['samples']}, {100 * t.structure_self[0]:.2f} % / "
                    f"{100 * t.structure_self[1]:.3f} % | "
                    + (f"K = {own['samples']}" if own else "not computed") + " | "
-                   + (f"{cycles['samples_per_texel']}, {cycles['seeds']}" if cycles else "none") + " | "
+                   + (f"{cycles.get('samples_per_pixel', cycles.get('samples_per_texel'))}, {cycles['seeds']}"
+                      if cycles else "none") + " | "
                    + left_out(t.b_element) + ", "
                    + (left_out(t.a_element) if t.a_element else "—") + " |")
     return out + [""]

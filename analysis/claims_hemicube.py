@@ -416,8 +416,9 @@ def markdown(rows, references, cycles, scenes, claims_files, claims_choices, swe
         out.append(f"* {scene}: the reference `{shown(path)}` ({ref['element_count']} elements, "
                    f"K = {ref['samples']}): its self-agreement (K/4 against K) element RMS "
                    f"{s['element_rms']:.2e}, patch RMS {s['patch_rms']:.2e}; its patch RMS "
-                   f"against Cycles (`{shown(cycles_path)}`, {answers['samples_per_texel']} "
-                   f"samples a texel x {answers['seeds']} seeds) {ref_rms:.3f} ± {ref_half:.3f} "
+                   f"against Cycles (`{shown(cycles_path)}`, "
+                   f"{answers.get('samples_per_pixel', answers.get('samples_per_texel'))} "
+                   f"samples a pixel x {answers['seeds']} seeds) {ref_rms:.3f} ± {ref_half:.3f} "
                    "(95 %, from Cycles' standard errors).")
     out += ["", "### Back faces: block against pass", "",
             "| scene | method | iterations | element RMS vs reference | patch RMS vs reference "

@@ -4,10 +4,9 @@
 # "Against Cycles"), patch by patch, relative luminance differences d_p. No Blender needed.
 # The tolerances were fixed before the final answers were looked at, and count Cycles' own
 # standard error se_p: the Cornell box's area-weighted RMS of d_p at most 1 % and every patch
-# within 3 % + 3 se_p. scene0's bound, fixed the same way (1.5 % and 5 % + 3 se_p), is NOT
-# met (1.7 % and 10 %: docs/accuracy.md, "Its own error"); it is printed, not held, until
-# the reference is mended there (its coarse elements beside the furniture). Both files must be
-# of today's scene file.
+# within 3 % + 3 se_p; scene0's, fixed the same way, 1.5 % and 5 % + 3 se_p (met since its
+# floor and walls are cut to parts no longer than 0.25 m beside the furniture: docs/accuracy.md,
+# "Its own error"). Others are printed, not held. Both files must be of today's scene file.
 set -u
 root=$2
 scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
@@ -21,6 +20,7 @@ for answer in "$root"/analysis/cycles/*.json; do
     { echo "FAIL: $scene: the comparison failed"; failed=1; continue; }
   case $scene in
     cornell-box) rms=0.01 max=0.03 ;;
+    scene0) rms=0.015 max=0.05 ;;
     *) echo "$scene: printed, not held (docs/accuracy.md)"; continue ;;
   esac
   /usr/bin/python3 - "$scratch/$scene.json" "$answer" "$root/scenes/$scene.json" "$rms" "$max" <<'PY' ||
@@ -43,6 +43,6 @@ PY
     { echo "FAIL: $scene"; failed=1; }
   checked=$((checked + 1))
 done
-((checked >= 1)) || { echo "FAIL: the Cornell box was not checked"; failed=1; }
+((checked >= 2)) || { echo "FAIL: the Cornell box and scene0 were not both checked"; failed=1; }
 [[ $failed == 0 ]] && echo "cycles_reference_test: passed"
 exit $failed

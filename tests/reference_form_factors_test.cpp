@@ -27,13 +27,13 @@ Scene scene_of(const std::vector<Polygon>& polygons, int n = 1) {
   return scene;
 }
 
-double entry(const FormFactorRows& rows, int i, int j) {
-  for (const FormFactorEntry& e : rows[std::size_t(i)])
+double entry(const FormFactors& factors, int i, int j) {
+  for (const FormFactorEntry& e : factors.row(i))
     if (e.element == j) return e.value;
   return 0.0;
 }
 
-FormFactorRows form_factors(const Scene& scene, int side) {
+FormFactors form_factors(const Scene& scene, int side) {
   FormFactorOptions options;
   options.side = side;
   options.threads = 1;
@@ -138,10 +138,10 @@ TEST(ReferenceFormFactors, ReciprocityHoldsForElementsOfDifferentAreas) {
     scene.patches.push_back(p);
   }
   scene.build_elements();
-  const FormFactorRows rows = form_factors(scene, 4);
+  const FormFactors rows = form_factors(scene, 4);
   int checked = 0;
   for (int i = 0; i < int(scene.elements.size()); ++i)
-    for (const FormFactorEntry& e : rows[std::size_t(i)]) {
+    for (const FormFactorEntry& e : rows.row(i)) {
       const double forward = e.value * scene.elements[std::size_t(i)].area;
       const double back = entry(rows, e.element, i) * scene.elements[std::size_t(e.element)].area;
       EXPECT_NEAR(forward, back, 1e-12 * forward);
@@ -163,9 +163,10 @@ TEST(ReferenceFormFactors, RowsOfAClosedCubeSumToOne) {
   // The largest |row sum - 1| falls as K grows: sampling error, not a bias.
   auto largest_deviation = [&](int side) {
     double largest = 0.0;
-    for (const auto& row : form_factors(scene, side)) {
+    const FormFactors factors = form_factors(scene, side);
+    for (int i = 0; i < factors.size(); ++i) {
       double sum = 0.0;
-      for (const FormFactorEntry& e : row) sum += e.value;
+      for (const FormFactorEntry& e : factors.row(i)) sum += e.value;
       largest = std::max(largest, std::fabs(sum - 1.0));
     }
     return largest;
@@ -179,7 +180,7 @@ TEST(ReferenceFormFactors, RowsOfAClosedCubeSumToOne) {
 TEST(ReferenceFormFactors, ABlockerBetweenTwoSquaresHidesThemFromEachOther) {
   // A larger square at z = 0.5 between the floor and the ceiling (facing down).
   const Polygon blocker = Polygon::quad({-1, -1, 0.5}, {-1, 2, 0.5}, {2, 2, 0.5}, {2, -1, 0.5});
-  const FormFactorRows rows = form_factors(scene_of({kFloor, kCeiling, blocker}), 4);
+  const FormFactors rows = form_factors(scene_of({kFloor, kCeiling, blocker}), 4);
   EXPECT_EQ(entry(rows, 0, 1), 0.0);
   EXPECT_EQ(entry(rows, 1, 0), 0.0);
   EXPECT_GT(entry(rows, 0, 2), 0.5);  // the floor sees the blocker instead
@@ -267,7 +268,7 @@ void expect_straddling_pair_exact(const StraddlingPair& pair, bool near) {
     options.side = 16;
     options.threads = 1;
     options.seed = 1994 + std::uint64_t(seed);
-    const FormFactorRows rows = area_form_factors(scene, options);
+    const FormFactors rows = area_form_factors(scene, options);
     forward += entry(rows, 0, 1) / seeds;
     back += entry(rows, 1, 0) / seeds;
   }
@@ -379,7 +380,7 @@ TEST(ReferenceFormFactors, AnElementHalfInsideABottomlessBoxSendsItsOpenPartsRad
   options.side = 16;
   options.threads = 1;
   std::vector<double> open;
-  const FormFactorRows rows = area_form_factors(scene, options, nullptr, &open);
+  const FormFactors rows = area_form_factors(scene, options, nullptr, &open);
   EXPECT_EQ(open[0], 0.5);  // the 16 x 16 strata split at x = 1
   EXPECT_EQ(open[1], 1.0);
   const std::vector<Rgb> b = element_means(scene, solve_radiosity(scene, rows), open);
@@ -396,8 +397,11 @@ TEST(ReferenceFormFactors, SolveMatchesTheTwoElementSystemByHand) {
   scene.patches[0].reflectance = Rgb(0.3, 0.6, 0.9);
   scene.patches[1].emission = Rgb(0.0, 0.5, 4.0);
   scene.patches[1].reflectance = Rgb(0.8, 0.2, 0.5);
+  // Held once (reciprocity): I_01 = 0.4 with open areas 1 and 0.4 / 0.7.
   const double f01 = 0.4, f10 = 0.7;
-  const FormFactorRows rows = {{{1, f01}}, {{0, f10}}};
+  const FormFactors rows({1.0, f01 / f10}, {{{1}, {f01}}, {}});
+  ASSERT_NEAR(rows.factor(0, 1), f01, 1e-15);
+  ASSERT_NEAR(rows.factor(1, 0), f10, 1e-15);
   const std::vector<Rgb> b = solve_radiosity(scene, rows);
   for (int c = 0; c < 3; ++c) {
     const double e0 = scene.patches[0].emission[c], e1 = scene.patches[1].emission[c];
@@ -407,6 +411,42 @@ TEST(ReferenceFormFactors, SolveMatchesTheTwoElementSystemByHand) {
     EXPECT_NEAR(b[0][c], b0, 1e-12) << "channel " << c;
     EXPECT_NEAR(b[1][c], b1, 1e-12) << "channel " << c;
   }
+}
+
+TEST(ReferenceFormFactors, PairsHeldOnceSolveToTheSameBitsAsRowsHeldBothWays) {
+  // The solver reads each pair once (lower sums scattered, upper gathered); the test's own
+  // Gauss-Seidel reads every F_ij from both-way rows, as the reference did when it held them:
+  // the same answer to the last bit. A closed cube with a blocker inside (reflectance 0.5 to
+  // 0.8, one emitting face), 3 x 3 elements a face, so that rows have both halves.
+  std::vector<Polygon> faces = {
+      kFloor, kCeiling, kWall,
+      Polygon::quad({1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}),
+      Polygon::quad({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}),
+      Polygon::quad({0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}),
+      Polygon::quad({0.3, 0.3, 0.4}, {0.7, 0.3, 0.4}, {0.7, 0.7, 0.4}, {0.3, 0.7, 0.4})};
+  Scene scene = scene_of(faces, 3);
+  scene.patches[1].emission = Rgb(1.0, 0.8, 0.6);
+  for (std::size_t p = 0; p < scene.patches.size(); ++p)
+    scene.patches[p].reflectance = Rgb(0.5 + 0.05 * double(p), 0.6, 0.8 - 0.04 * double(p));
+  const FormFactors factors = form_factors(scene, 4);
+  ASSERT_GT(factors.pairs(), 300);
+  constexpr int sweeps = 25;  // a fixed count (a tolerance below 0 is never met)
+  SolveReport report;
+  const std::vector<Rgb> once = solve_radiosity(scene, factors, -1.0, sweeps, &report);
+  ASSERT_EQ(report.sweeps, sweeps);
+  std::vector<std::vector<FormFactorEntry>> rows;
+  for (int i = 0; i < factors.size(); ++i) rows.push_back(factors.row(i));
+  std::vector<Rgb> b(scene.elements.size());
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = scene.patches[std::size_t(scene.elements[i].patch)].emission;
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      Rgb gathered(0.0);
+      for (const FormFactorEntry& e : rows[i]) gathered += e.value * b[std::size_t(e.element)];
+      const Patch& patch = scene.patches[std::size_t(scene.elements[i].patch)];
+      b[i] = patch.emission + patch.reflectance * gathered;
+    }
+  for (std::size_t i = 0; i < b.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(once[i][c], b[i][c]) << "element " << i << " colour " << c;
 }
 
 TEST(ReferenceFormFactors, ErrorMeasureOnHandMadeSolutions) {

@@ -58,7 +58,8 @@ budget_refused 2 "^reference_solution: --max-rays 1000: the run would take 1078 
 for value in 0 -1 nan inf 1e16; do
   budget_refused 2 "^reference_solution: --max-rays .*: must be from 1 to 1e15" --max-rays "$value"
 done
-# The memory: 4 x 4 parts need about 6 GB, more than an address space of 1 GB.
+# The memory: 4 x 4 parts need about 1.6 GB (each pair held once, 12 bytes), more than an
+# address space of 1 GB.
 (ulimit -v 1000000; budget_refused 6 "^reference_solution: the form factors of 17248 parts .* need about .* GB, the host has" \
   --refine 4 --samples 4; exit "$failures") || failures=$((failures + 1))
 [ "$failures" = 0 ] && echo "reference_solution_options_test: all checks passed" && exit 0

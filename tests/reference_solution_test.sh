@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# build/reference_solution (docs/accuracy.md): every committed reference in analysis/reference/
-# reproduces from its one command (experiments/claims/references) but for host_seconds and
-# code_version; the result does not depend on the number of threads; bad input is exit 2 with
-# one line. About 5 minutes on a shared 2-core machine (two references at --refine 2, K = 64).
+# build/reference_solution (docs/accuracy.md) on small scenes with closed forms (a closed
+# furnace, two opposed squares), the result not depending on the number of threads, bad input
+# exit 2 with one line; and the committed references' identity, cheaply: each file is what its
+# recorded command made, of today's scene file, and this build's fingerprint (a small run) is
+# the one recorded with them (analysis/ncube/reference_manifest.py), so that the program still
+# computes what made them. Regenerating them is the references' own command
+# (`experiments/claims/references --check`: minutes to an hour, docs/accuracy.md). About 30 s.
 set -u
 simulate=$1 root=$2
 solver=$(dirname "$simulate")/reference_solution
@@ -31,9 +34,9 @@ rc=$?
 [[ $rc == 2 && $(cat "$scratch/err") == *none.json* ]] || fail "missing scene: exit $rc"
 
 # Threads change nothing.
-"$solver" cornell-box --samples 16 --refine 1 --threads 1 --quiet --out "$scratch/one.json" \
+"$solver" cornell-box --samples 4 --refine 1 --threads 1 --quiet --out "$scratch/one.json" \
   --mesh "$scratch/one.ply" &&
-  "$solver" cornell-box --samples 16 --refine 1 --threads 2 --quiet --out "$scratch/two.json" &&
+  "$solver" cornell-box --samples 4 --refine 1 --threads 2 --quiet --out "$scratch/two.json" &&
   same "$scratch/one.json" "$scratch/two.json" || fail "--threads 1 and 2 differ"
 
 # --mesh is the same solution in ./simulate's mesh layout: no error against the file.
@@ -59,14 +62,41 @@ worst = max(abs(c - 2) for e in r["elements"] for c in e[2:])
 sys.exit(0 if len(r["elements"]) == 96 and worst < 0.01 else "furnace: |B - 2| up to %g" % worst)
 ' "$scratch/furnace-ref.json" || fail "the furnace is not 2 everywhere"
 
-# Each committed reference reproduces.
-for committed in "$root"/analysis/reference/*.json; do
-  scene=$(basename "$committed" .json)
-  read -r samples refine < <(/usr/bin/python3 -c 'import json,sys; r = json.load(open(sys.argv[1]))
-print(r["samples"], r["refine"])' "$committed")
-  "$root/experiments/claims/references" --build "$(dirname "$solver")" --out "$scratch" \
-    --samples "$samples" --refine "$refine" "$scene" > /dev/null || fail "$scene: the command failed"
-  same "$committed" "$scratch/$scene.json" || fail "$scene: analysis/reference/$scene.json does not reproduce"
-done
+# Two opposed unit squares one apart, 2 x 2 elements each: an emitter (E = 1, rho = 0) and a
+# receiver (rho = 0.5): the receiver's mean is 0.5 F = 0.5 x 0.19982 (Howell C-11), through the
+# parts' near closed form; within 0.5 % at K = 64.
+/usr/bin/python3 - "$scratch/squares.json" <<'PY'
+import json, sys
+json.dump({"name": "squares", "patches": [
+    {"vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "reflectance": [0, 0, 0], "emission": [1, 1, 1], "elements": [2, 2]},
+    {"vertices": [[0,0,1],[0,1,1],[1,1,1],[1,0,1]], "reflectance": [0.5, 0.5, 0.5], "elements": [2, 2]}]},
+    open(sys.argv[1], "w"))
+PY
+"$solver" "$scratch/squares.json" --samples 64 --quiet --out "$scratch/squares-ref.json" &&
+  /usr/bin/python3 -c '
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+exact = 0.5 * 2 / math.pi * (math.log(math.sqrt(4 / 3)) + 2 * math.sqrt(2) * math.atan(1 / math.sqrt(2)) - 2 * math.atan(1))
+mean = sum(e[1] * e[2] for e in r["elements"] if e[0] == 1) / sum(e[1] for e in r["elements"] if e[0] == 1)
+sys.exit(0 if abs(mean / exact - 1) < 0.005 else "squares: the receiver %.6f, exact %.6f" % (mean, exact))
+' "$scratch/squares-ref.json" || fail "the opposed squares are not Howell's value"
+
+# The committed references: recorded, unchanged, of today's scene files, and this build's
+# fingerprint the recorded one.
+/usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$root/analysis/reference" \
+  --build "$(dirname "$solver")" --scenes-dir "$root/scenes" || fail "the committed references (above)"
+# The references' own command, small (K = 4, --refine 1): it writes the reference and its
+# records, and the check passes on what it wrote; an edited file then fails it.
+"$root/experiments/claims/references" --build "$(dirname "$solver")" --out "$scratch/refs" \
+  --samples 4 --refine 1 cornell-box > /dev/null &&
+  /usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$scratch/refs" \
+    --build "$(dirname "$solver")" --scenes-dir "$root/scenes" > /dev/null ||
+  fail "experiments/claims/references: its own output does not check"
+sed -i 's/"element_pairs": /"element_pairs": 1/' "$scratch/refs/cornell-box.json"
+/usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$scratch/refs" \
+  --build "$(dirname "$solver")" --scenes-dir "$root/scenes" > "$scratch/out" &&
+  fail "an edited reference passes the check"
+grep -q "cornell-box.json: its content is not what its command made" "$scratch/out" ||
+  fail "an edited reference: $(cat "$scratch/out")"
 [[ $failed == 0 ]] && echo "reference_solution_test: passed"
 exit $failed

@@ -9,99 +9,33 @@ quad of it once per seed, and saves the raw texels as float32 next to the job
 The job (written by cycles_answers.py, units already scaled there):
   quads: [{"corners": [[x,y,z] x 4], "patch": p, "res": n}], patches: [{"rho": [r,g,b],
   "emission": [r,g,b]}], samples, seeds, bounces, threads.
-Each quad is one Blender object of two triangles (v0 v1 v2) and (v0 v2 v3), with the UV
-corners (0,0) (1,0) (1,1) (0,1), so its texels cover the quad exactly (no texel is partly
-outside it); its own float image; its own material:
-  front (Backfacing = 0): Diffuse BSDF (colour rho) + Emission (colour E, strength 1)
-  back  (Backfacing = 1): black: an Emission of strength 0 and no BSDF, so a path that
-         reaches a back ends there: opaque backs, one-sided emitters and receivers.
+The scene and the settings both estimators share: blender_scene.py.
 """
 import json
+import os
 import sys
 import time
 
 import bpy
 import numpy as np
 
-
-def material_for(name, rho, emission):
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    nodes, links = mat.node_tree.nodes, mat.node_tree.links
-    nodes.clear()
-    out = nodes.new("ShaderNodeOutputMaterial")
-    geometry = nodes.new("ShaderNodeNewGeometry")
-    mix = nodes.new("ShaderNodeMixShader")
-    add = nodes.new("ShaderNodeAddShader")
-    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (*rho, 1.0)
-    diffuse.inputs["Roughness"].default_value = 0.0  # Lambert, not Oren-Nayar
-    emit = nodes.new("ShaderNodeEmission")
-    emit.inputs["Color"].default_value = (*emission, 1.0)
-    emit.inputs["Strength"].default_value = 1.0
-    black = nodes.new("ShaderNodeEmission")
-    black.inputs["Strength"].default_value = 0.0
-    links.new(diffuse.outputs[0], add.inputs[0])
-    links.new(emit.outputs[0], add.inputs[1])
-    links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
-    links.new(add.outputs[0], mix.inputs[1])     # Fac 0: the front
-    links.new(black.outputs[0], mix.inputs[2])   # Fac 1: the back
-    links.new(mix.outputs[0], out.inputs["Surface"])
-    texture = nodes.new("ShaderNodeTexImage")   # the bake's target: the active image node
-    nodes.active = texture
-    return mat, texture
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_scene  # noqa: E402
 
 
 def main():
     job_path = sys.argv[sys.argv.index("--") + 1]
     job = json.load(open(job_path))
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
+    scene, objects, textures, normals = blender_scene.build(job)
     cycles = scene.cycles
-    cycles.device = "CPU"
-    cycles.samples = job["samples"]
-    cycles.use_adaptive_sampling = False
-    cycles.use_denoising = False
-    cycles.sampling_pattern = "SOBOL"          # PMJ read 0.2 % low in a furnace
-    cycles.max_bounces = job["bounces"]
-    cycles.diffuse_bounces = job["bounces"]
-    cycles.glossy_bounces = cycles.transmission_bounces = cycles.volume_bounces = 0
-    cycles.transparent_max_bounces = 0
-    cycles.min_light_bounces = 0               # Russian roulette after that: unbiased
-    cycles.sample_clamp_direct = 0.0           # no clamping
-    cycles.sample_clamp_indirect = 0.0
-    cycles.light_sampling_threshold = 0.0      # no light ignored
-    cycles.blur_glossy = 0.0
-    scene.render.threads_mode = "FIXED"
-    scene.render.threads = job["threads"]
     scene.render.bake.margin = 0
     scene.render.bake.use_clear = True
-    world = bpy.data.worlds.new("black")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    scene.world = world
-
-    images, objects, normals = [], [], []
+    images = []
     for q, quad in enumerate(job["quads"]):
-        patch = job["patches"][quad["patch"]]
-        mesh = bpy.data.meshes.new(f"quad{q}")
-        mesh.from_pydata([tuple(c) for c in quad["corners"]], [], [(0, 1, 2), (0, 2, 3)])
-        uv = mesh.uv_layers.new(name="bake")
-        corner_uv = {0: (0.0, 0.0), 1: (1.0, 0.0), 2: (1.0, 1.0), 3: (0.0, 1.0)}
-        for loop in mesh.loops:
-            uv.data[loop.index].uv = corner_uv[loop.vertex_index]
-        mesh.update()
-        normals.append([list(p.normal) for p in mesh.polygons])
-        obj = bpy.data.objects.new(f"quad{q}", mesh)
-        scene.collection.objects.link(obj)
-        mat, texture = material_for(f"m{q}", patch["rho"], patch["emission"])
         image = bpy.data.images.new(f"img{q}", quad["res"], quad["res"], float_buffer=True)
         image.colorspace_settings.name = "Non-Color"   # raw values, no view transform
-        texture.image = image
-        mesh.materials.append(mat)
+        textures[q].image = image
         images.append(image)
-        objects.append(obj)
     bpy.ops.object.select_all(action="DESELECT")
     for obj in objects:
         obj.select_set(True)

@@ -63,6 +63,7 @@ from ncube import page  # noqa: E402
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
 SCENE_DIAGONAL = 10.0
 BAKE_SCRIPT = Path(__file__).resolve().parent / "bake_in_blender.py"
+CAMERA_SCRIPT = Path(__file__).resolve().parent / "camera_in_blender.py"
 
 
 class Refusal(Exception):
@@ -134,24 +135,24 @@ def texel_weights(quad, n):
 REPORT_BYTES = 64 << 20   # Blender's report: the quads' normals, a few KiB
 
 
-def read_bake(job_path, job, quads):
+def read_bake(report_path, job_path, job, quads, texels=True):
     """Blender's report and texels through the input gate (ncube.input_file: a regular file
     within its limit, strict JSON): what Blender wrote, checked before it is used; anything
     else is a Refusal with exit 7 (the bake, not the user's input, went wrong)."""
     try:
-        report = input_file.read_json(f"{job_path}.report.json", "Blender's report", REPORT_BYTES)
+        report = input_file.read_json(str(report_path), "Blender's report", REPORT_BYTES)
         normals = report["normals"] if isinstance(report, dict) else None
         if not isinstance(normals, list) or len(normals) != len(quads):
-            raise Refusal(f"{job_path}.report.json: Blender's report: normals: not one list "
+            raise Refusal(f"{report_path}: Blender's report: normals: not one list "
                           f"per quad ({len(quads)})", 7)
         for index, listed in enumerate(normals):
             array = np.array(listed, dtype=float) if isinstance(listed, list) else None
             if array is None or array.ndim != 2 or array.shape[1:] != (3,) \
                     or not np.isfinite(array).all():
-                raise Refusal(f"{job_path}.report.json: Blender's report: normals[{index}]: "
+                raise Refusal(f"{report_path}: Blender's report: normals[{index}]: "
                               "not finite 3-vectors", 7)
         per_seed = []
-        for seed in job["seeds"]:
+        for seed in (job["seeds"] if texels else []):
             path = f"{job_path}.texels-{seed}.npy"
             data = input_file.read_input_bytes(path, "Blender's texels", input_file.SCENE_FILE_BYTES)
             texels = np.load(io.BytesIO(data), allow_pickle=False)
@@ -184,7 +185,7 @@ def run(args):
     for quad in quads:
         quad["res"] = args.texels
     job = {"samples": args.samples, "seeds": list(range(args.seeds)), "bounces": args.bounces,
-           "threads": args.threads,
+           "threads": args.threads, "pixels": args.pixels,
            "patches": [{"rho": p["rho"], "emission": p["emission"]} for p in patches],
            "quads": [{"patch": q["patch"], "res": q["res"],
                       "corners": (q["corners"] * scale).tolist()} for q in quads]}
@@ -192,16 +193,19 @@ def run(args):
     with tempfile.TemporaryDirectory(prefix="cycles-answers-") as scratch:
         job_path = Path(scratch) / "job.json"
         job_path.write_text(json.dumps(job))
+        script = CAMERA_SCRIPT if args.estimator == "camera" else BAKE_SCRIPT
         done = subprocess.run([blender, "-b", "--factory-startup", "-t", str(args.threads),
-                               "-P", str(BAKE_SCRIPT), "--", str(job_path)],
+                               "-P", str(script), "--", str(job_path)],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        report_path = Path(str(job_path) + ".report.json")
+        report_path = Path(str(job_path) + (".camera.json" if args.estimator == "camera"
+                                             else ".report.json"))
         if done.returncode != 0 or not report_path.exists():
             # One line: Blender's last words, cut (its log is hundreds of lines).
             tail = " | ".join(line.strip() for line in done.stdout.splitlines()[-3:]
                               if line.strip())[-300:]
             raise Refusal(f"blender failed (exit {done.returncode}): {tail or 'no output'}", 7)
-        report, per_seed = read_bake(job_path, job, quads)
+        report, per_seed = read_bake(report_path, job_path, job, quads,
+                                     texels=args.estimator != "camera")
     # The quads' normals as Blender built them face as the scene's (one-sidedness).
     for quad, normals in zip(quads, report["normals"]):
         c = quad["corners"]
@@ -210,20 +214,32 @@ def run(args):
         if min(float(np.dot(expected, n)) for n in normals) < 0.999:
             raise Refusal(f"patch {quad['patch']}: Blender's face normal is not the scene's", 7)
     area = np.zeros(len(patches))
-    lighting = np.zeros((len(job["seeds"]), len(patches), 3))
-    offset = 0
     for quad in quads:
-        n = quad["res"]
-        weights = texel_weights(quad["corners"], n)
-        area[quad["patch"]] += weights.sum()
-        for s, texels in enumerate(per_seed):
-            block = texels[offset:offset + n * n * 3].reshape(n, n, 3).astype(float)
-            lighting[s, quad["patch"]] += np.einsum("ij,ijc->c", weights, block)
-        offset += n * n * 3
-    lighting /= area[None, :, None]
+        area[quad["patch"]] += triangle_area(*quad["corners"][:3]) + triangle_area(
+            quad["corners"][0], quad["corners"][2], quad["corners"][3])
     rho = np.array([p["rho"] for p in patches])
     emission = np.array([p["emission"] for p in patches])
-    radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
+    if args.estimator == "camera":
+        # The pixels' sum times a pixel's area is the radiosity's integral over the patch
+        # (camera_in_blender.py), in scaled units as the area below.
+        scaled_area = area * scale * scale
+        radiosity = np.array([[np.array(sums[str(p)]) * report["pixel_area"][str(p)] / scaled_area[p]
+                               for p in range(len(patches))] for sums in report["sums"]])
+    else:
+        lighting = np.zeros((len(job["seeds"]), len(patches), 3))
+        texel_area = np.zeros(len(patches))
+        offset = 0
+        for quad in quads:
+            n = quad["res"]
+            weights = texel_weights(quad["corners"], n)
+            texel_area[quad["patch"]] += weights.sum()
+            for s, texels in enumerate(per_seed):
+                block = texels[offset:offset + n * n * 3].reshape(n, n, 3).astype(float)
+                lighting[s, quad["patch"]] += np.einsum("ij,ijc->c", weights, block)
+            offset += n * n * 3
+        lighting /= texel_area[None, :, None]
+        area = texel_area   # the same area to the last bit (sums of the texels' weights)
+        radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
     y = radiosity @ LUMINANCE
     count = len(job["seeds"])
     mean, se = radiosity.mean(axis=0), radiosity.std(axis=0, ddof=1) / math.sqrt(count)
@@ -232,15 +248,29 @@ def run(args):
             [float(y_mean[p]), float(y_se[p])] for p in range(len(patches))]
     header = {
         "scene": name, "scene_file": scene_path.name, "scene_sha256": "sha256:" + sha256,
-        "renderer": f"Blender {report['blender']} Cycles (CPU), analysis/cycles/bake_in_blender.py",
-        "method": "bake of diffuse direct + indirect lighting without colour, B = E + rho * lighting",
-        "samples_per_texel": args.samples, "seeds": count, "texels_a_side": args.texels,
-        "bounces": args.bounces, "threads": args.threads, "scale": float(scale),
-        "texels": int(sum(q["res"] ** 2 for q in quads)),
-        "bake_seconds": [round(s, 1) for s in report["seconds"]],
+        "renderer": f"Blender {report['blender']} Cycles (CPU), analysis/cycles/"
+                    + ("camera_in_blender.py" if args.estimator == "camera" else "bake_in_blender.py"),
+    }
+    if args.estimator == "camera":
+        header.update({
+            "method": "camera rays averaged over each patch's area (an orthographic camera on its "
+                      "front, only the patch visible to camera rays, box pixel filter)",
+            "estimator": "camera", "samples_per_pixel": args.samples, "seeds": count,
+            "pixels_a_patch": args.pixels, "bounces": args.bounces,
+            "threads": args.threads, "scale": float(scale),
+            "pixels": int(sum(a * b for a, b in report["pixels"].values())),
+            "camera_seconds": [round(s, 1) for s in report["seconds"]]})
+    else:
+        header.update({
+            "method": "bake of diffuse direct + indirect lighting without colour, B = E + rho * lighting",
+            "samples_per_texel": args.samples, "seeds": count, "texels_a_side": args.texels,
+            "bounces": args.bounces, "threads": args.threads, "scale": float(scale),
+            "texels": int(sum(q["res"] ** 2 for q in quads)),
+            "bake_seconds": [round(s, 1) for s in report["seconds"]]})
+    header.update({
         "host_seconds": round(time.time() - start, 1),
         "columns": ["patch", "area", "R", "G", "B", "se_R", "se_G", "se_B", "Y", "se_Y"],
-    }
+    })
     text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
     text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])
                                           for r in rows) + "\n ]\n}\n"
@@ -257,7 +287,12 @@ def main(argv=None):
     parser.add_argument("--out", required=True)
     parser.add_argument("--samples", type=int, default=256, help="Cycles samples per texel and bake")
     parser.add_argument("--seeds", type=int, default=8, help="independent bakes (the standard error)")
-    parser.add_argument("--texels", type=int, default=24, help="texels a side of every quad")
+    parser.add_argument("--texels", type=int, default=24, help="texels a side of every quad (bake)")
+    parser.add_argument("--estimator", choices=("bake", "camera"), default="bake",
+                        help="bake: texels baked on every patch; camera: camera rays averaged over "
+                             "each patch's area")
+    parser.add_argument("--pixels", type=int, default=256,
+                        help="pixels on each patch: its area over a pixel's (camera)")
     parser.add_argument("--bounces", type=int, default=1024)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--blender", default="blender")
@@ -267,7 +302,7 @@ def main(argv=None):
         # standard error).
         for option, low, high in (("samples", 1, 1 << 16), ("texels", 1, 1024),
                                   ("bounces", 1, 1 << 16), ("threads", 1, 1024),
-                                  ("seeds", 2, 1024)):
+                                  ("seeds", 2, 1024), ("pixels", 16, 1 << 12)):
             if not low <= getattr(args, option) <= high:
                 raise Refusal(f"--{option} {getattr(args, option)}: must be {low} to {high}"
                               + (" (the standard error)" if option == "seeds" else ""), 2)

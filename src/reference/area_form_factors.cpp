@@ -81,7 +81,42 @@ double open_fraction_of(const std::vector<AreaSample>& points, const Vec3& norma
 
 }  // namespace
 
-FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& options,
+FormFactors::FormFactors(std::vector<double> open_area, std::vector<Row> rows)
+    : open_area_(std::move(open_area)), rows_(std::move(rows)) {
+  rows_.resize(open_area_.size());
+}
+
+double FormFactors::factor(int i, int j) const {
+  if (i == j || open_area(i) <= 0.0) return 0.0;
+  const Row& row = rows_[std::size_t(std::min(i, j))];
+  const auto at = std::lower_bound(row.column.begin(), row.column.end(), std::max(i, j));
+  if (at == row.column.end() || *at != std::max(i, j)) return 0.0;
+  return row.exchange[std::size_t(at - row.column.begin())] / open_area(i);
+}
+
+std::vector<FormFactorEntry> FormFactors::row(int i) const {
+  std::vector<FormFactorEntry> entries;
+  if (open_area(i) <= 0.0) return entries;
+  for (int j = 0; j < i; ++j)
+    if (const double f = factor(i, j); f > 0.0) entries.push_back({j, f});
+  const Row& own = rows_[std::size_t(i)];
+  for (std::size_t k = 0; k < own.column.size(); ++k)
+    entries.push_back({own.column[k], own.exchange[k] / open_area(i)});
+  return entries;
+}
+
+long long FormFactors::pairs() const {
+  long long count = 0;
+  for (const Row& row : rows_) count += static_cast<long long>(row.column.size());
+  return count;
+}
+
+double FormFactors::bytes() const {
+  return double(pairs()) * double(sizeof(std::int32_t) + sizeof(double)) +
+         double(rows_.size()) * double(sizeof(Row) + sizeof(double));
+}
+
+FormFactors area_form_factors(const Scene& scene, const FormFactorOptions& options,
                                  FormFactorStats* stats, std::vector<double>* open_fraction) {
   const int n = int(scene.elements.size());
   const int k = options.side * options.side;
@@ -101,15 +136,20 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
     open_share[std::size_t(i)] = open_fraction_of(points[std::size_t(i)],
                                             scene.patches[std::size_t(scene.elements[std::size_t(i)].patch)].normal,
                                             rays, mix_seed(options.seed, std::uint64_t(i), 0));
-  // upper[i]: (j, I_ij) for j > i, the double integral.
-  std::vector<std::vector<FormFactorEntry>> upper(static_cast<std::size_t>(n));
+  // upper[i]: (j, I_ij) for j > i, the double integral, each row held at its exact size (a
+  // thread's scratch row grows; the kept one is a copy without the growth's slack).
+  std::vector<FormFactors::Row> upper(static_cast<std::size_t>(n));
   long long ray_total = 0, near_total = 0, pair_total = 0;
-#pragma omp parallel for schedule(dynamic, 4) num_threads(threads) \
-    reduction(+ : ray_total, near_total, pair_total)
+#pragma omp parallel num_threads(threads) reduction(+ : ray_total, near_total, pair_total)
+  {
+  FormFactors::Row scratch;
+#pragma omp for schedule(dynamic, 4)
   for (int i = 0; i < n; ++i) {
     const Element& ei = scene.elements[std::size_t(i)];
     const Vec3& ni = scene.patches[std::size_t(ei.patch)].normal;
     std::vector<int> order(static_cast<std::size_t>(k));
+    scratch.column.clear();
+    scratch.exchange.clear();
     for (int j = i + 1; j < n; ++j) {
       const Element& ej = scene.elements[std::size_t(j)];
       if (ej.patch == ei.patch) continue;
@@ -155,30 +195,23 @@ FormFactorRows area_form_factors(const Scene& scene, const FormFactorOptions& op
                            ray_total);
         count = double(k);
       }
-      if (sum > 0.0) upper[std::size_t(i)].push_back({j, sum / count});
+      if (sum > 0.0) {
+        scratch.column.push_back(std::int32_t(j));
+        scratch.exchange.push_back(sum / count);
+      }
     }
+    upper[std::size_t(i)].column.assign(scratch.column.begin(), scratch.column.end());
+    upper[std::size_t(i)].exchange.assign(scratch.exchange.begin(), scratch.exchange.end());
+  }
   }
   // F_ij = I_ij / (A_i times i's open share): the exchange of i's open part, whose radiosity
   // is what i sends (its enclosed part sees no front, so I_ij holds nothing of it).
-  const auto open_area = [&](int e) {
-    return scene.elements[std::size_t(e)].area * open_share[std::size_t(e)];
-  };
-  FormFactorRows rows(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    for (const FormFactorEntry& e : upper[std::size_t(i)]) {
-      if (open_share[std::size_t(i)] > 0.0)
-        rows[std::size_t(i)].push_back({e.element, e.value / open_area(i)});
-      if (open_share[std::size_t(e.element)] > 0.0)
-        rows[std::size_t(e.element)].push_back({i, e.value / open_area(e.element)});
-    }
-    std::vector<FormFactorEntry>().swap(upper[std::size_t(i)]);  // the host's memory back
-  }
-  for (auto& row : rows)
-    std::sort(row.begin(), row.end(),
-              [](const FormFactorEntry& a, const FormFactorEntry& b) { return a.element < b.element; });
+  std::vector<double> open_area(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    open_area[std::size_t(i)] = scene.elements[std::size_t(i)].area * open_share[std::size_t(i)];
   if (stats) *stats = {ray_total, near_total, pair_total};
   if (open_fraction) *open_fraction = std::move(open_share);
-  return rows;
+  return FormFactors(std::move(open_area), std::move(upper));
 }
 
 }  // namespace ncube::reference

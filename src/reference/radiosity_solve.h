@@ -17,8 +17,11 @@ struct SolveReport {
 };
 
 // Stops when a sweep changes no element's luminance by more than `tolerance` of the largest
-// (or after max_sweeps). Elements' emission and reflectance are their patch's.
-std::vector<Rgb> solve_radiosity(const Scene& scene, const FormFactorRows& rows,
+// (or after max_sweeps). Elements' emission and reflectance are their patch's. Each pair is
+// held once (FormFactors): element i gathers from j < i what those, once updated in the
+// sweep, scattered into it, then from j > i along its own row; the same sums in the same
+// order as rows held both ways, so the same answer to the last bit.
+std::vector<Rgb> solve_radiosity(const Scene& scene, const FormFactors& factors,
                                  double tolerance = 1e-13, int max_sweeps = 100000,
                                  SolveReport* report = nullptr);
 

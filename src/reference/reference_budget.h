@@ -23,11 +23,12 @@ struct ReferenceBudget {
 
 // Rough costs per thread, measured on the development machine (cornell-box, --refine 1 at
 // K = 64 and --refine 2 at K = 4, loaded 2-core host): one visibility ray, one pair of parts
-// (its tests, points and permutation), one form factor kept (a row entry twice and its upper
-// triangle entry once, with the vectors' slack).
+// (its tests, points and permutation). A pair kept is held once (FormFactors in
+// area_form_factors.h): a 32-bit index and a double, rows at their exact size; at most every
+// pair is kept.
 constexpr double kSecondsPerRay = 0.16e-6;
 constexpr double kSecondsPerPair = 0.8e-6;
-constexpr double kBytesPerPair = 48.0;
+constexpr double kBytesPerPair = 12.0;
 constexpr double kBytesPerPoint = 32.0;  // an AreaSample
 
 // The default and largest of --max-rays: the default about 4.5 hours of one thread at

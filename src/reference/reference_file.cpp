@@ -19,6 +19,7 @@ std::string reference_text(const Scene& scene, const ReferenceRun& run) {
       "kernel-weighted visible share of K x K rays; Gauss-Seidel to convergence "
       "(docs/accuracy.md)";
   out["refine"] = run.refine;
+  if (run.part_size > 0.0) out["part_size"] = run.part_size;
   out["samples"] = run.samples;
   out["check_samples"] = run.check_samples;
   out["self_agreement"] = {{"element_rms", run.self_agreement.element_rms},

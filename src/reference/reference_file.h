@@ -23,6 +23,8 @@ struct ReferenceRun {
   std::string scene_file, scene_sha256;
   int samples = 0, check_samples = 0;
   int refine = 1;  // every element solved as refine x refine parts
+  double part_size = 0.0;  // and finer where an element is longer (0: refine alone); in the
+                           // file only when set, so files made without it keep their bytes
   FormFactorStats stats, check_stats;
   SolveReport solve;
   SolutionError self_agreement;  // the check_samples solution against the samples one

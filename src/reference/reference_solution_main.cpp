@@ -145,6 +145,7 @@ int run(int argc, char** argv) {
                "reference_solution"};
   std::string scene_name, out_path, mesh_path;
   int samples = 64, threads = 0, refine = 2;
+  double part_size = 0.0;
   bool quiet = false;
   app.add_option("scene", scene_name, "scene file (JSON); a bare name is also looked up in scenes/")
       ->required();
@@ -156,6 +157,12 @@ int run(int argc, char** argv) {
                  "solve on every element cut into N x N parts and give each element its parts' "
                  "area-weighted mean (1 to 4): the continuous radiosity's mean over the element, "
                  "not the element grid's own constant-radiosity answer (docs/accuracy.md)")
+      ->capture_default_str();
+  app.add_option("--part-size", part_size,
+                 "also cut every element into parts no longer than this along either side (scene "
+                 "units; at most 16 x 16 parts an element; 0: --refine alone): parts sized to the "
+                 "furniture, so that a large element beside a small object does not send its "
+                 "shadow's mean (docs/accuracy.md)")
       ->capture_default_str();
   app.add_option("--out", out_path, "write the reference solution (JSON) here")->required();
   app.add_option("--mesh", mesh_path,
@@ -207,6 +214,8 @@ int run(int argc, char** argv) {
     throw InputError("--mesh " + mesh_path + ": only PLY is written (name it .ply)");
   if (refine < 1 || refine > 4)
     throw InputError("--refine " + std::to_string(refine) + ": must be 1, 2, 3 or 4");
+  if (!(part_size >= 0.0 && part_size < 1e300))
+    throw InputError("--part-size " + std::to_string(part_size) + ": must be 0 or a positive length");
   if (!(max_rays >= 1 && max_rays <= reference::kLargestMaxRays))
     throw InputError("--max-rays " + reference::budget_rays(max_rays) +
                      ": must be from 1 to 1e15");
@@ -218,13 +227,27 @@ int run(int argc, char** argv) {
     reference::structure_of(structure_choice, &structure);  // one of the names checked above
     return run_structure(scene, scene_file, structure, samples, threads, quiet, mesh_path, outputs);
   }
-  // The scene solved: every patch's grid `refine` times finer. Its parts tile each element
-  // exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's element
-  // order: part (a, b) of element (i, j) is element (refine i + a, refine j + b) of the fine grid.
+  // The scene solved: every patch's grid `refine` times finer (and, with --part-size, finer
+  // still where an element is longer than that: cut_u, cut_v per patch). Its parts tile each
+  // element exactly (grid_cell cuts the same bilinear map at finer parameters), in the scene's
+  // element order: part (a, b) of element (i, j) is element (cut_u i + a, cut_v j + b) of the
+  // fine grid.
   Scene fine = scene;
-  for (Patch& patch : fine.patches) {
-    patch.nu *= refine;
-    patch.nv *= refine;
+  std::vector<int> cut_u(scene.patches.size(), refine), cut_v(scene.patches.size(), refine);
+  for (std::size_t p = 0; p < fine.patches.size(); ++p) {
+    Patch& patch = fine.patches[p];
+    if (part_size > 0.0) {
+      // The element's longest side along each parameter: a quad's opposite edges, a triangle's
+      // (v2 its collapsed far edge) edge v0 v1 and its two edges to v2.
+      const Polygon& g = patch.polygon;
+      const Vec3& far = g.count == 4 ? g[3] : g[2];
+      const double along_u = std::max(glm::length(g[1] - g[0]), glm::length(g[2] - far)) / patch.nu;
+      const double along_v = std::max(glm::length(far - g[0]), glm::length(g[2] - g[1])) / patch.nv;
+      cut_u[p] = std::clamp(int(std::ceil(along_u / part_size - 1e-9)), refine, 16);
+      cut_v[p] = std::clamp(int(std::ceil(along_v / part_size - 1e-9)), refine, 16);
+    }
+    patch.nu *= cut_u[p];
+    patch.nv *= cut_v[p];
   }
   fine.build_elements();
   check_budget(fine, side, threads, max_rays, quiet);
@@ -237,15 +260,16 @@ int run(int argc, char** argv) {
   result.samples = samples;
   result.check_samples = samples / 4;
   result.refine = refine;
+  result.part_size = part_size;
   const auto solve = [&](int point_side, reference::FormFactorStats& stats,
                          reference::SolveReport* report) {
     reference::FormFactorOptions options;
     options.side = point_side;
     options.threads = threads;
     std::vector<double> open;
-    const reference::FormFactorRows rows = reference::area_form_factors(fine, options, &stats, &open);
+    const reference::FormFactors factors = reference::area_form_factors(fine, options, &stats, &open);
     const std::vector<Rgb> parts = reference::element_means(
-        fine, reference::solve_radiosity(fine, rows, 1e-13, 100000, report), open);
+        fine, reference::solve_radiosity(fine, factors, 1e-13, 100000, report), open);
     std::vector<Rgb> means(scene.elements.size(), Rgb(0.0));
     std::vector<double> area(scene.elements.size(), 0.0);
     for (std::size_t p = 0; p < scene.patches.size(); ++p) {
@@ -255,7 +279,7 @@ int run(int argc, char** argv) {
         for (int i = 0; i < cut.nu; ++i) {
           const std::size_t part = std::size_t(cut.first_element + j * cut.nu + i);
           const std::size_t element =
-              std::size_t(coarse.first_element + (j / refine) * coarse.nu + i / refine);
+              std::size_t(coarse.first_element + (j / cut_v[p]) * coarse.nu + i / cut_u[p]);
           means[element] += fine.elements[part].area * parts[part];
           area[element] += fine.elements[part].area;
         }

@@ -36,6 +36,7 @@ COVERED = {
     "experiments/sweep": ["sweep_test.py", "python_inputs_test.sh", "robustness/threat_model.py"],
     "experiments/reproduce": ["sweep_test.py"],
     "experiments/claims/references": ["reference_solution_test.sh"],
+    "analysis/ncube/reference_manifest.py": ["reference_solution_test.sh"],
     "experiments/claims/cycles-answers": ["cycles_answers_test.sh"],
     # The page scripts.
     "analysis/report.py": ["page_scripts_test.sh", "page_outputs_test.sh"],
