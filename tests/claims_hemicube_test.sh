@@ -156,12 +156,13 @@ for stem, result in results.items():
             problems.append(f"reciprocity row of {placement} lacks {line!r}: {row!r}")
 
 def rms(y, truth, area, patch, emitting):
-    """Area-weighted RMS of relative errors, a truth below 1 % of the non-emitting mean left
-    out: written here from docs/accuracy.md, not from error_parts."""
+    """Area-weighted RMS of the symmetric relative difference (Y - T) / ((Y + T) / 2), a truth
+    below 1 % of the non-emitting mean left out: written here from docs/accuracy.md ("The
+    error measure"), not from error_measure."""
     lit = [k for k in range(len(truth)) if not emitting[patch[k]]]
     mean = sum(area[k] * truth[k] for k in lit) / sum(area[k] for k in lit)
     keep = [k for k in range(len(truth)) if truth[k] >= 0.01 * mean]
-    return math.sqrt(sum(area[k] * ((y[k] - truth[k]) / truth[k]) ** 2 for k in keep)
+    return math.sqrt(sum(area[k] * ((y[k] - truth[k]) / ((y[k] + truth[k]) / 2)) ** 2 for k in keep)
                      / sum(area[k] for k in keep))
 
 emitting = [any(p.get("emission", [0, 0, 0])) for p in scene["patches"]]

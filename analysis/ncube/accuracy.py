@@ -40,11 +40,12 @@ from ncube.interpreter import use_project_python  # noqa: E402
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
 import argparse  # noqa: E402
+import hashlib  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import error_measure, input_file, output_file, page  # noqa: E402
+from ncube import error_measure, input_file, output_file, page, paths  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -188,13 +189,33 @@ def read_reference(path):
 
 
 def scene_emits(reference, reference_name="reference"):
-    """Per patch whether it emits, from the scene file the reference names (`scene_file`, in
-    scenes/, as ./simulate looks a bare name up); a hand-made reference without one: no patch
-    emits."""
+    """Per patch whether it emits, from the scene file the reference names (`scene_file`),
+    found by the input lookup rule (docs/cli.md, "Finding the input files") from the
+    reference's own folder: beside it, then in the project's scenes/; a hand-made reference
+    without one: no patch emits."""
     name = reference.get("scene_file")
     if name is None:
         return None
-    path = Path(__file__).resolve().parents[2] / "scenes" / Path(str(name)).name
+    base = Path(str(reference_name)).parent if reference_name != "reference" else Path.cwd()
+    # The first candidate of the lookup rule that is the scene the reference was made from
+    # (its scene_sha256, when it records one): a bare name may also name the reference itself,
+    # as analysis/reference/<scene>.json beside scenes/<scene>.json does.
+    wanted = reference.get("scene_sha256")
+    path = None
+    for candidate in paths.input_candidates(str(name), base, "scene"):
+        if not candidate.is_file():
+            continue
+        try:
+            data = input_file.read_input_bytes(candidate, "scene file", REFERENCE_BYTES)
+        except input_file.InputFileError:
+            continue
+        if wanted is None or "sha256:" + hashlib.sha256(data).hexdigest() == wanted:
+            path = candidate
+            break
+    if path is None:
+        raise AccuracyError(f"{reference_name}: scene_file {name}: no such scene"
+                            + (" with its scene_sha256" if wanted else "") + " ("
+                            + paths.looked_for(str(name), base, "scene") + ")")
     try:
         scene = json.loads(input_file.read_input_text(path, "scene file", REFERENCE_BYTES))
         return [luminance(p.get("emission", (0.0, 0.0, 0.0))) > 0 for p in scene["patches"]]

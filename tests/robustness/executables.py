@@ -95,6 +95,7 @@ SURFACE = {
     ".ci/run": ("the repository", "build/", "install-deps, cmake, ./simulate, ctest"),
     "experiments/sweep": ("sweep files (YAML or JSON), the scenes, platforms and cost models they name, result files", "--results folder: plan.json, one result file per cell, sweeps/NAME/ summaries", "Snakemake, ./simulate per cell (locally or through Slurm's sbatch)"),
     "experiments/reproduce": ("experiments/table1-5.json, timeline.json", "--results folder", "experiments/sweep"),
+    "analysis/ncube/reference_manifest.py": ("analysis/reference/*.json and manifest/, the scenes", "DIR/manifest/SCENE.json and fingerprint.json (each record written whole); with run, DIR/SCENE.json", "BUILD/reference_solution (run, fingerprint, check)"),
     "experiments/claims/references": ("scenes", "analysis/reference/SCENE.json", "build/reference_solution"),
     "experiments/claims/cycles-answers": ("scenes", "--out folder (default analysis/cycles/)", "analysis/cycles/cycles_answers.py"),
     "analysis/report.py": ("--results folder's result files, experiments/*.json", "--out-dir: report.md, figures/ (a committed page only from complete results)", "nothing"),
@@ -204,6 +205,9 @@ def problems(root):
 
 
 if __name__ == "__main__":
+    if any(a in ("-h", "--help") for a in sys.argv[1:]):
+        print("usage: " + __doc__.split("usage:", 1)[1].strip())
+        sys.exit(0)
     arguments = [a for a in sys.argv[1:] if a != "--page"]
     root = Path(arguments[0] if arguments else Path(__file__).resolve().parents[2])
     if "--page" in sys.argv[1:]:

@@ -31,6 +31,18 @@ Each case is a fork of this process, which has imported numpy, matplotlib and ya
 costs the program's own work, not its imports (0.1 to 0.9 s of CPU each otherwise).
 Exit status 0 when every case holds, 1 otherwise."""
 import os
+import sys
+
+# Debian's /usr/bin/python3 (README.md, "Use"), which has numpy, matplotlib and yaml: started
+# by another python3, restart under it. Not through analysis/ncube/interpreter.py: this process
+# runs the programs of a copied tree, and the real tree's ncube on sys.path would stand in for
+# the copy's (its build/ and its files).
+import importlib.util  # noqa: E402
+if (any(importlib.util.find_spec(m) is None for m in ("numpy", "matplotlib", "yaml"))
+        and not os.environ.get("NCUBE_PYTHON_RESTARTED") and os.access("/usr/bin/python3", os.X_OK)):
+    os.environ["NCUBE_PYTHON_RESTARTED"] = "1"
+    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+os.environ.pop("NCUBE_PYTHON_RESTARTED", None)
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # no BLAS threads in a process that forks
 os.environ["MPLBACKEND"] = "Agg"

@@ -242,8 +242,11 @@ def tool_run(name, folder, root, simulate, outputs):
         argv += ["--out", "out.xml"] if outputs else []
     elif name == "accuracy":
         prepare_tool_files(simulate, root)
+        # The scene beside the reference: accuracy.py reads which patches emit from the scene
+        # the reference names (its scene_sha256), found by the lookup rule.
         files = {"solution.ply": good_content("solution", root),
-                 "reference.json": good_content("reference", root)}
+                 "reference.json": good_content("reference", root),
+                 "scene.json": json.dumps(ROOM_SCENE).encode()}
         argv = ["/usr/bin/python3", str(root / "analysis" / "ncube" / "accuracy.py"),
                 "solution.ply", "reference.json"]
         argv += ["--json", "out.json"] if outputs else []
