@@ -45,7 +45,7 @@ import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import error_measure, input_file, output_file, page, paths  # noqa: E402
+from ncube import error_measure, input_file, page, paths  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 

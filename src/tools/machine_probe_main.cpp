@@ -55,6 +55,7 @@
 #include "tools/output_files.h"
 #include "tools/scene_test_cost.h"
 #include "tools/simulate_options.h"
+#include "tools/thread_clock.h"
 #include "tools/tool_exits.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
@@ -64,8 +65,10 @@
 
 namespace {
 
+using ncube::median;
 using ncube::Polygon;
 using ncube::Rgb;
+using ncube::thread_seconds;
 using ncube::Vec3;
 
 // A room of the probe's own: a room 4 x 3 x 4 (walls, floor and ceiling each cut x cut patches
@@ -162,18 +165,6 @@ constexpr double kRayFlopsARepeat = 6e7;
 constexpr double kLoopFlopsARepeat = 3e8;
 // The same for the gather (its flops as a probed machine is charged them; about 0.02 s).
 constexpr double kGatherFlopsARepeat = 3e7;
-
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double median(std::vector<double> s) {
-  std::sort(s.begin(), s.end());
-  const std::size_t n = s.size();
-  return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
-}
 
 // The time a run is fitted on: the median of its repeats, or with --least the least of them
 // (a disturbance only ever adds thread CPU time, and docs/machines/prediction_table.py takes

@@ -30,6 +30,7 @@
 #include "radiosity/radiosity_engine.h"
 #include "scene/scene_loader.h"
 #include "tools/simulate_options.h"
+#include "tools/thread_clock.h"
 #include "util/input_error.h"
 #include "util/input_file.h"
 #include "visibility/brute_force_occluders.h"
@@ -37,18 +38,6 @@
 
 namespace ncube {
 namespace {
-
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-double median(std::vector<double> s) {
-  std::sort(s.begin(), s.end());
-  const std::size_t n = s.size();
-  return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
-}
 
 double prop(const std::string& file, const std::string& text, const std::string& id) {
   std::smatch m;
