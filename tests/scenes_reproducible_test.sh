@@ -26,15 +26,9 @@ for f in "${files[@]}"; do
     status=1
   fi
 done
-# A second run must give the same bytes (no hidden randomness or ordering).
-mkdir "$tmp/again"
-"$python" "$root/scenes/generate.py" --out "$tmp/again"
-for f in "${files[@]}"; do
-  if ! cmp "$tmp/$f" "$tmp/again/$f"; then
-    echo "FAIL: two runs of the generator differ in $f" >&2
-    status=1
-  fi
-done
+# No second run in the same test: the committed files were written by another process at
+# another time (another PYTHONHASHSEED, another clock), so equal bytes already show that the
+# generator has no hidden randomness or ordering.
 if [[ $status -eq 0 ]]; then
   echo "PASS: ${#files[@]} scene files reproduced byte for byte"
 fi

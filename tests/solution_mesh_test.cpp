@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "suite_scratch.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -113,21 +115,22 @@ struct SolutionMesh : testing::Test {
   void SetUp() override {
     const char* simulate = std::getenv("NCUBE_SIMULATE");
     if (!simulate) GTEST_SKIP() << "NCUBE_SIMULATE is not set (ctest sets it)";
-    // One folder per test: ctest runs the tests of this fixture in parallel processes.
-    dir = fs::path(testing::TempDir()) /
-          ("solution_mesh_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir);
-    // Adaptive subdivision: elements of several levels side by side, T-vertices on edges.
-    const std::string command = std::string(simulate) +
-                                " cornell-box.json --R 2 --iterations 12 --subdivide --quiet"
-                                " --json " + (dir / "r.json").string() +
-                                " --mesh " + (dir / "m.ply").string();
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    // One run for the whole suite (every test reads it, none changes it): the suite's scratch
+    // folder, where the first test to run writes it, then marks it done.
+    dir = ncube::suite_scratch("solution_mesh");
+    if (!fs::exists(dir / "done")) {
+      // Adaptive subdivision: elements of several levels side by side, T-vertices on edges.
+      const std::string command = std::string(simulate) +
+                                  " cornell-box.json --R 2 --iterations 12 --subdivide --quiet"
+                                  " --json " + (dir / "r.json").string() +
+                                  " --mesh " + (dir / "m.ply").string();
+      ASSERT_EQ(std::system(command.c_str()), 0) << command;
+      std::ofstream(dir / "done") << "simulate's run for every test of the suite\n";
+    }
     ply = read_ply(dir / "m.ply");
     std::ifstream in(dir / "r.json");
     result = nlohmann::json::parse(in);
   }
-  void TearDown() override { fs::remove_all(dir); }
 };
 
 TEST_F(SolutionMesh, HasOneFacePerElementAndThePatchRadiosities) {

@@ -8,12 +8,18 @@
 // Engine, its own memory, a crash of its own. ctest registers one test per suite
 // (cmake/unit_suites.cmake); `unit_tests --gtest_filter=Suite.Name` still runs one test the
 // usual way.
+//
+// The children of one suite share a scratch folder, named by NCUBE_SUITE_SCRATCH and removed
+// when the suite ends, where a fixture may keep what every test of the suite reads and none
+// changes (a run of ./simulate: suite_scratch.h).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -71,6 +77,12 @@ int run_suite(const std::string& suite) {
                  suite.c_str());
     return 2;
   }
+  std::string scratch = (std::filesystem::path(testing::TempDir()) / "suite_XXXXXX").string();
+  if (!mkdtemp(scratch.data())) {
+    std::fprintf(stderr, "unit_tests: cannot create %s: %s\n", scratch.c_str(), std::strerror(errno));
+    return 1;
+  }
+  setenv("NCUBE_SUITE_SCRATCH", scratch.c_str(), 1);
   const auto start = std::chrono::steady_clock::now();
   std::vector<Outcome> failed, skipped;
   for (const std::string& name : names) {
@@ -80,6 +92,8 @@ int run_suite(const std::string& suite) {
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::error_code ignored;
+  std::filesystem::remove_all(scratch, ignored);
   std::printf("\n%s: %zu tests, each in its own process, %.2f s: %zu passed, %zu skipped, %zu failed\n",
               suite.c_str(), names.size(), seconds, names.size() - failed.size() - skipped.size(),
               skipped.size(), failed.size());
