@@ -4,8 +4,8 @@
 # it goes, inside the node programs (SimGrid actors): under an address-space limit (ulimit -v)
 # just below what the run needs, an allocation fails in an actor; before, the exception left
 # the actor and SimGrid aborted (exit 134, "Uncaught exception std::bad_alloc", temporaries
-# left). The limit is found by bisection (the smallest that runs), then every limit in the
-# 60 MB below it is tried: each ends in exit 0 or 6, one of them in 6, and none leaves a file.
+# left). The limit is found by bisection (the smallest that runs), then a limit every 6 MB in
+# the 60 MB below it is tried (10 limits): each ends in exit 0 or 6, one of them in 6, and none leaves a file.
 # Lower limits fail where SimGrid allocates the actors' stacks, which SimGrid itself turns into
 # an abort: the stacks are reserved first and handed to SimGrid (reserve_actor_stacks,
 # src/simulation/actor_stacks.h), so these too are exit 6 (naming the stacks). SimGrid's own
@@ -43,7 +43,7 @@ while [ $((high - low)) -gt 2000 ]; do
   if [ $code = 0 ]; then high=$mid; else low=$mid; fi
 done
 sixes=0 simgrid_aborts=0
-for ((limit = high - 3000; limit > high - 60000; limit -= 3000)); do
+for ((limit = high - 3000; limit > high - 60000; limit -= 6000)); do
   code=0; run $limit || code=$?
   if [ $code = 6 ]; then
     sixes=$((sixes + 1))

@@ -48,9 +48,9 @@ for placement in centre elements; do
     name="$placement-$back_faces"
     hemicube=(--form-factors hemicube --hemicube-resolution 50 --hemicube-placement "$placement"
               --hemicube-back-faces "$back_faces" --quiet --threads 1)
-    "$simulate" "$cornell" --R 1 --iterations 12 "${hemicube[@]}" --mesh "$work/r1-$name.ply" ||
+    "$simulate" "$cornell" --R 1 --iterations 6 "${hemicube[@]}" --mesh "$work/r1-$name.ply" ||
       fail "$name: receivers R=1: exit $?"
-    "$simulate" "$cornell" --parallelisation shooters --R 4 --shooters-per-iteration 1 --iterations 12 \
+    "$simulate" "$cornell" --parallelisation shooters --R 4 --shooters-per-iteration 1 --iterations 6 \
       "${hemicube[@]}" --mesh "$work/s4-$name.ply" || fail "$name: shooters R=4 S=1: exit $?"
     cmp -s "$work/r1-$name.ply" "$work/s4-$name.ply" ||
       fail "$name: shooters at R=4, one shooter an iteration, differ from receivers at R=1"
