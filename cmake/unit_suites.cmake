@@ -5,7 +5,7 @@
 #
 # Inputs (-D): EXE the unit_tests binary, OUT the file to write, SIMULATE the simulator
 # (NCUBE_SIMULATE for the tests that run it), WORKDIR, SLOW the suites that are not `quick`,
-# separated by commas.
+# separated by commas, COSTS pairs of test name and cost (ctest's COST: longest first).
 cmake_minimum_required(VERSION 3.20)
 execute_process(COMMAND "${EXE}" --gtest_list_tests OUTPUT_VARIABLE listing
                 RESULT_VARIABLE listed)
@@ -14,6 +14,7 @@ if(NOT listed EQUAL 0)
 endif()
 string(REPLACE "\n" ";" lines "${listing}")
 string(REPLACE "," ";" SLOW "${SLOW}")
+string(REPLACE "," ";" COSTS "${COSTS}")
 set(script "")
 foreach(line IN LISTS lines)
   # A suite's line starts in column 0 and ends in '.', maybe followed by "  # TypeParam = ...".
@@ -30,6 +31,12 @@ foreach(line IN LISTS lines)
       "set_tests_properties([=[${suite}]=] PROPERTIES WORKING_DIRECTORY [==[${WORKDIR}]==] "
       "ENVIRONMENT [==[NCUBE_SIMULATE=${SIMULATE}]==] TIMEOUT 300 SKIP_RETURN_CODE 77 "
       "LABELS ${label})\n")
+    list(FIND COSTS "${suite}" at)
+    if(at GREATER -1)
+      math(EXPR at "${at} + 1")
+      list(GET COSTS ${at} cost)
+      string(APPEND script "set_tests_properties([=[${suite}]=] PROPERTIES COST ${cost})\n")
+    endif()
   endif()
 endforeach()
 file(WRITE "${OUT}" "${script}")
