@@ -1,5 +1,6 @@
 #include "machine/simgrid_session.h"
 
+#include <csignal>
 #include <memory>
 #include <xbt/config.hpp>
 #include <xbt/log.h>
@@ -17,7 +18,22 @@ simgrid::s4u::Engine& simgrid_engine(const std::vector<std::string>& arguments) 
     for (std::string& argument : storage) argv.push_back(argument.data());
     argv.push_back(nullptr);
     int argc = int(storage.size());
+    // SimGrid's Engine sets a SIGINT handler that calls exit(1): exit() inside a signal
+    // handler runs the static destructors and atexit handlers wherever the signal landed, and
+    // deadlocked there when it landed inside malloc (the allocator's lock held, a destructor
+    // waiting for it: Ctrl-C hung the run). What SIGINT did before is given back (the default,
+    // or the temporary files' handler, src/tools/temporary_file.h, which removes their names
+    // and ends the process by the signal), so Ctrl-C ends the process as SIGINT does. Ignored
+    // before (a command a script started in the background) becomes the default: SimGrid's
+    // handler ended such runs too, and whoever stops a sweep's runs relies on it.
+    struct sigaction interrupt_before {};
+    const bool saved = sigaction(SIGINT, nullptr, &interrupt_before) == 0;
     engine = new simgrid::s4u::Engine(&argc, argv.data());
+    if (saved) {
+      if (!(interrupt_before.sa_flags & SA_SIGINFO) && interrupt_before.sa_handler == SIG_IGN)
+        interrupt_before.sa_handler = SIG_DFL;
+      sigaction(SIGINT, &interrupt_before, nullptr);
+    }
   }
   return *engine;
 }

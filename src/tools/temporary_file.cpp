@@ -34,8 +34,8 @@ extern "C" void remove_named_files_on_signal(int signal_number) {
   raise(signal_number);
 }
 
-// Handlers for every signal whose default ends the process, where nobody set one (SimGrid
-// ends Ctrl-C by exit(1), which runs the atexit handler).
+// Handlers for every signal whose default ends the process, where nobody set one (SimGrid's
+// own SIGINT handler is taken back: src/machine/simgrid_session.cpp).
 void install_handlers() {
   static bool installed = false;
   if (installed) return;

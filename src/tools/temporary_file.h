@@ -1,5 +1,5 @@
 // A temporary file that has no name until it is kept, so that no exit of the process (a crash
-// inside SimGrid, SIGKILL, exit(1) from SimGrid's Ctrl-C handler, an exception) can leave one
+// inside SimGrid, SIGKILL, SIGINT, exit(), an exception) can leave one
 // behind (docs/cli.md, "Output files"):
 //  - in a folder: opened with O_TMPFILE (an inode with no name), and given a name only by
 //    keep_as(), which links it under a fresh random name and renames that onto the target
