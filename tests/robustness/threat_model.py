@@ -100,6 +100,7 @@ TOOL_INPUTS = [
     Input("accuracy.py reference", "reference.json", "reference", "accuracy"),
     Input("sweep --slurm sweep file", "sweep.json", "sweep", "sweep-slurm"),
 ]
+TOOL_INPUTS_BY_ID = {surface.id: surface for surface in TOOL_INPUTS}
 # The gate's branches (src/util/input_file.h, analysis/ncube/input_file.py: every kind of link
 # is held for ./simulate above): a plain read, a FIFO, a folder, a huge file.
 TOOL_INPUT_KINDS = ["regular", "fifo", "folder", "huge"]
@@ -122,14 +123,18 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
 
 # A file a model names, read for the sweep tool by ./simulate --list-inputs: through the same
 # C++ gate and reference rule that every kind holds for ./simulate's own reads above, so the
-# kinds that show the sweep asks it (not a reader of its own): a regular file, a FIFO, a huge
-# file and the references out of the folder.
-SWEEP_PART_KINDS = ["regular", "fifo", "huge", "absolute reference", "escaping reference",
-                    "link out of the folder", "file URI"]
+# kinds that show the sweep asks it (not a reader of its own): a regular file, a FIFO and a
+# huge file (which the sweep's own hashing of what is listed must not read) and one reference
+# out of the folder (which the sweep must pass on as ./simulate's refusal; the other three
+# reference kinds take the same way through the sweep, and each is held for ./simulate itself).
+SWEEP_PART_KINDS = ["regular", "fifo", "huge", "escaping reference"]
 
 
 def input_kinds(surface):
     if surface in TOOL_INPUTS:
+        if surface.run == "probe" and surface is not TOOL_INPUTS_BY_ID["machine_probe --network"]:
+            # Its plain run is the --network cell's very command (both files regular).
+            return [k for k in PROBE_INPUT_KINDS if k != "regular"]
         return PROBE_INPUT_KINDS if surface.run == "probe" else TOOL_INPUT_KINDS
     kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
     if surface.run.startswith("sweep-") and surface.named_by:
