@@ -130,6 +130,19 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
 SWEEP_PART_KINDS = ["regular", "fifo", "huge", "escaping reference"]
 
 
+# The C++ gate's branches for a file the user names (a dangling link, a loop of links, a
+# character device, a socket, an endless device behind a link: src/util/input_file.h, one
+# function whatever the input) are held through the scene; the other inputs ./simulate reads
+# by their own names (a model, a platform, a cost model, the platform NCUBE_ROOT finds) meet
+# the kinds that show the input goes through the gate at all, each of which a reader of its own
+# would get wrong (a FIFO hangs it, a huge file fills its memory, a folder is no file), a
+# plain file and a link to one (a model's references are resolved from the folder of the
+# name given). The files a model names meet every kind (the model's reference rule decides
+# first), and the sweep file every kind (the Python gate, analysis/ncube/input_file.py).
+GATE_USE_KINDS = ["regular", "link", "fifo", "folder", "huge"]
+ALL_KINDS_INPUTS = {"scene", "sweep file"}
+
+
 def input_kinds(surface):
     if surface in TOOL_INPUTS:
         if surface.run == "probe" and surface is not TOOL_INPUTS_BY_ID["machine_probe --network"]:
@@ -141,6 +154,13 @@ def input_kinds(surface):
         kinds = [k for k in kinds if k in SWEEP_PART_KINDS]
     if surface.absolute:   # only where the model's own path matters
         kinds = ["regular", "link", *MODEL_ONLY_KINDS]
+    elif not surface.named_by and surface.id not in ALL_KINDS_INPUTS:
+        kinds = [k for k in kinds if k in GATE_USE_KINDS]
+    elif not surface.read:
+        # Named, never opened: a FIFO (an open would hang) and a huge file (a read would fill
+        # memory) show it is not read; the other kinds of path are only other things not to
+        # open. The references out of the folder are the model's rule's.
+        kinds = [k for k in kinds if k in ("regular", "fifo", "huge") or k in MODEL_ONLY_KINDS]
     return [k for k in kinds if k != "file URI" or surface.uri]
 
 
