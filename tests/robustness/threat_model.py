@@ -381,12 +381,14 @@ def cells(simulate):
             found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
     for output in outputs(simulate):
-        # Every output option of ./simulate writes through the one output rule
+        # Every output of ./simulate writes through the one output rule
         # (src/tools/output_files.cpp): --json meets every kind of path and every input, each
-        # other option the kinds that take each branch of the rule and three inputs (a scene or
-        # model, a file a model names, a platform). SimGrid's own writers (EXTRA_OUTPUTS), which
-        # the rule reaches another way, meet them all.
-        whole = output.id == "--json" or output in EXTRA_OUTPUTS
+        # other output the kinds that take each branch of the rule and four inputs (a scene, a
+        # model, a file a model names, a platform). SimGrid's own writers (EXTRA_OUTPUTS) and
+        # the activity record get their paths from a setting or the environment
+        # (src/machine/simgrid_outputs.h), then the same rule's temporary files: they too meet
+        # each branch, the others being the rule's own, held through --json.
+        whole = output.id == "--json"
         for kind, (outcome, _, _) in OUTPUT_KINDS.items():
             if not whole and kind not in SHARED_RULE_KINDS:
                 continue
