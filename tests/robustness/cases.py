@@ -700,9 +700,16 @@ def model_cases(root, work):
     return cases
 
 
-def all_cases(root, work, simulate):
-    """Every case, each group's files in a folder of its own (case["work"]): the groups can run
-    at once, a run's temporary files looked for in its own group's folder only."""
+# The two parts of the cases (run.py --only options, --only files): the command line's words,
+# and the files a run reads.
+PARTS = {"options": ("options", "numbers", "outputs", "path kinds"),
+         "files": ("scene", "settings", "machine", "model")}
+
+
+def all_cases(root, work, simulate, part=None):
+    """Every case (of PARTS[part] only, when given), each group's files in a folder of its own
+    (case["work"]): the groups can run at once, a run's temporary files looked for in its own
+    group's folder only."""
     root, work = Path(root), Path(work)
     groups = {"scene": lambda w: scene_cases(root, w), "options": lambda w: option_cases(root, w),
               "numbers": lambda w: number_cases(simulate, w),
@@ -710,6 +717,8 @@ def all_cases(root, work, simulate):
               "path kinds": lambda w: path_kind_cases(w, simulate),
               "settings": lambda w: settings_cases(root, w),
               "machine": lambda w: machine_cases(root, w), "model": lambda w: model_cases(root, w)}
+    if part:
+        groups = {name: make for name, make in groups.items() if name in PARTS[part]}
     cases = []
     for name, make in groups.items():
         folder = work / name.replace(" ", "-")

@@ -6,7 +6,8 @@ files (tests/robustness/cases.py), then on every cell of the threat model
 content), and tabulates the outcomes.
 
 Usage: run.py SIMULATE [--root REPO] [--timeout S] [--cell-timeout S] [--jobs N]
-              [--memory-mb MB] [--only cases|threats|reads|writes] [--list] [--strict]
+              [--memory-mb MB] [--only cases|options|files|threats|reads|writes]
+              [--list] [--strict]
 
 Each run gets a wall-clock timeout and an address-space limit (ulimit -v), so no input can
 hang or exhaust the machine running the script. Outcomes:
@@ -293,9 +294,10 @@ def main():
                         help="groups of cases and threat-model cells at once (a hanging cell "
                              "takes no CPU)")
     parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per run")
-    parser.add_argument("--only", choices=("cases", "threats", "reads", "writes"),
-                        help="run one part only (reads, writes: the threat model's cells that "
-                             "read, or write, a file)")
+    parser.add_argument("--only", choices=("cases", "options", "files", "threats", "reads", "writes"),
+                        help="run one part only (options, files: the cases of the command line's "
+                             "words, of the files a run reads; reads, writes: the threat model's "
+                             "cells that read, or write, a file)")
     parser.add_argument("--list", action="store_true", help="print every case and its outcome")
     parser.add_argument("--strict", action="store_true",
                         help="also fail on known_open.py entries that are now clean")
@@ -304,15 +306,17 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as work, tempfile.TemporaryDirectory() as cells_work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        cases = (case_list.all_cases(args.root, work, args.simulate)
-                 if args.only in (None, "cases") else [])
+        cases = (case_list.all_cases(args.root, work, args.simulate,
+                                     args.only if args.only in case_list.PARTS else None)
+                 if args.only in (None, "cases", *case_list.PARTS) else [])
         by_folder = {}
         for case in cases:
             by_folder.setdefault(case["work"], []).append(case)
         # The biggest groups first: each group runs its cases one after another.
         groups = [pool.submit(run_group, args, group)
                   for group in sorted(by_folder.values(), key=len, reverse=True)]
-        futures = run_threats(args, cells_work, pool) if args.only != "cases" else {}
+        futures = (run_threats(args, cells_work, pool)
+                   if args.only in (None, "threats", "reads", "writes") else {})
         outcomes = {id(case): outcome for group in groups for case, *outcome in group.result()}
         table = {}
         for case in cases:
