@@ -45,7 +45,9 @@ import json  # noqa: E402
 import math  # noqa: E402
 import struct  # noqa: E402
 
-from ncube import error_measure, input_file, page, paths  # noqa: E402
+# The error measure (numpy) is imported where it is used: a file refused, a --help, an option
+# refused end without numpy's import (about as long as the rest of the run).
+from ncube import input_file, page, paths  # noqa: E402
 
 LUMINANCE = (0.2126, 0.7152, 0.0722)
 
@@ -246,6 +248,7 @@ def compare(solution, reference, solution_name="solution", reference_name="refer
         emits = [False] * patch_count
     if len(emits) < patch_count:
         raise AccuracyError(f"{reference_name}: {patch_count} patches, its scene has {len(emits)}")
+    from ncube import error_measure
     out = error_measure.measure([luminance(rgb) for _, rgb in solution],
                                 [luminance(e[2:]) for e in elements], [e[1] for e in elements],
                                 [e[0] for e in elements], list(emits)[:patch_count])

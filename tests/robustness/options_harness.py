@@ -62,11 +62,6 @@ import traceback  # noqa: E402
 from dataclasses import dataclass, field  # noqa: E402
 from pathlib import Path  # noqa: E402
 
-import matplotlib  # noqa: E402
-matplotlib.use("Agg")
-import matplotlib.pyplot  # noqa: E402,F401
-import numpy  # noqa: E402,F401
-import yaml  # noqa: E402,F401
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -632,6 +627,13 @@ def main():
     parser.add_argument("--only", help="one program (as executables.py names it)")
     parser.add_argument("--list", action="store_true", help="print every case")
     args = parser.parse_args()
+    # Imported once here, before any fork, for every case (after the arguments: --help needs
+    # none of them).
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot  # noqa: F401
+    import numpy  # noqa: F401
+    import yaml  # noqa: F401
     root, simulate = Path(args.root).resolve(), Path(args.simulate).resolve()
     for variable in ("NCUBE_SIMULATE", "NCUBE_ROOT"):
         os.environ.pop(variable, None)

@@ -6,7 +6,8 @@ files (tests/robustness/cases.py), then on every cell of the threat model
 content), and tabulates the outcomes.
 
 Usage: run.py SIMULATE [--root REPO] [--timeout S] [--cell-timeout S] [--jobs N]
-              [--memory-mb MB] [--only cases|threats] [--list] [--strict]
+              [--memory-mb MB] [--only cases|options|files|threats|reads|writes]
+              [--list] [--strict]
 
 Each run gets a wall-clock timeout and an address-space limit (ulimit -v), so no input can
 hang or exhaust the machine running the script. Outcomes:
@@ -227,11 +228,19 @@ def threat_table(outcomes, title, key):
     return "\n".join(lines)
 
 
+# The ids of the threat model's cells left to the other part (--only reads or writes).
+OTHER_PART = set()
+
+
 def run_threats(args, work, pool):
     """Submits every cell of the threat model to `pool`; returns the futures by cell."""
     root, simulate = Path(args.root).resolve(), Path(args.simulate).resolve()
     futures = {}
     for cell in threat_model.cells(simulate):
+        if (args.only == "reads" and cell.direction == "write") or \
+                (args.only == "writes" and cell.direction != "write"):
+            OTHER_PART.add(cell.id)
+            continue
         futures[pool.submit(threat_cases.run_cell, cell, Path(work), root, simulate,
                             args.cell_timeout * threat_model.time_factor(cell),
                             args.memory_mb << 20)] = cell
@@ -268,7 +277,7 @@ def report_threats(args, futures):
             print(f"{'OPEN' if is_open else 'FAIL'} [{cell.klass}] {cell.id}: {detail[:300]}")
             failures += not is_open
     unclean = {o[0].id for o in outcomes if not o[1]}
-    stale = [i for i in known_open.KNOWN_OPEN if i not in unclean]
+    stale = [i for i in known_open.KNOWN_OPEN if i not in unclean and i not in OTHER_PART]
     for cell_id in stale:
         print(f"now clean: {cell_id!r}: remove it from tests/robustness/known_open.py")
     return failures + (len(stale) if args.strict else 0)
@@ -285,7 +294,10 @@ def main():
                         help="groups of cases and threat-model cells at once (a hanging cell "
                              "takes no CPU)")
     parser.add_argument("--memory-mb", type=int, default=1024, help="address-space limit per run")
-    parser.add_argument("--only", choices=("cases", "threats"), help="run one part only")
+    parser.add_argument("--only", choices=("cases", "options", "files", "threats", "reads", "writes"),
+                        help="run one part only (options, files: the cases of the command line's "
+                             "words, of the files a run reads; reads, writes: the threat model's "
+                             "cells that read, or write, a file)")
     parser.add_argument("--list", action="store_true", help="print every case and its outcome")
     parser.add_argument("--strict", action="store_true",
                         help="also fail on known_open.py entries that are now clean")
@@ -294,15 +306,17 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as work, tempfile.TemporaryDirectory() as cells_work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        cases = (case_list.all_cases(args.root, work, args.simulate)
-                 if args.only != "threats" else [])
+        cases = (case_list.all_cases(args.root, work, args.simulate,
+                                     args.only if args.only in case_list.PARTS else None)
+                 if args.only in (None, "cases", *case_list.PARTS) else [])
         by_folder = {}
         for case in cases:
             by_folder.setdefault(case["work"], []).append(case)
         # The biggest groups first: each group runs its cases one after another.
         groups = [pool.submit(run_group, args, group)
                   for group in sorted(by_folder.values(), key=len, reverse=True)]
-        futures = run_threats(args, cells_work, pool) if args.only != "cases" else {}
+        futures = (run_threats(args, cells_work, pool)
+                   if args.only in (None, "threats", "reads", "writes") else {})
         outcomes = {id(case): outcome for group in groups for case, *outcome in group.result()}
         table = {}
         for case in cases:

@@ -100,6 +100,7 @@ TOOL_INPUTS = [
     Input("accuracy.py reference", "reference.json", "reference", "accuracy"),
     Input("sweep --slurm sweep file", "sweep.json", "sweep", "sweep-slurm"),
 ]
+TOOL_INPUTS_BY_ID = {surface.id: surface for surface in TOOL_INPUTS}
 # The gate's branches (src/util/input_file.h, analysis/ncube/input_file.py: every kind of link
 # is held for ./simulate above): a plain read, a FIFO, a folder, a huge file.
 TOOL_INPUT_KINDS = ["regular", "fifo", "folder", "huge"]
@@ -122,20 +123,44 @@ MODEL_ONLY_KINDS = {"absolute reference", "escaping reference", "link out of the
 
 # A file a model names, read for the sweep tool by ./simulate --list-inputs: through the same
 # C++ gate and reference rule that every kind holds for ./simulate's own reads above, so the
-# kinds that show the sweep asks it (not a reader of its own): a regular file, a FIFO, a huge
-# file and the references out of the folder.
-SWEEP_PART_KINDS = ["regular", "fifo", "huge", "absolute reference", "escaping reference",
-                    "link out of the folder", "file URI"]
+# kinds that show the sweep asks it (not a reader of its own): a regular file, a FIFO and a
+# huge file (which the sweep's own hashing of what is listed must not read) and one reference
+# out of the folder (which the sweep must pass on as ./simulate's refusal; the other three
+# reference kinds take the same way through the sweep, and each is held for ./simulate itself).
+SWEEP_PART_KINDS = ["regular", "fifo", "huge", "escaping reference"]
+
+
+# The C++ gate's branches for a file the user names (a dangling link, a loop of links, a
+# character device, a socket, an endless device behind a link: src/util/input_file.h, one
+# function whatever the input) are held through the scene; the other inputs ./simulate reads
+# by their own names (a model, a platform, a cost model, the platform NCUBE_ROOT finds) meet
+# the kinds that show the input goes through the gate at all, each of which a reader of its own
+# would get wrong (a FIFO hangs it, a huge file fills its memory, a folder is no file), a
+# plain file and a link to one (a model's references are resolved from the folder of the
+# name given). The files a model names meet every kind (the model's reference rule decides
+# first), and the sweep file every kind (the Python gate, analysis/ncube/input_file.py).
+GATE_USE_KINDS = ["regular", "link", "fifo", "folder", "huge"]
+ALL_KINDS_INPUTS = {"scene", "sweep file"}
 
 
 def input_kinds(surface):
     if surface in TOOL_INPUTS:
+        if surface.run == "probe" and surface is not TOOL_INPUTS_BY_ID["machine_probe --network"]:
+            # Its plain run is the --network cell's very command (both files regular).
+            return [k for k in PROBE_INPUT_KINDS if k != "regular"]
         return PROBE_INPUT_KINDS if surface.run == "probe" else TOOL_INPUT_KINDS
     kinds = [k for k in INPUT_KINDS if surface.named_by or k not in MODEL_ONLY_KINDS]
     if surface.run.startswith("sweep-") and surface.named_by:
         kinds = [k for k in kinds if k in SWEEP_PART_KINDS]
     if surface.absolute:   # only where the model's own path matters
         kinds = ["regular", "link", *MODEL_ONLY_KINDS]
+    elif not surface.named_by and surface.id not in ALL_KINDS_INPUTS:
+        kinds = [k for k in kinds if k in GATE_USE_KINDS]
+    elif not surface.read:
+        # Named, never opened: a FIFO (an open would hang) and a huge file (a read would fill
+        # memory) show it is not read; the other kinds of path are only other things not to
+        # open. The references out of the folder are the model's rule's.
+        kinds = [k for k in kinds if k in ("regular", "fifo", "huge") or k in MODEL_ONLY_KINDS]
     return [k for k in kinds if k != "file URI" or surface.uri]
 
 
@@ -356,12 +381,14 @@ def cells(simulate):
             found.append(Cell(f"write {output.id} / is {name}", "write", output, f"is {name}",
                               {"error"}))
     for output in outputs(simulate):
-        # Every output option of ./simulate writes through the one output rule
+        # Every output of ./simulate writes through the one output rule
         # (src/tools/output_files.cpp): --json meets every kind of path and every input, each
-        # other option the kinds that take each branch of the rule and three inputs (a scene or
-        # model, a file a model names, a platform). SimGrid's own writers (EXTRA_OUTPUTS), which
-        # the rule reaches another way, meet them all.
-        whole = output.id == "--json" or output in EXTRA_OUTPUTS
+        # other output the kinds that take each branch of the rule and four inputs (a scene, a
+        # model, a file a model names, a platform). SimGrid's own writers (EXTRA_OUTPUTS) and
+        # the activity record get their paths from a setting or the environment
+        # (src/machine/simgrid_outputs.h), then the same rule's temporary files: they too meet
+        # each branch, the others being the rule's own, held through --json.
+        whole = output.id == "--json"
         for kind, (outcome, _, _) in OUTPUT_KINDS.items():
             if not whole and kind not in SHARED_RULE_KINDS:
                 continue
