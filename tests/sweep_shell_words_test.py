@@ -9,6 +9,8 @@ fails if any appears. The cases:
 - a cfg value holding shell syntax is passed to ./simulate as one argument (refused by it);
 - the Slurm submit and status commands, filled in as Snakemake fills them and run by bash with
   sbatch replaced by a function that prints its arguments, hand sbatch the exact paths."""
+import contextlib
+import io
 import os
 import shutil
 import subprocess
@@ -48,6 +50,20 @@ def sweep(args, cwd=None):
     return subprocess.run(SWEEP + args, capture_output=True, text=True, cwd=cwd, timeout=240)
 
 
+def sweep_in_process(args, cwd):
+    """experiments/sweep's own entry (ncube.runner.main, which the script calls) run here in
+    `cwd`, as a completed process: a refusal at validation without a Python started for each
+    name (the script itself runs in the other cases)."""
+    out, err, before = io.StringIO(), io.StringIO(), os.getcwd()
+    os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = runner.main(args)
+    finally:
+        os.chdir(before)
+    return subprocess.CompletedProcess(args, code, out.getvalue(), err.getvalue())
+
+
 def refused_names(work):
     for i, name in enumerate(["a;touch PWNED-n", "$(touch PWNED-n)", "`touch PWNED-n`", "a b",
                               "a'b", 'a"b', "a\nb", "../up", ".hidden", "", "a{rule}b",
@@ -57,7 +73,8 @@ def refused_names(work):
         (folder / "s.yaml").write_text(f"name: {name!r}\ngrid: {{scene: [scene0], R: [1]}}\n"
                                        .replace("\n", "\n", 1) if "\n" not in name else
                                        'name: "a\\nb"\ngrid: {scene: [scene0], R: [1]}\n')
-        done = sweep([str(folder / "s.yaml"), "--results", str(folder / "results")], cwd=folder)
+        run = sweep if i == 0 else sweep_in_process
+        done = run([str(folder / "s.yaml"), "--results", str(folder / "results")], cwd=folder)
         lines = done.stderr.strip().splitlines()
         check(done.returncode == 2 and len(lines) == 1 and "key 'name'" in lines[0]
               and not (folder / "results").exists(),

@@ -17,6 +17,7 @@ import argparse
 import json
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -171,6 +172,7 @@ def slurm_arguments(results_dir):
 
 
 SNAKEMAKE_LOG = Path("logs") / "snakemake.log"
+SNAKEMAKE_LOCKS = Path(".snakemake") / "locks"   # Snakemake's own, in its working folder
 
 
 def run_snakemake(command, results_dir=None, pending=(), verbose=True):
@@ -225,12 +227,10 @@ def run_snakemake(command, results_dir=None, pending=(), verbose=True):
         # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
         # leave its lock behind, and the next run would refuse the folder. The lock is this
         # run's own (no other sweep holds the folder while this one runs: hold_folder), so it
-        # goes.
-        try:
-            subprocess.run(command + ["--unlock"], stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, timeout=120, check=False)
-        except (OSError, subprocess.SubprocessError):
-            pass
+        # goes, as Snakemake's --unlock removes it (its locks folder, snakemake/persistence.py,
+        # cleanup_locks) without a second Snakemake started for it (seconds after a Ctrl-C).
+        if results_dir is not None:
+            shutil.rmtree(Path(results_dir) / SNAKEMAKE_LOCKS, ignore_errors=True)
         raise outcome.Interrupted(signum)
 
     signal.signal(signal.SIGINT, stop)
