@@ -34,18 +34,19 @@ failures = []
 
 # 4 cells: a scene by name, the Cornell box scene file and its model (each kind of scene a
 # job must find on the cluster), with V = 0 and V > 0, on 1 to 3 nodes. Each cell is a Slurm
-# job: more cells would show nothing more and cost a job each.
+# job: more cells would show nothing more and cost a job each. Then, in the same sweep (one
+# answer to draw per run, not three):
+# - a model the sweep accepts (it imports) but whose simulation fails: the job's ./simulate
+#   (a wrapper) is handed a broken copy, as if the file had been damaged on the cluster's disk;
+# - a cell over its memory request: traced, so that its rule (traced_cell) alone is asked for
+#   1 MB (Snakemake's --set-resources); its job held at "verified" (run_cell's Python alone
+#   holds more) until Slurm kills it.
+BAD = WORK / "bad-box.obj"
 STUDY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
          "cells: [{scene: scene0, R: 1, V: 0}, {scene: scene0, R: 2, V: 1},\n"
-         f"        {{scene: cornell-box.json, R: 2, V: 0}}, {{scene: '{MODEL}', R: 1, V: 1}}]\n")
+         f"        {{scene: cornell-box.json, R: 2, V: 0}}, {{scene: '{MODEL}', R: 1, V: 1}},\n"
+         f"        {{scene: '{BAD}', R: 1, V: 0}}, {{scene: scene0, R: 1, V: 0, trace: true}}]\n")
 CELLS = 4
-# A model the sweep accepts (it imports) but whose simulation fails: the job's ./simulate
-# (a wrapper) is handed a broken copy, as if the file had been damaged on the cluster's disk.
-BROKEN = "broken.yaml"
-# A cell over its memory request: traced, so that its rule (traced_cell) alone is asked for
-# 1 MB (Snakemake's --set-resources); its job held at "verified" (run_cell's Python alone
-# holds more) until Slurm kills it.
-OVER_MEMORY = "over-memory.yaml"
 
 
 def check(condition, what):
@@ -84,14 +85,10 @@ def squeue_job(name):
 
 def main():
     (WORK / "study.yaml").write_text(STUDY)
-    bad = WORK / "bad-box.obj"
+    bad = BAD
     bad.write_bytes(MODEL.read_bytes() + b"# a copy of its own (another identity)\n")
     (WORK / "cornell-box.mtl").write_bytes(MODEL.with_suffix(".mtl").read_bytes())
     (WORK / "garbage.obj").write_text("v 1 2\nf 1 2 3 4 5\n")
-    (WORK / BROKEN).write_text("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
-                               f"grid: {{scene: [{bad}], R: [1]}}\n")
-    (WORK / OVER_MEMORY).write_text("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
-                                    "grid: {scene: [scene0], R: [1], trace: [true]}\n")
     wrapper = WORK / "simulate-broken-model"
     # Only the cell's run (--json) gets the broken copy; the sweep's import of it works.
     wrapper.write_text('#!/bin/bash\nargs=()\nfor a in "$@"; do\n'
@@ -99,10 +96,9 @@ def main():
                        f'a="{WORK / "garbage.obj"}"\n'
                        f'  args+=("$a")\ndone\nexec {SIMULATE} "${{args[@]}}"\n')
     wrapper.chmod(0o755)
-    cells = sweep.load(WORK / "study.yaml").cells
-    broken = sweep.load(WORK / BROKEN).cells[0]
-    over = sweep.load(WORK / OVER_MEMORY).cells[0]
-    check(len(cells) == CELLS, f"the study has {CELLS} cells ({len(cells)})")
+    *cells, broken, over = sweep.load(WORK / "study.yaml").cells
+    check(len(cells) == CELLS and Path(broken.scene_file).name == BAD.name and over.trace,
+          f"the study has {CELLS} cells ({len(cells)}), the broken and the traced one")
 
     local_dir = WORK / "local"
     start = time.monotonic()
@@ -118,8 +114,7 @@ def main():
     held = next(c for c in cells if c.scene == "scene0" and c.R == 2 and c.V == 1)
     signals = WORK / "signals"
     signals.mkdir()
-    command = SWEEP + [str(WORK / "study.yaml"), str(WORK / BROKEN), str(WORK / OVER_MEMORY),
-                       "--results", str(cluster_dir), "--slurm",
+    command = SWEEP + [str(WORK / "study.yaml"), "--results", str(cluster_dir), "--slurm",
                        "--", "--set-resources", "traced_cell:mem_mb=1"]
     environment = dict(os.environ, NCUBE_SIMULATE=str(wrapper),
                        NCUBE_TEST_PAUSE=f"started:{held.file},verified:{over.file}",
