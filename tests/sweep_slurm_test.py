@@ -147,6 +147,11 @@ def main():
           f"one Slurm job per cell, their ids in the sweep's log ({len(submitted)} submitted)")
     if len(submitted) != CELLS + 2:
         print(err[-3000:])
+    job_logs = {job: cluster_dir / "logs" / "slurm" / f"{job}.log" for job in submitted}
+    nested = [job for job, path in job_logs.items()
+              if path.exists() and "Building DAG" in path.read_text(errors="replace")]
+    check(not nested, f"the jobs run their cells without a Snakemake of their own (the sweep's "
+                      f"job script, ncube.cluster_job; a Snakemake in jobs {nested})")
     check(first.returncode == 4, f"a cancelled job, a failed cell and one over its memory: exit 4 "
                                  f"({first.returncode})")
     said = [line for line in err.splitlines() if line.startswith("sweep: ")]
@@ -189,13 +194,15 @@ def main():
           f"({second.returncode}: {second.stdout.splitlines()[:1]})")
     check(results.mismatch(results.read(cluster_dir / held.file), held) is None,
           "the cancelled cell is finished now")
-    same = [c.file for c in cells
-            if without_host_fields(cluster_dir / c.file, cluster_dir) ==
+    same = [c.file for c in cells if (cluster_dir / c.file).exists() and
+            without_host_fields(cluster_dir / c.file, cluster_dir) ==
             without_host_fields(local_dir / c.file, local_dir)]
     check(len(same) == CELLS, f"the cluster's result files are the local run's byte for byte "
                               f"apart from host fields ({len(same)} of {CELLS})")
-    if len(same) != CELLS:
-        cell = next(c for c in cells if c.file not in same)
+    for cell in [c for c in cells if c.file not in same][:1]:   # what differs, for the log
+        if not (cluster_dir / cell.file).exists():
+            print(f"     {cell.file}: no cluster result")
+            continue
         print("".join(list(difflib.unified_diff(
             without_host_fields(local_dir / cell.file, local_dir).splitlines(True),
             without_host_fields(cluster_dir / cell.file, cluster_dir).splitlines(True)))[:40]))
