@@ -11,6 +11,7 @@ fails if any appears. The cases:
   sbatch replaced by a function that prints its arguments, hand sbatch the exact paths."""
 import contextlib
 import io
+import json
 import os
 import shutil
 import subprocess
@@ -21,7 +22,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import runner  # noqa: E402
+from ncube import cluster_job, runner  # noqa: E402
 from snakemake.utils import format as snakemake_format  # noqa: E402
 
 SWEEP = ["/usr/bin/python3", str(ROOT / "experiments" / "sweep")]
@@ -165,6 +166,23 @@ def submit_line(work):
                          capture_output=True, text=True)
     check(f"PYTHONPATH={ROOT / 'analysis'}" in env.stdout.splitlines(),
           "the status command's PYTHONPATH is one word")
+    # The job script: the sweep's template (its path from the repository, hostile too), filled
+    # in by Snakemake's formatting, run by sh with exec replaced by a function that prints
+    # PYTHONPATH and its arguments; ncube.cluster_job finds the cell in its properties line.
+    results_dir.mkdir()
+    runner.write_job_script(results_dir, results_dir / "plan.json")
+    template = (results_dir / runner.SLURM_JOB_SCRIPT).read_text()
+    script = results_dir / "job ' $x.sh"
+    script.write_text(template.format(properties=json.dumps(
+        {"rule": "cell", "output": ["cells/scene0-R1.json"], "wildcards": {"name": "scene0-R1"}})))
+    printed = subprocess.run(["bash", "-c", 'exec() { printf "%s\\0" "$PYTHONPATH" "$@"; }; '
+                              'source "$0"', str(script)], capture_output=True, text=True, cwd=work)
+    check(printed.stdout.split("\0")[:-1] == [str(ROOT / "analysis"), "/usr/bin/python3", "-m",
+                                             "ncube.cluster_job", str(script), "plan.json"],
+          f"the job script hands ncube.cluster_job its own path and the plan, whole "
+          f"({printed.stdout.split(chr(0))[:6]}, {printed.stderr.strip()[:200]})")
+    check(cluster_job.cell_file(script) == "cells/scene0-R1.json",
+          "ncube.cluster_job reads the cell from the job script's properties")
     check(not pwned(work), "the submit line ran nothing")
 
 
