@@ -78,6 +78,10 @@ SwitchType=switch/none
 LaunchParameters=use_interactive_step
 ReturnToService=2
 SchedulerType=sched/backfill
+# The main scheduling loop every second, not every 60 s: a job waiting for a free CPU starts
+# about 0.2 s after another ends, not 2 s (measured on this one-node cluster, Slurm 22.05); a
+# few jobs on one node make the pass cheap.
+SchedulerParameters=sched_interval=1
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core_Memory
 AccountingStorageType=accounting_storage/none
@@ -162,19 +166,30 @@ slurm_cluster_stop() {
   local -a pidfiles=("$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid")
   local -a programs=(slurmd slurmctld munged)
   local -a arguments=("$dir/slurm.conf" "$dir/slurm.conf" "--socket=$dir/munge/socket")
+  local -a signalled=()
   for i in 0 1 2; do
     [ -f "${pidfiles[$i]}" ] || continue
     if ! slurm_cluster_own_pid "${pidfiles[$i]}" "${programs[$i]}" "${arguments[$i]}"; then
       echo "slurm_cluster.sh: not signalled: $SLURM_CLUSTER_WHY" >&2
       continue
     fi
-    pid=$SLURM_CLUSTER_PID
-    kill "$pid" 2>/dev/null || continue
-    for _ in $(seq 1 50); do
-      kill -0 "$pid" 2>/dev/null || break
-      sleep 0.1
+    kill "$SLURM_CLUSTER_PID" 2>/dev/null && signalled+=("$SLURM_CLUSTER_PID:${programs[$i]}")
+  done
+  # All three asked to stop at once, then waited for together (each takes a second or two to
+  # end): 5 s at most, then killed.
+  local entry program running
+  for _ in $(seq 1 50); do
+    running=0
+    for entry in "${signalled[@]}"; do
+      kill -0 "${entry%%:*}" 2>/dev/null && running=1
     done
-    kill -9 "$pid" 2>/dev/null
+    [ "$running" = 0 ] && break
+    sleep 0.1
+  done
+  for entry in "${signalled[@]}"; do   # still the daemon signalled (its program), not a reuse
+    pid=${entry%%:*} program=${entry#*:}
+    [ "$(head -z -n 1 "/proc/$pid/cmdline" 2>/dev/null | tr -d '\0')" = "/usr/sbin/$program" ] &&
+      kill -9 "$pid" 2>/dev/null
   done
   return 0
 }

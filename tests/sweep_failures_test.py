@@ -24,8 +24,8 @@ failures = []
 
 TINY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2, 4]}\n")
-# Two cells where one that fails or waits and one other are all a case needs (each cell is a
-# job: a Python and a ./simulate); the full disk keeps three, its filler sized for them.
+# Two cells where one that waits, then fails, and one other are all the cases need (each cell
+# is a job: a Python and a ./simulate); the full disk keeps three, its filler sized for them.
 PAIR = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2]}\n")
 
@@ -66,7 +66,9 @@ def paused_sweep(sweep_file, results_dir, point, cell, signals_dir):
     return process, (signals_dir / point).exists()
 
 
-def test_folder_in_use(work):
+def test_folder_in_use_then_failing(work):
+    """A sweep in use, stopped, then run again with its stopped cell failing, then fixed: one
+    sweep folder for the three cases, each a Snakemake run fewer than a folder of its own."""
     (work / "busy.yaml").write_text(PAIR)
     cells = sweep.load(work / "busy.yaml").cells
     results_dir = work / "busy"
@@ -92,23 +94,14 @@ def test_folder_in_use(work):
         "run the same command again to go on"], f"an interrupted sweep: exit 130 and one line "
                                                  f"({first.returncode}, {stopped})")
     check(not (results_dir / cells[0].file).exists(), "the interrupted cell has no result")
-    done = run_sweep(work / "busy.yaml", "--results", results_dir)
-    folder = results_dir / 'sweeps' / 'busy'
-    check(done.returncode == 0 and last_line(done).endswith(
-        f"written: {folder / 'cells.csv'}, {folder / 'summary.csv'}, {folder / 'summary.md'}"),
-        f"the same command completes it and names its table ({last_line(done)})")
 
-
-def test_cell_failing(work):
-    (work / "fails.yaml").write_text(PAIR)
-    cells = sweep.load(work / "fails.yaml").cells
-    failing = next(c for c in cells if c.R == 2)
-    wrapper = work / "simulate-fails-R2"
-    wrapper.write_text(f'#!/bin/sh\ncase " $* " in *" --R 2 "*) echo "simulate: broken for the '
-                       f'test" >&2; exit 4;; esac\nexec {SIMULATE} "$@"\n')
+    # The stopped cell fails when run again (a wrapper of ./simulate refuses its R).
+    failing = cells[0]
+    wrapper = work / "simulate-fails-R1"
+    wrapper.write_text(f'#!/bin/sh\ncase " $* " in *" --R {failing.R} "*) echo "simulate: broken '
+                       f'for the test" >&2; exit 4;; esac\nexec {SIMULATE} "$@"\n')
     wrapper.chmod(0o755)
-    results_dir = work / "fails"
-    done = run_sweep(work / "fails.yaml", "--results", results_dir,
+    done = run_sweep(work / "busy.yaml", "--results", results_dir,
                      env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
     check(done.returncode == 4, f"a cell failing: exit 4 ({done.returncode})")
     said = plain_lines(done)
@@ -117,19 +110,23 @@ def test_cell_failing(work):
           said[0].endswith("the other cells finished and are kept; fix the cause and run the "
                            "same command again"), f"one plain line names the cell ({said[:1]})")
     check("simulate: broken for the test" in done.stderr, "the cell's own message is shown")
-    folder = results_dir / "sweeps" / "fails"
+    folder = results_dir / "sweeps" / "busy"
     check(last_line(done).endswith(f"written: {folder / 'summary.csv'}, {folder / 'summary.md'}")
           and not (folder / "cells.csv").exists() and
-          "R=2 V=0 failed" in (folder / "summary.md").read_text(),
+          f"R={failing.R} V=0 failed" in (folder / "summary.md").read_text(),
           f"the last line names the answer (the failed cell in it), not the complete table, "
           f"which was not written ({last_line(done)})")
     others = [c for c in cells if c is not failing]
     check(all(results.mismatch(results.read(results_dir / c.file), c) is None for c in others)
           and not (results_dir / failing.file).exists(), "the other cells finished")
-    done = run_sweep(work / "fails.yaml", "--results", results_dir)
+
+    done = run_sweep(work / "busy.yaml", "--results", results_dir)
     check(done.returncode == 0 and "1 to run" in done.stdout and
           results.mismatch(results.read(results_dir / failing.file), failing) is None,
           "once fixed, the same command runs the failed cell only")
+    check(done.returncode == 0 and last_line(done).endswith(
+        f"written: {folder / 'cells.csv'}, {folder / 'summary.csv'}, {folder / 'summary.md'}"),
+        f"the same command completes it and names its table ({last_line(done)})")
 
 
 def full_disk_inside(folder):
@@ -216,7 +213,7 @@ def main():
     os.environ["NCUBE_SIMULATE"] = SIMULATE
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-failures-") as folder:
         work = Path(folder)
-        for test in (test_logging_tracebacks_dropped, test_folder_in_use, test_cell_failing,
+        for test in (test_logging_tracebacks_dropped, test_folder_in_use_then_failing,
                      test_full_disk):
             print(f"-- {test.__name__}", flush=True)
             test(work)

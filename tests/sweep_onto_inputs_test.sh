@@ -25,16 +25,20 @@ sweep; code=$?
 grep -q "plan.json: is the input file .*s.yaml" err.txt || fail "plan.json: no line naming both: $(cat err.txt)"
 cmp -s s.yaml s.orig || fail "the sweep file was overwritten through plan.json"
 
-for target in ../../../s.yaml ../../../scene.json; do
-  rm -rf r && mkdir -p r/sweeps/onto && ln -s "$target" r/sweeps/onto/cells.csv
-  sweep; code=$?
-  # Snakemake removes a job's existing outputs (the link) before the job runs; were it to
-  # leave one, the summary's output rule refuses it.
-  [ "$code" = 0 ] || grep -q "is the input file" err.txt \
-    || fail "cells.csv linked to $target: exit $code, not said: $(tail -3 err.txt)"
-  cmp -s s.yaml s.orig || fail "the sweep file was overwritten through cells.csv"
-  cmp -s scene.json scene.orig || fail "the scene was overwritten through cells.csv"
-done
+# Two sweeps of the same cell in one run (one Snakemake): one sweep's cells.csv linked to the
+# sweep file, the other's to the scene.
+sed 's/^name: onto$/name: onto2/' s.yaml > t.yaml
+rm -rf r && mkdir -p r/sweeps/onto r/sweeps/onto2
+ln -s ../../../s.yaml r/sweeps/onto/cells.csv
+ln -s ../../../scene.json r/sweeps/onto2/cells.csv
+NCUBE_SIMULATE="$simulate" /usr/bin/python3 "$root/experiments/sweep" s.yaml t.yaml --results r > out.txt 2> err.txt
+code=$?
+# Snakemake removes a job's existing outputs (the links) before the job runs; were it to
+# leave one, the summary's output rule refuses it.
+[ "$code" = 0 ] || grep -q "is the input file" err.txt \
+  || fail "cells.csv linked to the sweep file and the scene: exit $code, not said: $(tail -3 err.txt)"
+cmp -s s.yaml s.orig || fail "the sweep file was overwritten through cells.csv"
+cmp -s scene.json scene.orig || fail "the scene was overwritten through cells.csv"
 
 [ "$failures" = 0 ] && echo "sweep_onto_inputs_test: all checks passed" && exit 0
 echo "sweep_onto_inputs_test: $failures check(s) failed"

@@ -9,6 +9,9 @@ fails if any appears. The cases:
 - a cfg value holding shell syntax is passed to ./simulate as one argument (refused by it);
 - the Slurm submit and status commands, filled in as Snakemake fills them and run by bash with
   sbatch replaced by a function that prints its arguments, hand sbatch the exact paths."""
+import contextlib
+import io
+import json
 import os
 import shutil
 import subprocess
@@ -19,7 +22,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import runner  # noqa: E402
+from ncube import cluster_job, runner  # noqa: E402
 from snakemake.utils import format as snakemake_format  # noqa: E402
 
 SWEEP = ["/usr/bin/python3", str(ROOT / "experiments" / "sweep")]
@@ -48,6 +51,20 @@ def sweep(args, cwd=None):
     return subprocess.run(SWEEP + args, capture_output=True, text=True, cwd=cwd, timeout=240)
 
 
+def sweep_in_process(args, cwd):
+    """experiments/sweep's own entry (ncube.runner.main, which the script calls) run here in
+    `cwd`, as a completed process: a refusal at validation without a Python started for each
+    name (the script itself runs in the other cases)."""
+    out, err, before = io.StringIO(), io.StringIO(), os.getcwd()
+    os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = runner.main(args)
+    finally:
+        os.chdir(before)
+    return subprocess.CompletedProcess(args, code, out.getvalue(), err.getvalue())
+
+
 def refused_names(work):
     for i, name in enumerate(["a;touch PWNED-n", "$(touch PWNED-n)", "`touch PWNED-n`", "a b",
                               "a'b", 'a"b', "a\nb", "../up", ".hidden", "", "a{rule}b",
@@ -57,7 +74,8 @@ def refused_names(work):
         (folder / "s.yaml").write_text(f"name: {name!r}\ngrid: {{scene: [scene0], R: [1]}}\n"
                                        .replace("\n", "\n", 1) if "\n" not in name else
                                        'name: "a\\nb"\ngrid: {scene: [scene0], R: [1]}\n')
-        done = sweep([str(folder / "s.yaml"), "--results", str(folder / "results")], cwd=folder)
+        run = sweep if i == 0 else sweep_in_process
+        done = run([str(folder / "s.yaml"), "--results", str(folder / "results")], cwd=folder)
         lines = done.stderr.strip().splitlines()
         check(done.returncode == 2 and len(lines) == 1 and "key 'name'" in lines[0]
               and not (folder / "results").exists(),
@@ -75,7 +93,7 @@ def hostile_paths(work, safe_base):
     (folder / "study.yaml").write_text(
         "name: hostile-paths\nmeasure: total_seconds\n"
         "options: {iterations: 1, samples: 4}\n"
-        "grid: {scene: ['my scene $(x).json'], R: [1, 2]}\n")
+        "grid: {scene: ['my scene $(x).json'], R: [1]}\n")   # one cell: each is a job
     results_dir = work / hostile(work, "out", newline=False)
     # The tool itself in a hostile folder (a clone's path is the user's too): the rules' command
     # lines hold the repository's path.
@@ -96,7 +114,7 @@ def hostile_paths(work, safe_base):
                                            str(results_dir), "--cores", "2"],
                           capture_output=True, text=True, timeout=240)
     cells = sorted((results_dir / "cells").glob("*.json"))
-    check(done.returncode == 0 and len(cells) == 2
+    check(done.returncode == 0 and len(cells) == 1
           and (results_dir / "sweeps" / "hostile-paths" / "cells.csv").exists(),
           f"a sweep tool, sweep file, scene and results folder in hostile paths run locally (exit {done.returncode}: "
           f"{done.stderr.strip()[-300:]})")
@@ -109,7 +127,7 @@ def hostile_paths(work, safe_base):
     cluster_results = Path(safe_base) / "r ' {rule} %j ; & | ( ) < > * ? ~ #"
     done = sweep([str(folder / "study.yaml"), "--results", str(cluster_results)] + local_submit)
     cells = sorted((cluster_results / "cells").glob("*.json"))
-    check(done.returncode == 0 and len(cells) == 2,
+    check(done.returncode == 0 and len(cells) == 1,
           f"through a cluster submit command, a results path with the other syntax runs "
           f"(exit {done.returncode}: {done.stderr.strip()[-300:]})")
     check(not pwned(work), f"nothing in the paths ran: {pwned(work)}")
@@ -148,6 +166,23 @@ def submit_line(work):
                          capture_output=True, text=True)
     check(f"PYTHONPATH={ROOT / 'analysis'}" in env.stdout.splitlines(),
           "the status command's PYTHONPATH is one word")
+    # The job script: the sweep's template (its path from the repository, hostile too), filled
+    # in by Snakemake's formatting, run by sh with exec replaced by a function that prints
+    # PYTHONPATH and its arguments; ncube.cluster_job finds the cell in its properties line.
+    results_dir.mkdir()
+    runner.write_job_script(results_dir, results_dir / "plan.json")
+    template = (results_dir / runner.SLURM_JOB_SCRIPT).read_text()
+    script = results_dir / "job ' $x.sh"
+    script.write_text(template.format(properties=json.dumps(
+        {"rule": "cell", "output": ["cells/scene0-R1.json"], "wildcards": {"name": "scene0-R1"}})))
+    printed = subprocess.run(["bash", "-c", 'exec() { printf "%s\\0" "$PYTHONPATH" "$@"; }; '
+                              'source "$0"', str(script)], capture_output=True, text=True, cwd=work)
+    check(printed.stdout.split("\0")[:-1] == [str(ROOT / "analysis"), "/usr/bin/python3", "-m",
+                                             "ncube.cluster_job", str(script), "plan.json"],
+          f"the job script hands ncube.cluster_job its own path and the plan, whole "
+          f"({printed.stdout.split(chr(0))[:6]}, {printed.stderr.strip()[:200]})")
+    check(cluster_job.cell_file(script) == "cells/scene0-R1.json",
+          "ncube.cluster_job reads the cell from the job script's properties")
     check(not pwned(work), "the submit line ran nothing")
 
 

@@ -13,7 +13,11 @@ here on their own.
 * a varying node count (scene2, R = 1, 2, 4, 8, V = 0; R=1 out of memory, R=8 failed by a
   wrapper of ./simulate): time_vs_R, speedup and efficiency against R=2, the smallest node
   count that ran, named in the legend; the failed cell in the table and the plot; the progress
-  line and Snakemake's log instead of its messages."""
+  line and Snakemake's log instead of its messages.
+
+Both sweeps run in one command into one results folder (one Snakemake; the sweep tool takes
+several sweep files), each checked on its own cells; the earlier names' rerun is the --verbose
+run."""
 import json
 import os
 import subprocess
@@ -24,7 +28,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
 from ncube import plotting, summary  # noqa: E402
-from ncube.sweep import Sweep  # noqa: E402
+from ncube.sweep import Sweep, load  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
 SIMULATE = os.environ["NCUBE_SIMULATE"]
@@ -42,10 +46,14 @@ def run_sweep(*args, env=None):
                           timeout=240, env=env)
 
 
-def figures(results_dir):
-    """{file: (platform stem, R, V, status, seconds per iteration or None)} of every result."""
+def figures(results_dir, sweep_file):
+    """{file: (platform stem, R, V, status, seconds per iteration or None)} of every result of
+    the sweep's cells."""
     found = {}
+    own = {cell.file for cell in load(sweep_file).cells}
     for path in sorted((results_dir / "cells").glob("*.json")):
+        if f"cells/{path.name}" not in own:
+            continue
         result = json.loads(path.read_text())
         platform = Path(result["provenance"]["platform"]["file"]).stem
         found[f"cells/{path.name}"] = (platform, result["config"]["R"], result["config"]["V"],
@@ -102,21 +110,31 @@ def distinct_styles(name, axes):
           f"{name}: the legend is outside the axes, right of them")
 
 
-def test_fixed_nodes(work):
+def run_both(work):
+    """The two sweeps in one command (the varying one's R=8 failed by a wrapper of ./simulate)."""
     (work / "fixed.yaml").write_text(
         "description: on 4 nodes, which R/V split is fastest for scene2, and on the CM-5?\n"
         "options: {scene: scene2, iterations: 1}\n"
         "grid:\n  platform: [ncube2, cm5]\n"
         "  split: [{R: 1, V: 3}, {R: 2, V: 1}, {R: 4, V: 0}]\n")
-    results_dir = work / "fixed-res"
-    done = run_sweep(work / "fixed.yaml", "--results", results_dir, "--verbose")
-    check(done.returncode == 0, f"the fixed-node sweep runs ({done.returncode}"
-                                + (f": {done.stderr[-300:]})" if done.returncode else ")"))
-    if done.returncode != 0:
+    (work / "varying.yaml").write_text(
+        "options: {scene: scene2, iterations: 1}\ngrid: {R: [1, 2, 4, 8], V: [0]}\n")
+    wrapper = work / "simulate-fails-R8"
+    wrapper.write_text(f'#!/bin/sh\ncase " $* " in *" --R 8 "*) echo "simulate: broken for the '
+                       f'test" >&2; exit 4;; esac\nexec {SIMULATE} "$@"\n')
+    wrapper.chmod(0o755)
+    return run_sweep(work / "fixed.yaml", work / "varying.yaml", "--results", work / "res",
+                     env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+
+
+def test_fixed_nodes(work, done):
+    results_dir = work / "res"
+    check((results_dir / "sweeps" / "fixed" / "cells.csv").exists(),
+          f"the fixed-node sweep runs to its complete table ({done.returncode}: "
+          f"{done.stderr[-300:]})")
+    if not (results_dir / "sweeps" / "fixed" / "cells.csv").exists():
         return
-    check("Building DAG" in done.stderr and "cells done" not in done.stdout,
-          "--verbose: Snakemake's messages instead of the progress line")
-    found = figures(results_dir)
+    found = figures(results_dir, work / "fixed.yaml")
     check(len(found) == 6 and sum(f.endswith(f"-cm5-{f[-17:-5]}.json") for f in found) == 3 and
           all("-cm5-" not in f for f, v in found.items() if v[0] == "ncube2"),
           f"cell files are named with the platform when it is not the default ({sorted(found)})")
@@ -186,13 +204,15 @@ def test_fixed_nodes(work):
 def test_earlier_names(work):
     """A results folder of the earlier naming (<scene>-R<R>-V<V>-<id>.json) goes on: its
     results are renamed, not run again (docs/sweeps.md, "A cell's identity")."""
-    results_dir = work / "fixed-res"
+    results_dir = work / "res"
     renamed = {}
     for path in sorted((results_dir / "cells").glob("*-cm5-*.json")):
         legacy = path.with_name(path.name.replace("-cm5-", "-"))
         renamed[path] = path.read_bytes()
         path.rename(legacy)
-    done = run_sweep(work / "fixed.yaml", "--results", results_dir)
+    done = run_sweep(work / "fixed.yaml", "--results", results_dir, "--verbose")
+    check("Building DAG" in done.stderr and "cells done" not in done.stdout,
+          "--verbose: Snakemake's messages instead of the progress line")
     check(len(renamed) == 3 and done.returncode == 0 and "0 to run" in done.stdout and
           "3 result file(s) of an earlier naming renamed" in done.stderr and
           all(p.exists() and p.read_bytes() == b for p, b in renamed.items()) and
@@ -201,16 +221,8 @@ def test_earlier_names(work):
           f"({done.stdout.splitlines()[:1]})")
 
 
-def test_varying_nodes(work):
-    (work / "varying.yaml").write_text(
-        "options: {scene: scene2, iterations: 1}\ngrid: {R: [1, 2, 4, 8], V: [0]}\n")
-    wrapper = work / "simulate-fails-R8"
-    wrapper.write_text(f'#!/bin/sh\ncase " $* " in *" --R 8 "*) echo "simulate: broken for the '
-                       f'test" >&2; exit 4;; esac\nexec {SIMULATE} "$@"\n')
-    wrapper.chmod(0o755)
-    results_dir = work / "varying-res"
-    done = run_sweep(work / "varying.yaml", "--results", results_dir,
-                     env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+def test_varying_nodes(work, done):
+    results_dir = work / "res"
     check(done.returncode == 4, f"a failed cell: exit 4 ({done.returncode})")
     # The terminal: a progress line, no Snakemake scheduling; all of it in the log.
     check("cells done" in done.stdout and "Building DAG" not in done.stdout + done.stderr and
@@ -218,7 +230,7 @@ def test_varying_nodes(work):
           "the terminal shows the progress and the failed cell's message, not Snakemake's")
     log = results_dir / "logs" / "snakemake.log"
     check(log.exists() and "Building DAG" in log.read_text(), "Snakemake's output is in its log")
-    found = figures(results_dir)
+    found = figures(results_dir, work / "varying.yaml")
     times = {v[1]: v[4] for v in found.values()}
     check(sorted(times) == [1, 2, 4] and times[1] is None and None not in (times[2], times[4]),
           f"R=1 out of memory, R=2 and R=4 ran, R=8 failed ({times})")
@@ -271,9 +283,10 @@ def test_messages():
 def main():
     test_messages()
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-summary-test-") as folder:
-        test_fixed_nodes(Path(folder))
-        test_earlier_names(Path(folder))
-        test_varying_nodes(Path(folder))
+        done = run_both(Path(folder))
+        test_fixed_nodes(Path(folder), done)
+        test_varying_nodes(Path(folder), done)
+        test_earlier_names(Path(folder))   # last: it runs the fixed sweep alone
     print(f"sweep_summary_test: {len(failures)} failure(s)")
     return 1 if failures else 0
 

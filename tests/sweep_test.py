@@ -3,6 +3,8 @@
 on the local cores, results that do not belong to their cell run again, an interrupted sweep
 resumes without losing a finished cell and leaves no simulation running, and the path a
 cluster takes (Snakemake's generic cluster mode with a submit command that runs here)."""
+import contextlib
+import io
 import json
 import os
 import signal
@@ -15,7 +17,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import options, results, simulate, sweep  # noqa: E402
+from ncube import options, results, runner, simulate, sweep  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
 failures = []
@@ -30,6 +32,17 @@ def check(condition, what):
 def run_sweep(*args, timeout=240):
     return subprocess.run(SWEEP + [str(a) for a in args], capture_output=True, text=True,
                           timeout=timeout)
+
+
+def check_in_process(*args):
+    """experiments/sweep's own entry (ncube.runner.main, which the script calls after choosing
+    its Python) run here, as a completed process: its exit code, what it printed. A refusal
+    reads the sweep file and asks ./simulate, as the script does, without a Python started and
+    its modules imported for each case (run_sweep covers the script itself)."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = runner.main([str(a) for a in args])
+    return subprocess.CompletedProcess(args, code, out.getvalue(), err.getvalue())
 
 
 def processes_mentioning(text):
@@ -78,7 +91,7 @@ def test_validation(work):
         document["cells"][1].update(change)
         path = work / "bad.json"
         path.write_text(json.dumps(document))
-        done = run_sweep(path, "--results", work / "never", "--check")
+        done = check_in_process(path, "--results", work / "never", "--check")
         # a cell's place: "cells[2]" where a name is checked as written (ncube.sweep_keys)
         check(done.returncode == 2 and str(path) in done.stderr and
               ("cell 2" in done.stderr or "cells[2]" in done.stderr)
@@ -196,7 +209,9 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
     environment = dict(os.environ, NCUBE_TEST_PAUSE=",".join(f"{point}:{cell.file}" for point, cell
                                                              in pauses.items()),
                        NCUBE_TEST_PAUSE_DIR=str(signals_dir))
-    process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir)],
+    # A job per pause held at once, and one more core for the others to run meanwhile.
+    process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir),
+                                        "--cores", str(max(2, len(pauses) + 1))],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                env=environment)
     deadline = time.monotonic() + 240
@@ -230,15 +245,16 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell runs about 10 s on one host thread: its simulation is running when the
-    # quick cell's job reaches its pause.
+    # The slow cell runs seconds on one host thread: its simulation is running when the quick
+    # cells' jobs reach their pauses.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 400, samples: 64}]\n")
+        "        {scene: scene1, R: 1, iterations: 400, samples: 64},\n"
+        "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
     results_dir = work / "killed"
     loaded = sweep.load(work / "kill.yaml")
-    quick, slow = loaded.cells
+    quick, slow, earlier = loaded.cells
     seen = {}
 
     def before_stop():
@@ -251,10 +267,13 @@ def test_kill_and_resume(work):
         locks.mkdir(parents=True, exist_ok=True)
         (locks / "9.output.lock").write_text(str(results_dir / slow.file) + "\n")
 
-    # Stopped at the worst instant for the quick cell: its verified file has its final name
-    # but its job has not exited, so Snakemake has not recorded it (marked incomplete, a
-    # failed job's output). On a cluster this is a job cancelled after its file appeared.
-    reached = stopped_sweep(work / "kill.yaml", results_dir, {"written": quick, "started": slow},
+    # One stop at three instants, one per cell. The worst for the quick cell: its verified
+    # file has its final name but its job has not exited, so Snakemake has not recorded it
+    # (marked incomplete, a failed job's output); on a cluster this is a job cancelled after its
+    # file appeared. A moment earlier for the other quick cell: its result verified under its
+    # temporary name, not yet given its final name.
+    reached = stopped_sweep(work / "kill.yaml", results_dir,
+                            {"written": quick, "started": slow, "verified": earlier},
                             work / "kill-signals", before_stop)
     check(reached and (results_dir / quick.file).exists() and seen["running"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
@@ -265,18 +284,24 @@ def test_kill_and_resume(work):
     check(not (results_dir / slow.file).exists() and
           not list((results_dir / "cells").glob("*.running")),
           "the interrupted cell has no result file and no temporary one")
+    check(reached and not [p for p in (results_dir / "cells").iterdir()
+                           if p.name.startswith(Path(earlier.file).stem)],
+          "a cell stopped before its file got its name leaves no file at all")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
-    # The next run finishes the interrupted cell only.
+    # The next run finishes the interrupted cells only.
     done = run_sweep(work / "kill.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
-    check("1 with a finished result file" in done.stdout and "1 to run" in done.stdout,
+    check("1 with a finished result file" in done.stdout and "2 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
     check(file_state(results_dir / quick.file) == kept and not jobs_run(results_dir, quick),
           "the finished cell is kept (no job for it; same file, time and bytes)")
     check(jobs_run(results_dir, slow) and
           results.mismatch(results.read(results_dir / slow.file), slow) is None,
           "the interrupted cell is done after the resume")
+    check(jobs_run(results_dir, earlier) and
+          results.mismatch(results.read(results_dir / earlier.file), earlier) is None,
+          "the cell stopped before its file got its name runs again on the resume")
     # A job started for a finished cell (a scheduler starting it twice) does not run it.
     again = subprocess.run([sys.executable, "-m", "ncube.run_cell", "plan.json", quick.file],
                            cwd=results_dir, capture_output=True, text=True, timeout=60,
@@ -284,21 +309,6 @@ def test_kill_and_resume(work):
     check(again.returncode == 0 and "not run again" in again.stderr and
           file_state(results_dir / quick.file) == kept,
           f"a cell's job leaves a finished result alone ({again.stderr.strip()[:120]})")
-
-    # Stopped a moment earlier: the result verified under its temporary name, not yet given
-    # its final name. Nothing is left that could pass for done, and the cell runs again.
-    (work / "quick.yaml").write_text(
-        "measure: total_seconds\ncells: [{scene: scene0, R: 1, iterations: 1, samples: 4}]\n")
-    results_dir = work / "killed-earlier"
-    reached = stopped_sweep(work / "quick.yaml", results_dir, {"verified": quick},
-                            work / "earlier-signals")
-    check(reached and not (results_dir / quick.file).exists() and
-          not list((results_dir / "cells").glob("*")),
-          "a cell stopped before its file got its name leaves no file at all")
-    done = run_sweep(work / "quick.yaml", "--results", results_dir)
-    check(done.returncode == 0 and jobs_run(results_dir, quick) and
-          results.mismatch(results.read(results_dir / quick.file), quick) is None,
-          "that cell runs again on the resume")
 
 
 def test_reproduce_check(work):
@@ -312,8 +322,9 @@ def test_reproduce_check(work):
 
 
 def test_cluster_mode(work):
+    # One cell: each job in this mode runs a Snakemake of its own (seconds); one shows the path.
     (work / "cluster.yaml").write_text(
-        "options: {iterations: 1, samples: 4}\ngrid: {scene: [scene0], R: [1, 4]}\n")
+        "options: {iterations: 1, samples: 4}\ngrid: {scene: [scene0], R: [1]}\n")
     results_dir = work / "cluster"
     submit = f"bash {ROOT / 'tests' / 'sweep_local_submit.sh'}"
     done = run_sweep(work / "cluster.yaml", "--results", results_dir, "--cluster", submit,

@@ -9,12 +9,14 @@ peak resident sizes measured with /usr/bin/time -f %M on the Release build (Nove
   scene0, R=16 V=63, ncube2-d10.json (1,024)     117 MB
   scene0, R=8 V=63, ncube2-d13.json (8,192)      229 MB
 and the 2 GB a prediction sweep's 8,192-node cell of a large scene takes. The
-request is that bound with a margin: a base (the job runs a Snakemake and ncube.run_cell too) and a quarter MB per platform node (about eight
+request is that bound with a margin: a base (ncube.run_cell beside ./simulate, and what a
+job's own Snakemake took before the sweep's job script ran the cell without one) and a quarter MB per platform node (about eight
 times the measured growth, which also covers larger scenes' elements), rounded up to 64 MB."""
 import math
 
-BASE_MB = 384              # the job's Snakemake (~120 MB), run_cell, ./simulate's 55 MB base,
-                           # with a margin (at 192 MB, 2 cells of the Slurm test failed in 1 of 3 runs)
+BASE_MB = 384              # run_cell, ./simulate's 55 MB base, and the ~120 MB a job's own
+                           # Snakemake took (at 192 MB, 2 cells of the Slurm test failed in 1 of 3
+                           # runs then): kept as margin
 PER_NODE_MB = 0.25         # 8,192 nodes -> 2 GB, the largest cell measured
 BASE_MINUTES = 10          # a cell of the paper's sweeps takes 1-60 s
 NODES_PER_MINUTE = 128     # 8,192 nodes: about an hour more

@@ -15,12 +15,12 @@ legend sits outside the axes. Series are named by the scene's label (unique per 
 ncube.summary.scene_labels) and the keys that vary. Deterministic output (no dates in the
 PNGs)."""
 import io
-import json
 
 import matplotlib
 
-from . import options as opts
 from . import page
+from .series import (CONFIGURATION, OTHER_KEYS, SERIES,
+                     hashable as _hashable, series_label, shown, varied)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -34,18 +34,6 @@ def save(fig, path):
     plt.close(fig)
     return page.write(path, picture.getvalue())   # the output rule, one line on refusal
 
-
-# What makes a cell's configuration, beside R: a line joins only cells equal in all of these.
-# The scene is its file (two files may share a scene name); its label names it in the legend
-# and comes first, so that series sort by what the legend shows.
-CONFIGURATION = (["scene_label", "V"] + [name for name in opts.OPTIONS if name not in ("R", "V")] +
-                 ["platform", "cost_model", "cfg", "scene_file"])
-OTHER_KEYS = CONFIGURATION[2:-1]   # named in the legend when they vary between the series
-# The keys of a series when the node count is fixed: all but R and V (the configuration).
-# (The scene's label is unique per file, so it stands for the file.)
-SERIES = ["scene_label"] + OTHER_KEYS
-# How a key is named in a table's header or a sentence.
-KEY_NAMES = {"scene_label": "scene"}
 
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">", "p", "h", "*", "d", "8", "H"]
 NOT_RUN = {"out_of_memory": "out of memory", "failed": "failed", "missing": "failed"}
@@ -61,30 +49,6 @@ def styles(count):
     else:
         colours = [colormaps["turbo"](k / (count - 1)) for k in range(count)]
     return [(colours[k], MARKERS[k % len(MARKERS)]) for k in range(count)]
-
-
-def _hashable(value):
-    return json.dumps(value, sort_keys=True) if isinstance(value, (dict, list)) else value
-
-
-def shown(key, value):
-    """A key's value as a label shows it: a platform or cost model by its file's stem."""
-    if key in ("platform", "cost_model") and isinstance(value, str):
-        for suffix in (".json", ".xml"):
-            value = value.removesuffix(suffix)
-    return value
-
-
-def varied(table, keys):
-    """The keys of `keys` whose value differs between the cells of `table`."""
-    return [k for k in keys if len({_hashable(row.get(k)) for row in table}) > 1]
-
-
-def series_label(row, keys):
-    """A series named by the scene's label and `keys` (those that vary): "scene2, platform=cm5"."""
-    parts = [str(row["scene_label"])] if "scene_label" in keys or not keys else []
-    parts += [f"{k}={shown(k, row.get(k))}" for k in keys if k not in ("scene_label", "scene_file")]
-    return ", ".join(parts) or str(row["scene_label"])
 
 
 def _series(table, y):

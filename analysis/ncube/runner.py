@@ -14,9 +14,11 @@ ones are stopped with their simulations and start again. A failure ends with one
 saying what happened and what to do, and an exit code (ncube.outcome, docs/sweeps.md); the last
 line names the tables this run wrote."""
 import argparse
+import base64
 import json
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -167,10 +169,56 @@ def slurm_arguments(results_dir):
               f"--output={shell_words.template_word(log)}")
     status = (f"env PYTHONPATH={shell_words.template_word(paths.ANALYSIS)} "
               "/usr/bin/python3 -m ncube.slurm_status")
-    return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel"]
+    return ["--cluster", submit, "--cluster-status", status, "--cluster-cancel", "scancel",
+            "--jobscript", str(results_dir / SLURM_JOB_SCRIPT)]
+
+
+SLURM_JOB_SCRIPT = Path("slurm_job.sh")
+SNAKEMAKE_INCOMPLETE = Path(".snakemake") / "incomplete"   # Snakemake's own marks
+
+
+def forget_ended_jobs(results_dir, pending):
+    """Snakemake marks a cluster job's outputs incomplete with the job's id, and its next run
+    resumes that job instead of submitting the cell again (snakemake/persistence.py, started:
+    one file per output, named by the output's path in URL-safe base64, holding
+    {"external_jobid": ...}): right while the job still runs (a sweep killed with kill -9),
+    wrong once it has ended, when the cell would be reported failed again without running (a
+    job killed over its memory or its time). The marks of the cells to run whose Slurm job has
+    ended go, so that the same command runs those cells again."""
+    folder = Path(results_dir) / SNAKEMAKE_INCOMPLETE
+    if not folder.is_dir():
+        return
+    for cell in pending:
+        files = [cell.file] + ([cell.trace_file] if cell.trace else [])
+        marks = [folder / base64.urlsafe_b64encode(f.encode()).decode() for f in files]
+        jobs = set()
+        for mark in marks:
+            try:
+                jobs.add(str(json.loads(mark.read_text()).get("external_jobid") or ""))
+            except (OSError, ValueError, AttributeError):
+                continue
+        running = [job for job in jobs if job and
+                   (slurm_status.state(job.split(";")[0]) or ("",))[0] in slurm_status.RUNNING]
+        if not running:
+            for mark in marks:
+                mark.unlink(missing_ok=True)
+
+
+def write_job_script(results_dir, plan):
+    """The template of each cell's Slurm job script (Snakemake's --jobscript, which fills in
+    {properties}: the job's rule and output): ncube.cluster_job runs the cell on the node, as
+    the rule's command does, where Snakemake's own template starts a Snakemake in every job
+    (seconds and about 100 MB each). sbatch starts the job in the results folder (--chdir); the
+    status command, not the script's exit code alone, tells Snakemake how it ended."""
+    text = ("#!/bin/sh\n# properties = {properties}\n"
+            f"PYTHONPATH={shell_words.template_word(paths.ANALYSIS)} exec /usr/bin/python3 -m "
+            f"ncube.cluster_job \"$0\" "
+            f"{shell_words.template_word(Path(plan).relative_to(results_dir))}\n")
+    output_file.write(Path(results_dir) / SLURM_JOB_SCRIPT, text)
 
 
 SNAKEMAKE_LOG = Path("logs") / "snakemake.log"
+SNAKEMAKE_LOCKS = Path(".snakemake") / "locks"   # Snakemake's own, in its working folder
 
 
 def run_snakemake(command, results_dir=None, pending=(), verbose=True):
@@ -225,12 +273,10 @@ def run_snakemake(command, results_dir=None, pending=(), verbose=True):
         # A Snakemake stopped in the middle of a job's ending (or killed after the grace) can
         # leave its lock behind, and the next run would refuse the folder. The lock is this
         # run's own (no other sweep holds the folder while this one runs: hold_folder), so it
-        # goes.
-        try:
-            subprocess.run(command + ["--unlock"], stdout=subprocess.DEVNULL,
-                           stderr=subprocess.DEVNULL, timeout=120, check=False)
-        except (OSError, subprocess.SubprocessError):
-            pass
+        # goes, as Snakemake's --unlock removes it (its locks folder, snakemake/persistence.py,
+        # cleanup_locks) without a second Snakemake started for it (seconds after a Ctrl-C).
+        if results_dir is not None:
+            shutil.rmtree(Path(results_dir) / SNAKEMAKE_LOCKS, ignore_errors=True)
         raise outcome.Interrupted(signum)
 
     signal.signal(signal.SIGINT, stop)
@@ -396,6 +442,9 @@ def run(argv=None):
             outcome.say(f"{len(pending)} cells to run, and {missing}; nothing run")
             return outcome.BAD_INPUT
         plan = write_plan(sweeps, results_dir, pending, forced)
+        if args.slurm:
+            write_job_script(results_dir, plan)
+            forget_ended_jobs(results_dir, pending)
     except OSError as e:
         code = not_written(e, results_dir)
         outcome.final_line(None, [])

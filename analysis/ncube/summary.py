@@ -19,7 +19,7 @@ import sys
 from pathlib import Path, PurePath
 
 from . import options as opts
-from . import input_file, output_file, paths, results
+from . import input_file, output_file, paths, results, series
 from .sweep import Sweep, protect_plan_inputs
 
 COLUMNS = (["sweep", "cell", "scene", "scene_label", "scene_file", "R", "V", "nodes"] +
@@ -172,9 +172,8 @@ PLOTS = ("by_configuration.png", "time_vs_R.png", "speedup.png", "efficiency.png
 
 def bar_names(table):
     """{cell id: the scene's label, every other key that varies, R and V}."""
-    from . import plotting
-    keys = plotting.varied(table, plotting.SERIES)
-    return {row["cell"]: plotting.series_label(row, keys) + f" R={row['R']} V={row['V']}"
+    keys = series.varied(table, series.SERIES)
+    return {row["cell"]: series.series_label(row, keys) + f" R={row['R']} V={row['V']}"
             for row in table}
 
 
@@ -187,14 +186,13 @@ def answer(table):
     """(series keys, [row]): each row {series, R, V, nodes, status, value, ratio, best, file},
     the series in the order of the sweep's cells, within one the cells that ran by the measure,
     then those out of memory, then the failed; ratio is the value over the series' best."""
-    from . import plotting
-    keys = plotting.varied(table, plotting.SERIES)
-    series = {}
+    keys = series.varied(table, series.SERIES)
+    groups = {}
     for row in table:
-        series.setdefault(plotting.series_label(row, keys) if keys else "", []).append(row)
+        groups.setdefault(series.series_label(row, keys) if keys else "", []).append(row)
     order = {"ok": 0, "out_of_memory": 1}
     rows = []
-    for name, members in series.items():
+    for name, members in groups.items():
         members = sorted(members, key=lambda r: (order.get(r["status"], 2),
                                                  r["value"] if r["value"] is not None else 0,
                                                  r["R"], r["V"]))
@@ -206,7 +204,7 @@ def answer(table):
                          "value": value,
                          "ratio": value / best if value is not None and best else None,
                          "best": k == 0 and value is not None, "file": row["file"],
-                         "keys": {key: plotting.shown(key, row.get(key)) for key in keys}})
+                         "keys": {key: series.shown(key, row.get(key)) for key in keys}})
     return keys, rows
 
 
@@ -220,7 +218,6 @@ def _seconds(value):
 def headline(sweep, table, keys, rows):
     """The sentences that answer the sweep's question: the fastest configuration of each
     series, the next one and by how much; whether the fastest is the same in every series."""
-    from . import plotting
     label = MEASURE_TEXT[sweep.measure]
     iterations = {row.get("iterations") for row in table}
     nodes = fixed_nodes(table)
@@ -253,7 +250,7 @@ def headline(sweep, table, keys, rows):
         same = len(set(winners.values())) == 1
         lines.append(("The same configuration is fastest for every " if same else
                       "The fastest configuration differs between the values of ")
-                     + ", ".join(plotting.KEY_NAMES.get(k, k) for k in keys) + "."
+                     + ", ".join(series.KEY_NAMES.get(k, k) for k in keys) + "."
                      + _one_factor(rows, winners))
     return lines
 
@@ -278,11 +275,10 @@ def _one_factor(rows, winners):
 
 def answer_text(sweep, table):
     """The terminal's and summary.md's table, plain text, the headline first."""
-    from . import plotting
     keys, rows = answer(table)
     columns = [*keys, "R", "V"] + ([] if fixed_nodes(table) is not None else ["nodes"]) + \
               ["status", MEASURE_TEXT[sweep.measure], "x best", ""]
-    columns = [plotting.KEY_NAMES.get(c, c) for c in columns]
+    columns = [series.KEY_NAMES.get(c, c) for c in columns]
     body = []
     for row in rows:
         body.append([str(row["keys"][k]) for k in keys] + [str(row["R"]), str(row["V"])] +
@@ -303,11 +299,10 @@ def answer_text(sweep, table):
 
 def write_answer(sweep, table, folder, figures):
     """summary.csv and summary.md beside cells.csv (through the output rule)."""
-    from . import plotting
     keys, rows = answer(table)
     out = io.StringIO(newline="")
     writer = csv.writer(out)
-    writer.writerow([plotting.KEY_NAMES.get(k, k) for k in keys] + ["R", "V", "nodes", "status", "measure", "value", "x_best", "best",
+    writer.writerow([series.KEY_NAMES.get(k, k) for k in keys] + ["R", "V", "nodes", "status", "measure", "value", "x_best", "best",
                      "file"])
     for row in rows:
         writer.writerow([row["keys"][k] for k in keys] +
