@@ -57,6 +57,7 @@ from pathlib import Path
 root, scratch = Path(sys.argv[1]), Path(sys.argv[2])
 sys.path.insert(0, str(root / "analysis"))
 import claims_hemicube as ch
+from ncube import accuracy
 text = (scratch / "section-1.md").read_text()
 problems = []
 cells = scratch / "results" / "claims" / "hemicube"
@@ -100,10 +101,8 @@ for r in rows:
     recorded = result["config"].get("hemicube_back_faces")
     if recorded != (r["method"][2] if r["method"][2] == "pass" else None):
         problems.append(f"{stem}: records hemicube_back_faces {recorded!r}")
-    out = subprocess.run([sys.executable, str(root / "analysis/ncube/accuracy.py"), str(cells / f"{stem}.ply"),
-                          str(root / "analysis/reference" / f"{r['scene']}.json"), "--json", str(scratch / "a.json")],
-                         capture_output=True, text=True)
-    a = json.loads((scratch / "a.json").read_text())
+    # accuracy.py's measures, in this process (its command line and --json: accuracy_test).
+    a = accuracy.accuracy(cells / f"{stem}.ply", root / "analysis/reference" / f"{r['scene']}.json")
     for key in ("element_rms", "patch_rms", "patch_max"):
         if a[key] != r[key]:
             problems.append(f"{stem}: {key} {r[key]} against accuracy.py's {a[key]}")

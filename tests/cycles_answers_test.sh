@@ -84,18 +84,15 @@ y, se = json.load(open(sys.argv[1]))["patches"][0][8:10]
 print(f"thin strip: {y:.4f} +- {se:.4f} (exact 1; with the centre samples about 0.875)")
 sys.exit(0 if abs(y - 1) <= 4 * se + 1e-3 else 1)
 PY
-# The same command gives the same answers but for the seconds (Cycles is deterministic for a seed).
-run "$scratch/squares.json" --out "$scratch/again.json" $camera --samples 64 --seeds 4 --threads 1 &&
-  /usr/bin/python3 - "$scratch/squares-answer.json" "$scratch/again.json" <<'PY' || fail "a second run differs"
-import json, sys
-a, b = (json.load(open(p)) for p in sys.argv[1:3])
-for d in (a, b):
-    for k in ("host_seconds", "camera_seconds", "threads"):
-        d.pop(k)
-sys.exit(0 if a == b else 1)
-PY
+# The same command gives the same answers but for the seconds and the thread count (Cycles is
+# deterministic for a seed): shown by the Cornell box below, committed from one thread and
+# reproduced here with two (experiments/claims/cycles-answers' default), not by a second render
+# of the squares.
 # The committed Cornell box answers reproduce from their command (experiments/claims/cycles-answers)
 # but for the seconds and the thread count: about a minute.
+grep -q '"threads": 1,' "$root/analysis/cycles/cornell-box.json" &&
+  grep -q '^threads=2$' "$root/experiments/claims/cycles-answers" ||
+  fail "the committed Cornell box answers and their command no longer differ in threads (1 and 2): the threads' check above needs a run of its own"
 "$root/experiments/claims/cycles-answers" --out "$scratch/committed" cornell-box > /dev/null 2>&1 &&
   /usr/bin/python3 - "$root/analysis/cycles/cornell-box.json" "$scratch/committed/cornell-box.json" <<'PY' ||
 import json, sys

@@ -82,7 +82,10 @@ sys.exit(0 if abs(mean / exact - 1) < 0.005 else "squares: the receiver %.6f, ex
 ' "$scratch/squares-ref.json" || fail "the opposed squares are not Howell's value"
 
 # The committed references: recorded, unchanged, of today's scene files, and this build's
-# fingerprint the recorded one.
+# fingerprint the recorded one. The fingerprint is run once for the four uses below (this
+# check, the references' command's record, the two checks of its output): kept in the scratch
+# folder under the program file's SHA-256 (reference_manifest.py, NCUBE_FINGERPRINT_CACHE).
+export NCUBE_FINGERPRINT_CACHE=$scratch/fingerprints
 /usr/bin/python3 "$root/analysis/ncube/reference_manifest.py" check "$root/analysis/reference" \
   --build "$(dirname "$solver")" --scenes-dir "$root/scenes" || fail "the committed references (above)"
 # The references' own command, small (K = 4, --refine 1): it writes the reference and its

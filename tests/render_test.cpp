@@ -354,5 +354,35 @@ TEST(WritePng, UnwritablePathThrowsAndLeavesNoFile) {
   EXPECT_NE(access((path + ".tmp").c_str(), F_OK), 0);
 }
 
+// solution_exposure draws the picture in bands of rows: its exposure is the whole frame's,
+// exactly (the same visible samples), with non-emitters in view and with emitters alone.
+TEST(Render, BandedExposureIsTheWholeFramesExposure) {
+  Scene scene;
+  scene.patches = {square(Vec3(0, 0, -5), 1.0, 3, 3), square(Vec3(0.8, 0.5, -4), 0.6, 2, 2),
+                   square(Vec3(-0.5, -0.9, -6), 1.5, 4, 1), square(Vec3(0.2, 1.4, -3), 0.3)};
+  scene.patches[1].emission = Rgb(4.0);
+  scene.build_elements();
+  std::vector<Rgb> radiosity;   // a different radiosity for every element
+  for (std::size_t k = 0; k < scene.elements.size(); ++k)
+    radiosity.push_back(Rgb(4.0 / double(1 + k), 0.2 * double(k % 5), 0.1 + 0.05 * double(k)));
+  const std::vector<PatchSolution> solution = uniform_solution(scene, radiosity);
+  const auto whole = [&](const Scene& sc, const std::vector<PatchSolution>& sol, int w, int h) {
+    FrameShare frame(sc, straight_camera(), w, h, RowShare::whole(h));
+    RenderCounts counts;
+    std::vector<int> all(sc.patches.size());
+    for (std::size_t p = 0; p < all.size(); ++p) all[p] = int(p);
+    for (const RenderElement& e : render_elements(sc, sol, all)) frame.draw(e, counts);
+    return frame_exposure(frame);
+  };
+  for (const auto& [w, h] : {std::pair{100, 150}, std::pair{37, 64}, std::pair{50, 65}})
+    EXPECT_EQ(solution_exposure(scene, straight_camera(), solution, w, h), whole(scene, solution, w, h))
+        << w << " x " << h;
+  // Emitters alone in view: the exposure comes from all visible samples.
+  for (Patch& patch : scene.patches) patch.emission = Rgb(2.0);
+  scene.build_elements();
+  EXPECT_EQ(solution_exposure(scene, straight_camera(), solution, 100, 150),
+            whole(scene, solution, 100, 150));
+}
+
 }  // namespace
 }  // namespace ncube

@@ -1,5 +1,6 @@
 #include "render/rasterizer.h"
 
+#include <algorithm>
 #include <numeric>
 
 #include "render/exposure.h"
@@ -50,10 +51,31 @@ Image render_solution(const Scene& scene, const Camera& camera,
 
 double solution_exposure(const Scene& scene, const Camera& camera,
                          const std::vector<PatchSolution>& solution, int width, int height) {
-  FrameShare frame(scene, camera, width, height, RowShare::whole(height), false);
-  RenderCounts counts;
-  draw_all(scene, solution, frame, counts);
-  return frame_exposure(frame);
+  // Drawn in bands of rows, not as one frame: the whole frame of an 800 x 600 picture is
+  // 4.3 M samples, about 180 MB written for one number (a second of CPU, most of it page
+  // faults, in every --mesh run). A picture's parts are the whole picture sample for sample
+  // (frame_share.h), so the visible samples' luminances, and the percentile, are the same.
+  constexpr int kBandRows = 64;
+  std::vector<int> all_patches(scene.patches.size());
+  std::iota(all_patches.begin(), all_patches.end(), 0);
+  const std::vector<RenderElement> elements = render_elements(scene, solution, all_patches);
+  const int bands = std::max(1, (height + kBandRows - 1) / kBandRows);
+  // The non-emitters' luminances and the emitters': the selection over all visible samples
+  // is used only when no non-emitter shows (exposure_scale), and is then the emitters'.
+  std::vector<double> lit, emitting;
+  lit.reserve(std::size_t(width) * std::size_t(height) * kSamplesPerAxis * kSamplesPerAxis);
+  for (int part = 0; part < bands; ++part) {
+    FrameShare frame(scene, camera, width, height,
+                     RowShare{height, bands, part, RowPartition::kBlocks}, false);
+    RenderCounts counts;
+    for (const RenderElement& element : elements) frame.draw(element, counts);
+    frame.for_each_visible([&lit, &emitting](const Rgb& radiosity, bool emitter) {
+      (emitter ? emitting : lit).push_back(luminance(radiosity));
+    });
+  }
+  const LuminanceSelection non_emitters = select_locally(lit);
+  return exposure_scale(non_emitters,
+                        non_emitters.count > 0 ? non_emitters : select_locally(emitting));
 }
 
 }  // namespace ncube

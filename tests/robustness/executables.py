@@ -65,7 +65,7 @@ COVERED = {
     "analysis/headline.py": "open: 45 what-if runs of ./simulate (about 5 minutes), run by hand; its committed analysis/headline.json is checked by openings_test.py",
     "platforms/generate.py": ["page_scripts_test.sh", "platforms_reproducible_test.sh"],
     "platforms/machines/generate.py": ["page_scripts_test.sh", "machines_platforms_test.sh"],
-    "scenes/generate.py": ["page_scripts_test.sh", "scenes_reproducible_test.sh"],
+    "scenes/generate.py": ["scenes_reproducible_test.sh"],
     # Benchmarks: minutes of runs, outside the suite.
     "bench/hypercube_scale.py": "open: a benchmark (minutes), run by hand",
     "bench/long_runs.py": ["embree_floor_test.sh", "simgrid_replay_test.sh"],

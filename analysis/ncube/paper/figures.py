@@ -1,15 +1,25 @@
 """The paper report's figures (analysis/figures/*.png): paper against simulation per table, the
 scatter of every cell, the per-node timeline."""
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.patches  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-import matplotlib.ticker  # noqa: E402
-import numpy as np  # noqa: E402
+from .cells import read_json, table_scenes, unique_cells
+from .text import seconds
 
-from .cells import read_json, table_scenes, unique_cells  # noqa: E402
-from .text import seconds  # noqa: E402
+matplotlib = plt = None   # loaded by _load() on the first figure
+
+
+def _load():
+    """matplotlib on the first figure drawn, not on import: report.py refusing its inputs does
+    not pay its second of start-up."""
+    global matplotlib, plt
+    if plt is None:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.patches  # noqa: F401
+        import matplotlib.pyplot
+        import matplotlib.ticker  # noqa: F401
+        plt = matplotlib.pyplot
+
 
 FIGURES = None   # set by analysis/report.py: the folder the figures go to
 
@@ -18,6 +28,7 @@ SCENE_COLOURS = {"scene0": "tab:purple", "scene1": "tab:blue", "scene2": "tab:or
 
 
 def save(fig, name):
+    _load()
     FIGURES.mkdir(parents=True, exist_ok=True)
     # No "Software"/date metadata: the same inputs give the same bytes.
     fig.savefig(FIGURES / name, dpi=110, bbox_inches="tight", metadata={"Software": None})
@@ -47,6 +58,7 @@ def plot_paper_and_sim(ax, cells, x_of):
 
 
 def figure_time_vs_R(inputs):
+    _load()
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
     for ax, number, V in ((axes[0], 1, 0), (axes[1], 2, 3)):
         cells = [c for c in inputs.cells if c.table == number]
@@ -61,6 +73,7 @@ def figure_time_vs_R(inputs):
 
 
 def figure_time_vs_V(inputs):
+    _load()
     fig, ax = plt.subplots(figsize=(7, 4.8))
     cells = [c for c in inputs.cells if c.table == 3]
     # V+1 on a log2 axis: the nodes per group double from column to column (V=0 fits).
@@ -102,6 +115,7 @@ def config_label(c):
 
 
 def figure_table4(inputs):
+    _load()
     scenes = table_scenes(inputs.paper["tables"][3])
     fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4.8))
     for ax, scene in zip(axes, scenes):
@@ -113,6 +127,7 @@ def figure_table4(inputs):
 
 
 def figure_table5(inputs):
+    _load()
     fig, ax = plt.subplots(figsize=(9, 4.8))
     cells = [c for c in inputs.cells if c.table == 5]
     bars(ax, cells, [f"R={c.R}\nV={c.V}\nT={c.T}" for c in cells])
@@ -130,6 +145,7 @@ def figure_table5(inputs):
 
 
 def figure_scatter(inputs):
+    _load()
     cells = [c for c in unique_cells(inputs.cells) if c.error is not None]
     fig, ax = plt.subplots(figsize=(6, 6))
     for scene in sorted({c.scene for c in cells}):
@@ -159,6 +175,7 @@ GANTT_COLOURS = {"compute": "tab:green", "overhead": "tab:red", "wait": "lightgr
 
 
 def figure_gantt(inputs):
+    _load()
     cell = inputs.timeline
     trace_path = inputs.results_dir / cell.trace_file if cell.trace_file else None
     if cell.result is None or trace_path is None or not trace_path.exists():
