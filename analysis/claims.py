@@ -393,7 +393,9 @@ def truths_cost_section(truths):
                    f"bake, {cycles.get('samples_per_texel')} samples a texel (the biased "
                    "estimator: docs/accuracy.md)")
             command = ("experiments/claims/cycles-answers " + scene) if cycles.get("estimator") == "camera" \
-                else f"analysis/cycles/cycles_answers.py {scene} --estimator bake"
+                else (f"analysis/cycles/cycles_answers.py {scene} --out analysis/cycles/{scene}.json "
+                      f"--estimator bake --samples {cycles.get('samples_per_texel')} "
+                      f"--texels {cycles.get('texels_a_side')} --seeds {cycles['seeds']}")
             out.append(f"| {scene} | Cycles (`analysis/cycles/{scene}.json`: {how}, "
                        f"{cycles['seeds']} seeds) | `{command}` | {seconds(cycles['host_seconds'])} | — |")
     return out + [""]
