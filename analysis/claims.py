@@ -717,7 +717,7 @@ def opening(found):
             f"\"much more accurate\" {counted(seen)}",
             "paired 95 % bootstrap intervals over patches, widened by Cycles' standard errors, "
             "in the table of the decisions; exploratory as above"))
-    equal = next((rows for label, rows in found if label == "At equal simulated time" and rows
+    equal = next((rows for label, rows in found if label == "At equal cost" and rows
                   and "verdict" in rows[0]), [])
     equal = [r for r in equal if r["verdict"] != "—"]
     if equal:

@@ -697,8 +697,8 @@ def like_for_like_markdown(data, figure_name="figures/claims_cost.png"):
                        f"{error_figure(r['b_own_patch'])} | {mark('b_own_patch')} | "
                        f"{error_figure(r['b_own_element'])} |")
         out.append("")
-    out += ["#### At equal simulated time", "",
-            "For each of the rays' cells, the hemicube's best error among its cells whose "
+    out += ["**At equal cost**", "",
+            "At equal simulated time: for each of the rays' cells, the hemicube's best error among its cells whose "
             "simulated time is at most the rays' cell's (the times not like for like: the rays "
             "under the paper's program, the hemicube under `shooters`):", "",
             "| scene | measure | rays | its error | hemicube's best within its time | its error "

@@ -182,7 +182,7 @@ def value(cell):
 
 
 # The opening's sentence at equal simulated time against that table (its judged rows).
-equal_rows = [r for r in table_after(body, "#### At equal simulated time") if r[-1] != "—"]
+equal_rows = [r for r in table_after(body, "**At equal cost**") if r[-1] != "—"]
 equal_said = next((t for t in said.values() if t.startswith("At equal simulated time")), "")
 if equal_rows:
     check(equal_said, "the opening says nothing at equal simulated time")
