@@ -697,8 +697,10 @@ def like_for_like_markdown(data, figure_name="figures/claims_cost.png"):
                        f"{error_figure(r['b_own_patch'])} | {mark('b_own_patch')} | "
                        f"{error_figure(r['b_own_element'])} |")
         out.append("")
-    out += ["**At equal cost.** For each of the rays' cells, the hemicube's best error among its "
-            "cells whose simulated time is at most the rays' cell's:", "",
+    out += ["**At equal cost**", "",
+            "At equal simulated time: for each of the rays' cells, the hemicube's best error among its cells whose "
+            "simulated time is at most the rays' cell's (the times not like for like: the rays "
+            "under the paper's program, the hemicube under `shooters`):", "",
             "| scene | measure | rays | its error | hemicube's best within its time | its error "
             "| ratio [95 %] | verdict |", "|---|---|---|---:|---|---:|---:|---|"]
     for key in ("b_own_element", "b_own_patch", "a_patch"):
@@ -741,10 +743,11 @@ def like_for_like_markdown(data, figure_name="figures/claims_cost.png"):
     return "\n".join(out) + "\n"
 
 
-def section(results_root, jobs=2, sweep_file=SWEEP, claims_sweep_files=None, cost_figure_path=COST_FIGURE):
-    """The markdown sections (claims.py includes them in analysis/claims.md): each method
-    against its own structure and against cost (the claims' cells, claims_sweep_files or
-    experiments/claims/accuracy*.yaml; its figure written to cost_figure_path), then the back
+def sections(results_root, jobs=2, sweep_file=SWEEP, claims_sweep_files=None, cost_figure_path=COST_FIGURE):
+    """The two markdown sections (claims.py puts the first right after the first claim's
+    receiver-centred table, the second at the page's end): each method against its own
+    structure and against cost (the claims' cells, claims_sweep_files or
+    experiments/claims/accuracy*.yaml; its figure written to cost_figure_path), and the back
     faces and the light below the ceiling (runs what is missing under
     results_root/claims/hemicube/)."""
     data = like_for_like(results_root, jobs, claims_sweep_files)
@@ -752,8 +755,14 @@ def section(results_root, jobs=2, sweep_file=SWEEP, claims_sweep_files=None, cos
         cost_figure(data, cost_figure_path)
     rows, references, cycles, scenes = measure(results_root, jobs, sweep_file)
     files, choices = claims_back_faces()
-    return (like_for_like_markdown(data) + "\n" +
+    return (like_for_like_markdown(data),
             markdown(rows, references, cycles, scenes, files, choices, sweep_file))
+
+
+def section(results_root, jobs=2, sweep_file=SWEEP, claims_sweep_files=None, cost_figure_path=COST_FIGURE):
+    """Both sections of sections(), one after the other (this script's own output)."""
+    own, choices = sections(results_root, jobs, sweep_file, claims_sweep_files, cost_figure_path)
+    return own + "\n" + choices
 
 
 @page.refusing_outputs("claims_hemicube.py")

@@ -9,7 +9,10 @@ converged cell's total error (a) is as large as that of the solution without lig
 (B = E, its row in the structures' table); every balance row adds up (absorbed, leaves the
 scene, the structure's own loss and the rest make the emitted power); claim 2's fixed error is a
 third of B = E's and the paper's first shot lies above it and its band; and claim 2's decision
-gives the ratios its tables give.
+gives the ratios its tables give. The opening: its claim-1 sentence is on each method's own
+structure and its counts (holds, undecided, does not hold, intervals below 1) and ratio ranges
+are the ones worked out here from the printed decision rows' intervals; the same for its
+sentence on the total error against Cycles and its sentence at equal simulated time.
 
 usage: claims_sentences_test.py SOURCE_DIR"""
 import re
@@ -78,8 +81,9 @@ for scene, measure, placement, n, ratio, low, high, said, direction in rows:
               f"claims.md {scene} {measure} {placement} N={n}: says '{direction}' of [{low}, {high}]")
 # After the page's opening (its own numbered sentences: tests/openings_test.py checks them).
 body = page.split("<!-- end of the opening -->", 1)[-1]
-sentences = [line[3:] for line in body.splitlines() if line.startswith("1. ")]
-check(len(sentences) == 1, "one first-claim sentence in analysis/claims.md")
+MARK = "Against the receiver-centred structure (not deciding): "
+sentences = [line[len(MARK):] for line in body.splitlines() if line.startswith(MARK)]
+check(len(sentences) == 1, "one sentence on the receiver-centred table in analysis/claims.md")
 if rows and sentences:
     said = sentences[0].split(" (")[0]
     verdicts = {claim_one.verdict(float(r[4]), float(r[5]), float("inf") if r[6] == "∞" else float(r[6]))
@@ -91,6 +95,71 @@ if rows and sentences:
               f"no row holds, the sentence says {said}")
     else:
         check(said == "**holds only in part**", f"some rows hold, the sentence says {said}")
+
+# ---- The opening against the decisions it rests on (worked out here from the printed rows).
+opening = page.split("<!-- end of the opening -->", 1)[0]
+said = {int(m.group(1)): m.group(2) for m in re.finditer(r"^(\d)\. (.*)$", opening, re.M)}
+check(3 <= len(said) <= 6, f"the opening has {len(said)} sentences, not three to six")
+own_row = re.compile(r"^\| (\S+) \| (\(b\) own structure, element|\(b\) own structure, patch|"
+                     r"\(a\) patch vs Cycles) \| (centre|elements) N=(\d+) \| M=\d+: [^|]+ \| [^|]+ \| "
+                     r"([0-9.]+) \[([0-9.]+), ([0-9.]+|∞)\] \| ([a-z ]+) \|$")
+own = [m.groups() for m in map(own_row.match, body.splitlines()) if m]
+check(own, "the decisions against each method's own structure")
+
+
+def interval_of(r):
+    return float(r[4]), float(r[5]), float("inf") if r[6] == "∞" else float(r[6])
+
+
+for r in own:
+    ratio, low, high = interval_of(r)
+    if min(abs(ratio - T), abs(low - T), abs(high - T)) > 0.005:
+        check(r[7] == claim_one.verdict(ratio, low, high),
+              f"own structure {r[:4]}: says '{r[7]}' of {ratio} [{low}, {high}]")
+
+
+def counts_said(text, rows):
+    """The sentence's "holds in H of N, is undecided in U, does not hold in D" and its count of
+    intervals below 1 against the rows' verdicts worked out from their intervals."""
+    verdicts = [claim_one.verdict(*interval_of(r)) for r in rows]
+    below = sum(1 for r in rows if interval_of(r)[2] < 1)
+    expected = (f"holds in {verdicts.count('holds')} of {len(rows)}, is undecided in "
+                f"{verdicts.count('undecided')}, does not hold in {verdicts.count('does not hold')}")
+    check(expected in text, f"opening: '{expected}' not in: {text[:300]}")
+    if below:
+        check(f"interval below 1, in {below})" in text, f"opening: {below} below 1 not in: {text[:300]}")
+    else:
+        check("interval below 1" not in text, f"opening: intervals below 1 said, none in the rows")
+
+
+def ratio_span_said(text, rows, placement, words):
+    values = [interval_of(r)[0] for r in rows if r[2] == placement]
+    if not values:
+        return
+    low, high = min(values), max(values)
+    m = re.search(re.escape(words) + r" ([0-9.]+)x(?: to ([0-9.]+)x)?", text)
+    check(m, f"opening: no ratio {words}: {text[:300]}")
+    if m:
+        got_low, got_high = float(m.group(1)), float(m.group(2) or m.group(1))
+        check(abs(got_low - low) < 0.006 and abs(got_high - high) < 0.006,
+              f"opening {words}: {got_low} to {got_high}, the rows {low} to {high}")
+
+
+b_rows = [r for r in own if r[1].startswith("(b)")]
+a_rows = [r for r in own if r[1].startswith("(a)")]
+first = next((t for t in said.values() if t.startswith("Claim 1")), "")
+check("its own structure" in first, f"the opening's claim 1 is not on the own structure: {first[:200]}")
+if b_rows and first:
+    counts_said(first.split("; the hemicube's (b)")[0], b_rows)
+    ratio_span_said(first, b_rows, "centre", "the hemicube's (b) is")
+    ratio_span_said(first, b_rows, "elements", "method's at the shooter's centre and")
+user = next((t for t in said.values() if t.startswith("What a user sees")), "")
+if a_rows:
+    check(user, "the opening says nothing of the total error against Cycles")
+    counts_said(user.split("\"much more accurate\"")[-1], a_rows)
+    ratio_span_said(user, a_rows, "centre", "the hemicube at the shooter's centre is")
+    ratio_span_said(user, a_rows, "elements", "from each shooter element")
+
 
 # ---- The page's other generated sentences against their tables.
 def table_after(text, heading):
@@ -111,6 +180,14 @@ def value(cell):
     m = re.match(r"(-?[0-9.]+)", cell)
     return float(m.group(1)) if m else None
 
+
+# The opening's sentence at equal simulated time against that table (its judged rows).
+equal_rows = [r for r in table_after(body, "**At equal cost**") if r[-1] != "—"]
+equal_said = next((t for t in said.values() if t.startswith("At equal simulated time")), "")
+if equal_rows:
+    check(equal_said, "the opening says nothing at equal simulated time")
+    parsed = [re.match(r"([0-9.]+) \[([0-9.]+), ([0-9.]+|∞)\]", r[6]).groups() for r in equal_rows]
+    counts_said(equal_said, [(None,) * 4 + p for p in parsed])
 
 structures = table_after(body, "## The structure's own error (c)")
 check(structures, "the structures' table")

@@ -26,13 +26,18 @@ python=/usr/bin/python3
 
 # compare.py: a reference and Cycles' answers of two patches (rows: patch, area, ..., Y, se).
 cat > "$work/make.py" <<'PY'
-import json, sys
+import hashlib, json, sys
 work = sys.argv[1]
 def write(name, reference, cycles):
     json.dump(reference, open(f"{work}/{name}-ref.json", "w"))
     json.dump(cycles, open(f"{work}/{name}-cyc.json", "w"))
-ref = {"scene_sha256": "ab", "scene_file": "s.json", "patch_luminance": [1.0, 2.0]}
-cyc = {"scene_sha256": "ab", "scene_file": "s.json",
+# The scene the pair names (compare.py reads which patches emit from it): two patches, none emits.
+square = {"vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], "reflectance": [0.5, 0.5, 0.5]}
+text = json.dumps({"name": "s", "patches": [square, square]}).encode()
+open(f"{work}/s.json", "wb").write(text)
+sha = "sha256:" + hashlib.sha256(text).hexdigest()
+ref = {"scene_sha256": sha, "scene_file": "s.json", "patch_luminance": [1.0, 2.0]}
+cyc = {"scene_sha256": sha, "scene_file": "s.json",
        "patches": [[0, 1.0, 0, 0, 0, 0, 0, 0, 1.1, 0.01], [1, 2.0, 0, 0, 0, 0, 0, 0, 2.0, 0.02]]}
 write("good", ref, cyc)
 write("nan", ref, {**cyc, "patches": [cyc["patches"][0][:8] + [float("nan"), 0.01], cyc["patches"][1]]})

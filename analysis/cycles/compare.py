@@ -4,11 +4,15 @@
 usage: analysis/cycles/compare.py REFERENCE.json CYCLES.json [--per-patch] [--json OUT]
 
 REFERENCE.json: build/reference_solution's file; CYCLES.json: analysis/cycles/cycles_answers.py's
-of the same scene file (the SHA-256 must match). Per patch with Y_cycles > 0: the relative
-difference d_p = (Y_ref - Y_cycles) / Y_cycles of the luminances (Rec. 709) and its standard
-error from Cycles' s_p = se_Y / Y_cycles. Printed: the area-weighted RMS of d_p (as
-analysis/ncube/accuracy.py's patch RMS), the largest |d_p| and its patch, and the largest
-|d_p| / s_p. Exit codes: 0, 2 (unreadable files or not the same scene)."""
+of the same scene file (the SHA-256 must match). Per patch, on the one error measure
+(analysis/ncube/error_measure.py, docs/accuracy.md "The error measure"): the symmetric relative
+difference d_p = (Y_ref - Y_cycles) / ((Y_ref + Y_cycles) / 2) of the luminances (Rec. 709),
+Cycles' answer the truth, a patch darker than the dark floor (1 % of the mean of the patches
+that do not emit; which emit, from the scene file the reference names) left out; and d_p's
+standard error from Cycles', s_p = |dd_p/dY_cycles| se_Y = 4 Y_ref se_Y / (Y_ref + Y_cycles)^2.
+Printed: the area-weighted RMS of d_p (as analysis/ncube/accuracy.py's patch RMS), the largest
+|d_p| and its patch, and the largest |d_p| / s_p. Exit codes: 0, 2 (unreadable files, not the
+same scene, or the reference's scene file not found)."""
 import argparse
 import json
 import math
@@ -16,7 +20,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from ncube import input_file  # noqa: E402
+from ncube import accuracy, error_measure, input_file  # noqa: E402
 from ncube import page  # noqa: E402
 
 LIMIT = 64 << 20
@@ -30,7 +34,9 @@ def number(value, where, low=0.0):
     return float(value)
 
 
-def compare(reference, cycles, names=("reference file", "Cycles answer file")):
+def compare(reference, cycles, names=("reference file", "Cycles answer file"), emits=None):
+    """The reference's patches against Cycles' on the one error measure; emits: per patch
+    whether it emits (None: no patch emits)."""
     if reference["scene_sha256"] != cycles["scene_sha256"]:
         raise ValueError(f"not the same scene file: reference {reference['scene_file']} "
                          f"{reference['scene_sha256'][:12]}, Cycles {cycles['scene_file']} "
@@ -38,26 +44,39 @@ def compare(reference, cycles, names=("reference file", "Cycles answer file")):
     rows = cycles["patches"]
     if len(rows) != len(reference["patch_luminance"]):
         raise ValueError("not the same number of patches")
-    per_patch, weighted, area_total = [], 0.0, 0.0
-    for index, (row, y_ref) in enumerate(zip(rows, reference["patch_luminance"])):
-        y_ref = number(y_ref, f"{names[0]}: patch_luminance[{index}]")
+    if emits is not None and len(emits) != len(rows):
+        raise ValueError(f"the scene file has {len(emits)} patches, the answers {len(rows)}")
+    patch, area, y_ref, y, se = [], [], [], [], []
+    for index, (row, value) in enumerate(zip(rows, reference["patch_luminance"])):
+        y_ref.append(number(value, f"{names[0]}: patch_luminance[{index}]"))
         where = f"{names[1]}: patches[{index}]"
-        patch, area = row[0], number(row[1], f"{where}: area")
-        y, se = number(row[8], f"{where}: luminance"), number(row[9], f"{where}: standard error")
-        if area == 0.0:
+        patch.append(row[0])
+        area.append(number(row[1], f"{where}: area"))
+        y.append(number(row[8], f"{where}: luminance"))
+        se.append(number(row[9], f"{where}: standard error"))
+        if area[-1] == 0.0:
             raise ValueError(f"{where}: area: 0 (a patch has an area)")
-        if y <= 0.0:
-            continue
-        d, s = (y_ref - y) / y, se / y
-        per_patch.append({"patch": patch, "area": area, "reference": y_ref, "cycles": y,
-                          "difference": d, "cycles_se": s})
-        weighted += area * d * d
-        area_total += area
-    if not per_patch:
+    if not any(v > 0.0 for v in y):
         raise ValueError(f"{names[1]}: no patch with a luminance above 0 (nothing to compare)")
+    emitting = [False] * len(rows) if emits is None else list(emits)
+    floor = error_measure.dark_floor(y, area, emitting)
+    kept = error_measure.kept(y, floor)
+    d = error_measure.difference(y_ref, y)
+    per_patch = []
+    for k in range(len(rows)):
+        if not kept[k]:
+            continue
+        total = y_ref[k] + y[k]
+        s = 4 * y_ref[k] * se[k] / (total * total) if total > 0 else 0.0
+        per_patch.append({"patch": patch[k], "area": area[k], "reference": y_ref[k], "cycles": y[k],
+                          "difference": float(d[k]), "cycles_se": s})
     worst = max(per_patch, key=lambda p: abs(p["difference"]))
-    return {"patch_rms": math.sqrt(weighted / area_total), "patch_max": abs(worst["difference"]),
-            "worst_patch": worst["patch"],
+    area_total = sum(p["area"] for p in per_patch)
+    return {"measure": "error_measure: symmetric relative difference, dark floor "
+                       f"{error_measure.FLOOR:g} of the non-emitting mean",
+            "patch_rms": error_measure.rms(y_ref, y, area, floor),
+            "patch_max": abs(worst["difference"]), "worst_patch": worst["patch"],
+            "left_out_patches": len(rows) - len(per_patch),
             "largest_sigmas": max((abs(p["difference"]) / p["cycles_se"] for p in per_patch
                                    if p["cycles_se"] > 0), default=math.inf),
             "cycles_se_rms": math.sqrt(sum(p["area"] * p["cycles_se"] ** 2 for p in per_patch) / area_total),
@@ -93,9 +112,12 @@ def main(argv=None):
     parser.add_argument("--json")
     args = parser.parse_args(argv)
     try:
-        result = compare(load(args.reference, "reference file"), load(args.cycles, "Cycles answer file"),
-                         (args.reference, args.cycles))
-    except (input_file.InputFileError, ValueError, KeyError, TypeError, IndexError) as e:
+        reference = load(args.reference, "reference file")
+        cycles = load(args.cycles, "Cycles answer file")
+        result = compare(reference, cycles, (args.reference, args.cycles),
+                         accuracy.scene_emits(reference, args.reference))
+    except (input_file.InputFileError, accuracy.AccuracyError, ValueError, KeyError, TypeError,
+            IndexError) as e:
         print(f"compare: {e if not isinstance(e, (KeyError, IndexError)) else 'a field is missing: ' + str(e)}",
               file=sys.stderr)
         return 2
@@ -103,7 +125,8 @@ def main(argv=None):
         page.check_outputs("compare", [args.json], folders_made=False, replace_committed=False)
     print(f"patch RMS {result['patch_rms']:.4f}  largest patch {result['patch_max']:.4f} "
           f"(patch {result['worst_patch']})  largest |d|/se {result['largest_sigmas']:.1f}  "
-          f"Cycles' own se (RMS) {result['cycles_se_rms']:.4f}")
+          f"Cycles' own se (RMS) {result['cycles_se_rms']:.4f}  patches left out (darker than the "
+          f"floor) {result['left_out_patches']}")
     if args.per_patch:
         for p in result["per_patch"]:
             print(f"  patch {p['patch']:4d}  reference {p['reference']:.6g}  Cycles {p['cycles']:.6g}"

@@ -3,8 +3,12 @@ only (docs/accuracy.md, "Deciding the first claim"; tests/claims_sentences_test.
 sentence against its interval).
 
 The claim (the paper's section 6): ray-traced form factors are "much more accurate than the
-hemicube method". Its quantity is the form-factor error (b): a method's RMS relative error
-against the exact solution of the same structure. For a hemicube setting against the paper's
+hemicube method". Its quantity is the form-factor error (b): a method's error on the one error
+measure (analysis/ncube/error_measure.py: the area-weighted RMS of the symmetric relative
+difference (Y - T) / ((Y + T) / 2), items darker than the dark floor left out) against the
+exact solution of its own structure (analysis/ncube/own_structure.py; the receiver-centred one
+for the rays); the same rule decides the total error (a) per patch against Cycles. For a
+hemicube setting against the paper's
 method (its largest M) on one scene and one measure (per element, per patch), the ratio
 q = RMS_hemicube / RMS_rays and its 95 % interval [low, high] (analysis/ncube/error_parts.py)
 decide, against THRESHOLD fixed before the runs:
