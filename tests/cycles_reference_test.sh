@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The committed accuracy references (analysis/reference/<scene>.json) against Blender Cycles'
 # committed answers for the same scene files (analysis/cycles/<scene>.json; docs/accuracy.md,
-# "Against Cycles"), patch by patch, relative luminance differences d_p. No Blender needed.
+# "Against Cycles"), patch by patch: d_p the one error measure's difference of luminance
+# (analysis/ncube/error_measure.py, symmetric, with its dark floor). No Blender needed.
 # The tolerances were fixed before the final answers were looked at, and count Cycles' own
 # standard error se_p: the Cornell box's area-weighted RMS of d_p at most 1 % and every patch
 # within 3 % + 3 se_p; scene0's, fixed the same way, 1.5 % and 5 % + 3 se_p (met since its
