@@ -6,7 +6,6 @@ afterwards and the run's peak memory are checked against the rules."""
 import hashlib
 import json
 import os
-import resource
 import signal
 import socket
 import stat
@@ -527,16 +526,13 @@ def execute(argv, env, cwd, timeout, memory_bytes):
     RSS in MiB, seconds, stdout text). A run hangs when still running at `timeout`, or as soon
     as it has waited a second for the other end of a FIFO (a hang costs about 2 s, not the
     timeout)."""
-    def limits():
-        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
-        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-        resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 30, 1 << 30))
-        os.setsid()
-
+    # The limits set by util-linux's prlimit, which then execs the program: no preexec_fn, so
+    # the run is spawned without a fork of this process (run.py's note).
+    limits = ["/usr/bin/prlimit", f"--as={memory_bytes}", "--core=0", f"--fsize={1 << 30}", "--"]
     start = time.monotonic()
-    process = subprocess.Popen(argv, cwd=cwd, env={**os.environ, **env}, stdin=subprocess.DEVNULL,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                               preexec_fn=limits)
+    process = subprocess.Popen([*limits, *argv], cwd=cwd, env={**os.environ, **env},
+                               stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, start_new_session=True)
     chunks, printed = [], []
     reader = threading.Thread(target=lambda: chunks.append(process.stderr.read()), daemon=True)
     reader.start()
