@@ -8,7 +8,9 @@ study"), keeps each cell's result and mesh under RESULTS/claims/ named after the
 identity (a finished cell is not run again; a changed option or input is another cell), and
 compares each mesh with its scene's reference (analysis/reference/<scene>.json, made by
 experiments/claims/references) by analysis/ncube/accuracy.py. Writes analysis/claims.md and
-analysis/figures/claims_accuracy.png.
+the figures under analysis/figures/ it shows (claims_accuracy.png, claims_pictures.png,
+claims_schemes_speedup.png, claims_cost.png), each where its option (--out, --figure,
+--pictures-figure, --schemes-figure, --cost-figure) says: nothing else is written.
 
   /usr/bin/python3 analysis/claims.py [--results results] [--jobs 2] [--sweeps FILE ...]
 
@@ -255,14 +257,15 @@ def pictures(cells, results, jobs, path):
     return [picture_label(c) for c in cells]
 
 
-def schemes_section(results, jobs=2):
+def schemes_section(results, jobs, figure):
     """The second claim's section (analysis/claims_schemes.py, another part of the study),
-    when that module is there; its cells run `jobs` at once as the first claim's do."""
+    when that module is there; its cells run `jobs` at once as the first claim's do; its
+    speedup curves written to `figure`."""
     try:
         import claims_schemes
     except ImportError:
         return None
-    return claims_schemes.section(results, jobs)
+    return claims_schemes.section(results, jobs, figure=figure)
 
 
 def series_colour(row):
@@ -610,6 +613,12 @@ def main():
     parser.add_argument("--out", type=Path, default=ROOT / "analysis" / "claims.md")
     parser.add_argument("--figure", type=Path,
                         default=ROOT / "analysis" / "figures" / "claims_accuracy.png")
+    parser.add_argument("--cost-figure", type=Path,
+                        default=ROOT / "analysis" / "figures" / "claims_cost.png",
+                        help="the hemicube's section's error against cost")
+    parser.add_argument("--schemes-figure", type=Path,
+                        default=ROOT / "analysis" / "figures" / "claims_schemes_speedup.png",
+                        help="the second claim's section's speedup curves")
     args = parser.parse_args()
     if not args.sweeps:   # nothing to measure: the page would be empty
         page.refuse("claims.py", "--sweeps names no sweep file (the claims' cells are measured "
@@ -642,11 +651,13 @@ def main():
         print(f"claims: {e}", file=sys.stderr)
         return 4
     plot(rows, args.figure)
-    schemes = None if args.no_schemes else schemes_section(args.results.resolve(), args.jobs)
+    schemes = None if args.no_schemes else schemes_section(args.results.resolve(), args.jobs,
+                                                          args.schemes_figure)
     # --- the hemicube's section (analysis/claims_hemicube.py): included whole
     import claims_hemicube
     try:
-        own, hemicube = ("", "") if args.no_hemicube else claims_hemicube.sections(args.results.resolve(), args.jobs)
+        own, hemicube = ("", "") if args.no_hemicube else claims_hemicube.sections(
+            args.results.resolve(), args.jobs, cost_figure_path=args.cost_figure)
     except (claims_hemicube.CellFailed, accuracy.AccuracyError, sweep.SweepError, RuntimeError,
             ValueError) as e:
         print(f"claims: {e}", file=sys.stderr)
@@ -656,7 +667,9 @@ def main():
     body = markdown(rows, truths, decisions, [s.file for s in sweeps], labels, schemes, own) + "\n" + \
         (hemicube.rstrip() + "\n" if hemicube else "")
     page.write(args.out, op.with_opening(body, opening(op.tables(body)), "analysis/claims.py"))
-    written = [args.out, args.figure] + ([args.pictures_figure] if labels else [])
+    written = [args.out, args.figure] + ([args.pictures_figure] if labels else []) + \
+        ([] if args.no_schemes else [args.schemes_figure]) + \
+        ([] if args.no_hemicube else [args.cost_figure])
     print(f"claims: {len(rows)} cells; written: " + ", ".join(str(p) for p in written))
     return 0
 

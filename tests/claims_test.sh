@@ -99,12 +99,31 @@ problems = []
 def check(name, got, expected):
     if got != expected:
         problems.append(f"{name}: got {got!r}, expected {expected!r}")
-# The second claim's section: analysis/claims_schemes.py's section(results) when importable.
-sys.modules["claims_schemes"] = types.SimpleNamespace(section=lambda results, jobs=2: f"from {results}")
-check("schemes section", claims.schemes_section("R"), "from R")
+# The second claim's section: analysis/claims_schemes.py's section(results) when importable,
+# its figure where claims.py's option says.
+sys.modules["claims_schemes"] = types.SimpleNamespace(
+    section=lambda results, jobs=2, figure=None: f"from {results} to {figure}")
+check("schemes section", claims.schemes_section("R", 2, "F"), "from R to F")
 for p in problems:
     print("FAIL:", p)
 sys.exit(1 if problems else 0)
+PY
+# Every figure the committed page shows is an output claims.py takes an option for (its
+# default the committed file): with --out elsewhere no committed figure is written (the cost
+# figure and the speedup curves were written onto the committed ones whatever the options).
+/usr/bin/python3 "$root/tests/robustness/argparse_options.py" "$root/analysis/claims.py" \
+  > "$scratch/options.json" || fail "claims.py's options not read"
+/usr/bin/python3 - "$root" "$scratch/options.json" <<'PY' || failed=1
+import json, re, sys
+from pathlib import Path
+root = Path(sys.argv[1])
+defaults = {str(Path(o["default"]).resolve()) for o in json.loads(Path(sys.argv[2]).read_text())
+            if isinstance(o["default"], str)}
+shown = re.findall(r"\]\((figures/[^)]+\.png)\)", (root / "analysis/claims.md").read_text())
+missing = [f for f in shown if str((root / "analysis" / f).resolve()) not in defaults]
+if not shown or missing:
+    print(f"FAIL: figures the page shows without an option of claims.py: {missing or 'none shown'}")
+    sys.exit(1)
 PY
 [[ $failed == 0 ]] && echo "claims_test: passed"
 exit $failed
