@@ -6,6 +6,7 @@
 #  - analysis/cycles/cycles_answers.py: a scene nested deeply, a NaN vertex (refused before
 #    Blender is looked for);
 #  - claims.py and claims_hemicube.py: --jobs 0; claims.py with --sweeps empty;
+#  - a script whose standard output is closed (compare.py | head -1): exit 141, no traceback;
 #  - experiments/sweep --check without a simulator built (the platform's node count estimated
 #    from its dimension): 1e9, 1e400, 3.5, -1 and "7" refused before any power is computed.
 root=$(cd "$2" && pwd)
@@ -155,6 +156,20 @@ done
 for bad in "--samples 100000" "--texels 100000" "--seeds 1" "--bounces 0" "--threads -1"; do
   expect 2 "${bad%% *}" $python "$answers" "$work/quad.json" --out "$work/a.json" --blender "$work/blender" $bad
 done
+
+# A closed standard output (`| head -1`) ends a script quietly, exit 141, no traceback: compare.py's
+# lines of scene1 into a pipe whose reading end is closed before the script starts.
+rc=$(/usr/bin/python3 - "$compare" "$root" "$work/err" <<'PY'
+import os, subprocess, sys
+compare, root, err = sys.argv[1:]
+read_end, write_end = os.pipe()
+os.close(read_end)
+with open(err, "wb") as stderr:
+    print(subprocess.run(["/usr/bin/python3", compare, "--per-patch", root + "/analysis/reference/scene1.json",
+                          root + "/analysis/cycles/scene1.json"], stdout=write_end, stderr=stderr).returncode)
+PY
+)
+[[ $rc == 141 && ! -s $work/err ]] || fail "compare.py into a closed pipe: exit $rc, $(head -c 300 "$work/err")"
 
 [ "$failed" = 0 ] && echo "python_inputs_test: passed"
 exit "$failed"
