@@ -21,6 +21,31 @@ RATES = ["test_speed", "ray_speed", "blocked_ray_speed", "arithmetic_speed", "ed
          "projection_speed", "raster_speed"]
 
 
+# The allocator build/machine_probe runs with (CMakeLists.txt): gperftools' tcmalloc, as
+# ./simulate, since 2026-11-29. The records before carry no "probe_allocator": their probe ran
+# under glibc's malloc, which mapped and faulted in a hemicube's face buffers anew at every face
+# (4 times ./simulate's time for them at 400 x 400 cells), so their hemicube rates measured a
+# cost the predicted runs never pay. The page's tables are made from the current probe's records.
+PROBE_ALLOCATOR = "tcmalloc"
+
+
+def current(records):
+    """The records whose probe ran with PROBE_ALLOCATOR; the others (earlier probes) are kept
+    in the file and counted on the page, not tabulated."""
+    return [r for r in records if r.get("probe_allocator", "glibc") == PROBE_ALLOCATOR]
+
+
+def earlier_note(records):
+    """One sentence naming the records left out of the tables, or nothing."""
+    left = len(records) - len(current(records))
+    if not left:
+        return ""
+    return ("%d earlier record%s, of probes run under glibc's malloc before the probe was linked "
+            "with ./simulate's allocator (\"The allocator\" below), %s kept in the records file and "
+            "left out of these tables." % (left, "" if left == 1 else "s",
+                                            "is" if left == 1 else "are"))
+
+
 def load(path):
     """Every record of `path` (none when it does not exist); a line that is not a record is a
     SystemExit naming the file and line."""
@@ -103,8 +128,11 @@ def opening(records, tolerance):
     """The page's opening, between its prediction-opening markers: what a user gets, from all
     the records (the rates' spread over probes, each row's worst miss over runs and machines,
     where the bound holds)."""
+    note = earlier_note(records)
+    records = current(records)
     if not records:
-        return "No runs of the prediction recorded yet (`docs/machines/prediction_table.py`).\n"
+        return ("No runs of the prediction recorded yet with the current probe "
+                "(`docs/machines/prediction_table.py`). " + note).rstrip() + "\n"
     bound = round(100 * tolerance)
     machines = sorted({machine_label(r) for r in records})
     rows = spread_rows(records, tolerance)
@@ -141,13 +169,17 @@ def opening(records, tolerance):
                    "before or after; how much of the spread that makes, and how much is the "
                    "model's, is measured below (\"Why the runs spread\")." % (
                        len(records) - len(quiet), len(records)))
+    if note:
+        out.append("* **Earlier probes**: " + note)
     return "\n".join(out) + "\n"
 
 
 def section(records, tolerance):
     """The page's text between its prediction-table markers, from all records."""
+    note = earlier_note(records)
+    records = current(records)
     if not records:
-        return "No runs recorded yet.\n"
+        return ("No runs recorded yet with the current probe. " + note).rstrip() + "\n"
     bound = round(100 * tolerance)
     machines = sorted({machine_label(r) for r in records})
     rows = spread_rows(records, tolerance)
@@ -222,4 +254,6 @@ def section(records, tolerance):
             out.append("| %s | %.0f | %.0f %% | %+.2f ns | %+.2f to %+.2f ns |" % (
                 x["scene"], x["tests_per_ray"], 100 * x["crossing_share"],
                 statistics.median(values), min(values), max(values)))
+    if note:
+        out += ["", note]
     return "\n".join(out).replace("+-", "−") + "\n"

@@ -227,6 +227,7 @@ def one_run(args, work, index):
         "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "cpu": cpu, "machine": ident, "cores": os.cpu_count(), "commit": commit(),
         "repeats": args.repeats, "probed": not args.platform,
+        "probe_allocator": prediction_records.PROBE_ALLOCATOR,
         "load_before": load_before, "load_after": [round(x, 2) for x in os.getloadavg()],
         "wall_seconds": round(time.time() - started, 1), "probe_wall_seconds": round(probe_seconds, 1),
         "rates": platform_rates(platform),
