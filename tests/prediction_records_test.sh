@@ -7,8 +7,11 @@
 #    and in the only run of the second (+15 %), so it does not hold, though its median (+0.5 %
 #    over both, -1.0 % on the first) is well inside; scene2 holds in every run;
 #  - the probe's rates' spread over the probes (largest - least over the median);
-#  - a record of an earlier probe (run under glibc's malloc, no probe_allocator) named and left
-#    out of the tables;
+#  - the host's drift within a run (a second probe's test_speed over the first), in the opening
+#    and the run's row;
+#  - a record of an earlier probe (run under glibc's malloc, no probe_allocator) and one whose
+#    host seconds were measured with each process's repeats in a row, named and left out of
+#    the tables;
 #  - a records file with a line that is not a record: a message naming the file and the line,
 #    a non-zero exit, no table.
 # No timing: the records are made up, the script only reads them (under a second).
@@ -31,9 +34,10 @@ with open(sys.argv[1], "w") as f:
                 for s, m, t in (("cornell-box", cornell, 15), ("scene2", scene2, 830))]
         f.write(json.dumps({"date": "2026-01-01T00:0%dZ" % i, "cpu": "Test CPU", "machine": machine,
                             "cores": 2, "commit": "abc", "repeats": 2, "probed": True,
-                            "probe_allocator": "tcmalloc",
+                            "probe_allocator": "tcmalloc", "measurement": "interleaved",
                             "load_before": [1.5, 1, 1], "load_after": [2.5, 1, 1], "wall_seconds": 100,
-                            "rates": {"test_speed": test}, "rows": rows}) + "\n")
+                            "rates": {"test_speed": test}, "rows": rows,
+                            **({"rates_after": {"test_speed": 4.4e9}} if i == 0 else {})}) + "\n")
     # An earlier probe's record (no probe_allocator: glibc's malloc): counted, not tabulated;
     # in the tables it would make the Cornell box's worst +90 % and the load 9.
     rows = [{"scene": "cornell-box", "kind": "ray-traced", "options": "", "simulated": 1.9,
@@ -41,6 +45,13 @@ with open(sys.argv[1], "w") as f:
              "host_minus_simulated_ns_a_test": 0.1}]
     f.write(json.dumps({"date": "2025-12-31T00:00Z", "cpu": "Test CPU", "machine": "aaaa",
                         "cores": 2, "commit": "old", "repeats": 2, "probed": True,
+                        "load_before": [9, 1, 1], "load_after": [9, 1, 1], "wall_seconds": 100,
+                        "rates": {"test_speed": 1e9}, "rows": rows}) + "\n")
+    # A record of the current probe whose host seconds were measured with each process's
+    # repeats in a row (no "measurement"): counted, not tabulated, likewise.
+    f.write(json.dumps({"date": "2025-12-31T00:01Z", "cpu": "Test CPU", "machine": "aaaa",
+                        "cores": 2, "commit": "old", "repeats": 2, "probed": True,
+                        "probe_allocator": "tcmalloc",
                         "load_before": [9, 1, 1], "load_after": [9, 1, 1], "wall_seconds": 100,
                         "rates": {"test_speed": 1e9}, "rows": rows}) + "\n")
 PY
@@ -60,8 +71,15 @@ has "| \`test_speed\` | Test CPU, id aaaa | 5 | 4.2e+09 | 4e+09 | 4.4e+09 | 9.5 
 grep -qF "it holds in every run for scene2; it does **not** hold for cornell-box." "$tmp/out" \
   || fail "the opening does not say where the bound holds"$'\n'"$(cat "$tmp/out")"
 grep -qF "load average 1.5 to 2.5" "$tmp/out" || fail "the load is not shown"
-grep -qF "1 earlier record, of probes run under glibc's malloc" "$tmp/out" ||
+grep -qF "2 earlier records (1 of probes run under glibc's malloc" "$tmp/out" ||
   fail "the earlier probe's record is not named"
+grep -qF "; 1 whose host seconds were measured with each process's repeats in a row" "$tmp/out" ||
+  fail "the record measured in a row is not named"
+# The host's drift: the first run's second probe 4.4e9 over its first 4.0e9.
+grep -qF "in 1 of the 6 runs): \`test_speed\` moved by +10.0 % to +10.0 %" "$tmp/out" ||
+  fail "the host's drift within a run is not given"$'\n'"$(grep -F drift "$tmp/out")"
+grep -qF "| 2026-01-01T00:00Z | aaaa | abc | 2 | 1.5 → 2.5 | 100 | +10.0 % |" "$tmp/out" ||
+  fail "the run's drift is not in its row"
 
 # A line that is not a record: named, non-zero, no table.
 printf '%s\n' '{"date": "x"}' >> "$tmp/records.jsonl"
@@ -69,6 +87,6 @@ if /usr/bin/python3 "$root/docs/machines/prediction_table.py" --regenerate --no-
      --records "$tmp/records.jsonl" > "$tmp/out2" 2> "$tmp/err"; then
   fail "a records file with a line that is not a record was read"
 fi
-grep -qF "records.jsonl: line 8: not a record" "$tmp/err" || fail "not named: $(cat "$tmp/err")"
+grep -qF "records.jsonl: line 9: not a record" "$tmp/err" || fail "not named: $(cat "$tmp/err")"
 [[ ! -s "$tmp/out2" ]] || fail "a table was printed from a bad records file"
 echo "prediction_records_test: ok"

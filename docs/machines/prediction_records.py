@@ -27,23 +27,37 @@ RATES = ["test_speed", "ray_speed", "blocked_ray_speed", "arithmetic_speed", "ed
 # (4 times ./simulate's time for them at 400 x 400 cells), so their hemicube rates measured a
 # cost the predicted runs never pay. The page's tables are made from the current probe's records.
 PROBE_ALLOCATOR = "tcmalloc"
+# How the host's seconds are measured (prediction_table.py's run_pair): since 2026-11-29 02:52
+# UTC the repeats of the two processes alternate. The records before ran each process's repeats
+# in a row, so that a disturbance of a few seconds could fall on all of one process's repeats
+# and shrink the difference (scene0's hemicube: 0.066 s where the other runs measured 0.18 to
+# 0.19 s, with the probe before and after within 2 %).
+MEASUREMENT = "interleaved"
 
 
 def current(records):
-    """The records whose probe ran with PROBE_ALLOCATOR; the others (earlier probes) are kept
-    in the file and counted on the page, not tabulated."""
-    return [r for r in records if r.get("probe_allocator", "glibc") == PROBE_ALLOCATOR]
+    """The records of the current probe and measurement; the others (earlier runs) are kept in
+    the file and counted on the page, not tabulated."""
+    return [r for r in records if r.get("probe_allocator", "glibc") == PROBE_ALLOCATOR
+            and r.get("measurement", "in a row") == MEASUREMENT]
 
 
 def earlier_note(records):
     """One sentence naming the records left out of the tables, or nothing."""
-    left = len(records) - len(current(records))
-    if not left:
+    glibc = sum(r.get("probe_allocator", "glibc") != PROBE_ALLOCATOR for r in records)
+    in_a_row = len(records) - len(current(records)) - glibc
+    parts = []
+    if glibc:
+        parts.append("%d of probes run under glibc's malloc before the probe was linked with "
+                     "./simulate's allocator (\"The allocator\" below)" % glibc)
+    if in_a_row:
+        parts.append("%d whose host seconds were measured with each process's repeats in a row "
+                     "(\"A quiet guest\" below)" % in_a_row)
+    if not parts:
         return ""
-    return ("%d earlier record%s, of probes run under glibc's malloc before the probe was linked "
-            "with ./simulate's allocator (\"The allocator\" below), %s kept in the records file and "
-            "left out of these tables." % (left, "" if left == 1 else "s",
-                                            "is" if left == 1 else "are"))
+    left = glibc + in_a_row
+    return ("%d earlier record%s (%s) %s kept in the records file and left out of these tables."
+            % (left, "" if left == 1 else "s", "; ".join(parts), "is" if left == 1 else "are"))
 
 
 def load(path):
@@ -98,6 +112,13 @@ def machine_label(record):
 
 def pct(x):
     return ("%+.1f %%" % (100 * x)).replace("-", "−")
+
+
+def drift(record, rate="test_speed"):
+    """How far the host's speed moved within a run: the rate of the probe made after the
+    table over the one the prediction used, minus 1 (None for a record without it)."""
+    after, before = record.get("rates_after", {}).get(rate), record.get("rates", {}).get(rate)
+    return after / before - 1 if after and before else None
 
 
 def spread_rows(records, tolerance):
@@ -169,6 +190,16 @@ def opening(records, tolerance):
                    "before or after; how much of the spread that makes, and how much is the "
                    "model's, is measured below (\"Why the runs spread\")." % (
                        len(records) - len(quiet), len(records)))
+    drifts = [(drift(r, rate), rate) for r in records for rate in RATES if drift(r, rate) is not None]
+    if drifts:
+        tests = [d for d, rate in drifts if rate == "test_speed"]
+        largest = max(drifts, key=lambda x: abs(x[0]))
+        out.append("* **The host's own drift within a run** (a second probe after the table, "
+                   "over the one the prediction used, in %d of the %d runs): `test_speed` moved by "
+                   "%s to %s, the largest move of any rate %s (`%s`); a miss of that size can be "
+                   "the host's, not the model's." % (
+                       len(tests), len(records), pct(min(tests)), pct(max(tests)),
+                       pct(largest[0]), largest[1]))
     if note:
         out.append("* **Earlier probes**: " + note)
     return "\n".join(out) + "\n"
@@ -233,14 +264,18 @@ def section(records, tolerance):
                 100 * (max(values) - min(values)) / med))
     keys = [k for k, _ in rows]
     out += ["", "Each run (load average, 1 minute, before → after; `--repeats` processes a "
-            "measurement, the least taken; the binary's commit):", "",
-            "| date (UTC) | machine | commit | repeats | load | wall s | " + " | ".join(keys) + " |",
-            "|---|---|---|--:|--:|--:|" + "--:|" * len(keys)]
+            "measurement, the least taken; the binary's commit; host drift: `test_speed` of a second "
+            "probe after the table over the first, minus 1):", "",
+            "| date (UTC) | machine | commit | repeats | load | wall s | host drift | " +
+            " | ".join(keys) + " |",
+            "|---|---|---|--:|--:|--:|--:|" + "--:|" * len(keys)]
     for r in records:
         by = {label(x): pct(miss(x)) for x in r["rows"]}
-        out.append("| %s | %s | %s | %d | %.1f → %.1f | %.0f | %s |" % (
+        moved = drift(r)
+        out.append("| %s | %s | %s | %d | %.1f → %.1f | %.0f | %s | %s |" % (
             r["date"], r["machine"], r["commit"], r["repeats"], r["load_before"][0],
-            r["load_after"][0], r.get("wall_seconds", 0), " | ".join(by.get(k, "") for k in keys)))
+            r["load_after"][0], r.get("wall_seconds", 0), "—" if moved is None else pct(moved),
+            " | ".join(by.get(k, "") for k in keys)))
     last = records[-1]
     ray = [x for x in last["rows"] if x["kind"] == "ray-traced"]
     if ray:

@@ -10,9 +10,12 @@ iterations on that platform, with the host's readable definitions alone on one t
 (--reference-visibility --threads 1): the prediction is the simulated seconds of iterations
 N+1 .. 2N (the difference of the two runs), the measurement the host's CPU seconds of the same
 iterations (the difference of the two processes' CPU time, each the least of N repeats: the
-least is the run least disturbed by the other processes of a shared host). Differences, not
+least is the run least disturbed by the other processes of a shared host; the two processes'
+repeats alternate, so that one disturbance falls on one round of both). Differences, not
 whole runs, because a process also starts, reads its scene, builds its elements and writes its
-result, which no simulated node does.
+result, which no simulated node does. After the table a second probe measures the host again
+(not used for the prediction): the record keeps its rates, and the page gives how far the host's
+own speed moved within each run.
 
 Each of the K runs (default 5; --time-cap S starts none that would end past S seconds) is appended as one record to
 docs/machines/prediction_records.jsonl (docs/machines/prediction_records.py), and the page's
@@ -60,30 +63,36 @@ HEMICUBE_RUNS = [("cornell-box", 40, ["--hemicube-placement", "elements"]),
                  ("scene1", 200, [])]
 
 
-def run(scene, iterations, platform, repeats, out, extra=()):
-    """(simulated seconds, least CPU seconds of `repeats` processes, counts)."""
-    least = None
+def run_pair(scene, n, platform, repeats, work, extra=()):
+    """The runs of n and of 2n iterations, [(simulated seconds, least CPU seconds of `repeats`
+    processes, counts)] for each, their processes alternating (n, 2n, n, 2n, ...): a disturbance
+    of a few seconds falls on one round of both, which their least leaves out, rather than on
+    every repeat of one of them (which made the difference up to 3 times too small)."""
+    least, out = {}, {}
     for _ in range(repeats):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        subprocess.run([SIMULATE, os.path.join(ROOT, "scenes", scene + ".json"), "--R", "1",
-                        "--V", "0", "--iterations", str(iterations), "--reference-visibility",
-                        "--threads", "1", "--platform", platform, "--json", out, "--quiet"] + list(extra),
-                       check=True)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        least = cpu if least is None else min(least, cpu)
-    with open(out, encoding="utf-8") as f:
-        result = json.load(f)
-    return result["simulated_seconds"], least, result["counts"]
+        for iterations in (n, 2 * n):
+            out[iterations] = os.path.join(work, "result-%d.json" % iterations)
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            subprocess.run([SIMULATE, os.path.join(ROOT, "scenes", scene + ".json"), "--R", "1",
+                            "--V", "0", "--iterations", str(iterations), "--reference-visibility",
+                            "--threads", "1", "--platform", platform, "--json", out[iterations],
+                            "--quiet"] + list(extra), check=True)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            least[iterations] = min(least.get(iterations, cpu), cpu)
+    runs = []
+    for iterations in (n, 2 * n):
+        with open(out[iterations], encoding="utf-8") as f:
+            result = json.load(f)
+        runs.append((result["simulated_seconds"], least[iterations], result["counts"]))
+    return runs
 
 
 def measure(platform, repeats):
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        out = os.path.join(work, "result.json")
         for scene, n in SCENES:
-            s1, c1, k1 = run(scene, n, platform, repeats, out)
-            s2, c2, k2 = run(scene, 2 * n, platform, repeats, out)
+            (s1, c1, k1), (s2, c2, k2) = run_pair(scene, n, platform, repeats, work)
             tests = k2["ray_patch_tests"] - k1["ray_patch_tests"]
             rays = k2["rays"] - k1["rays"]
             crossings = k2["plane_crossings"] - k1["plane_crossings"]
@@ -119,11 +128,9 @@ def measure_hemicube(platform, repeats):
     costs = {k: v["value"] for k, v in model["parameters"].items()}
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        out = os.path.join(work, "result.json")
         for scene, n, extra in HEMICUBE_RUNS:
             extra = ["--form-factors", "hemicube"] + extra
-            s1, c1, k1 = run(scene, n, platform, repeats, out, extra)
-            s2, c2, k2 = run(scene, 2 * n, platform, repeats, out, extra)
+            (s1, c1, k1), (s2, c2, k2) = run_pair(scene, n, platform, repeats, work, extra)
             diff = {c: k2.get(c, 0) - k1.get(c, 0) for c in RASTER + PROJECTION}
             raster = hemicube_kind_flops(diff, costs, RASTER)
             projection = hemicube_kind_flops(diff, costs, PROJECTION)
@@ -222,15 +229,25 @@ def one_run(args, work, index):
         probe_seconds = time.time() - t
     rows = measure(platform, args.repeats)
     hemicube_rows = measure_hemicube(platform, args.repeats)
+    # The host probed again after the table (not used for the prediction): how far the host's
+    # own speed moved within the run, which neither the load average nor a thread's CPU time
+    # shows on a guest that reports no steal time (probe.md, "A quiet guest").
+    rates_after = None
+    if not args.platform:
+        after = os.path.join(work, "probed-%d-after.xml" % index)
+        subprocess.run([PROBE, "--out", after], check=True, stdout=subprocess.DEVNULL)
+        rates_after = platform_rates(after)
     cpu, ident = machine()
     record = {
         "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "cpu": cpu, "machine": ident, "cores": os.cpu_count(), "commit": commit(),
         "repeats": args.repeats, "probed": not args.platform,
         "probe_allocator": prediction_records.PROBE_ALLOCATOR,
+        "measurement": prediction_records.MEASUREMENT,
         "load_before": load_before, "load_after": [round(x, 2) for x in os.getloadavg()],
         "wall_seconds": round(time.time() - started, 1), "probe_wall_seconds": round(probe_seconds, 1),
         "rates": platform_rates(platform),
+        **({"rates_after": rates_after} if rates_after else {}),
         "rows": [{"scene": r["scene"], "kind": "ray-traced", "options": "",
                   "simulated": r["simulated"], "host": r["host"],
                   "tests_per_ray": round(r["tests_per_ray"], 2),
