@@ -5,7 +5,8 @@
 //    survey of every key by its type) is refused with one line naming the setting, the value
 //    and the valid range;
 //  - each range's ends and every choice run a small simulation to its end (exit 0): the
-//    table's ranges are proven, not guessed.
+//    table's ranges are proven, not guessed. Each is ./simulate's command run in a forked
+//    child (tools/simulate_command.h), not a new ./simulate process.
 // Each test runs in its own process (ctest), with no Engine yet.
 #include "machine/simgrid_setting_ranges.h"
 
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +26,8 @@
 
 #include "machine/simgrid_platform_file.h"
 #include "machine/simgrid_settings.h"
+#include "tools/simulate_command.h"
+#include "tools/tool_exits.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -177,14 +181,14 @@ TEST(SimgridSettingRanges, APlatformFilesConfigTagsAreChecked) {
 }
 
 // Settings read only with a model, solver or plugin are run with it.
-std::string companion(std::string_view name) {
-  if (name.rfind("bmf/", 0) == 0) return " --cfg=network/solver:bmf --cfg=cpu/solver:bmf";
-  if (name.rfind("plugin/dvfs/", 0) == 0) return " --cfg=plugin:host_dvfs";
-  if (name == "smpi/bw-factor" || name == "smpi/lat-factor") return " --cfg=network/model:SMPI";
-  if (name == "smpi/IB-penalty-factors") return " --cfg=network/model:IB";
-  if (name == "network/TCP-gamma" || name == "network/weight-S") return " --cfg=network/model:LV08";
-  if (name.rfind("tracing/", 0) == 0) return " --cfg=tracing:yes --cfg=tracing/actor:yes";
-  return "";
+std::vector<std::string> companion(std::string_view name) {
+  if (name.rfind("bmf/", 0) == 0) return {"--cfg=network/solver:bmf", "--cfg=cpu/solver:bmf"};
+  if (name.rfind("plugin/dvfs/", 0) == 0) return {"--cfg=plugin:host_dvfs"};
+  if (name == "smpi/bw-factor" || name == "smpi/lat-factor") return {"--cfg=network/model:SMPI"};
+  if (name == "smpi/IB-penalty-factors") return {"--cfg=network/model:IB"};
+  if (name == "network/TCP-gamma" || name == "network/weight-S") return {"--cfg=network/model:LV08"};
+  if (name.rfind("tracing/", 0) == 0) return {"--cfg=tracing:yes", "--cfg=tracing/actor:yes"};
+  return {};
 }
 
 std::string text(double value) {
@@ -220,9 +224,32 @@ std::vector<std::string> ends_of(const SimgridSettingRange& range) {
   }
 }
 
+// ./simulate's command (tools/simulate_command.h) run from `arguments` in a child forked from
+// this process, in `dir`, output to /dev/null and `dir`/run.err: what ./simulate runs, without
+// a new process loading SimGrid and ns-3 for each of the ~190 values (about 0.1 CPU-second
+// each, before main). This process has no Engine yet (unit_main.cpp forks each test before
+// one exists). Returns the child's wait status; a child still running after 60 s is killed.
+int simulate_in_child(const std::filesystem::path& dir, std::vector<std::string> arguments) {
+  std::fflush(nullptr);
+  const pid_t child = fork();
+  if (child == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(100);
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("run.err", "w", stderr)) _exit(101);
+    alarm(60);  // SIGALRM ends a hang, as `timeout 60` did
+    arguments.insert(arguments.begin(), "simulate");
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    const int code = run_tool("simulate", [&] { return simulate_command(int(arguments.size()), argv.data()); });
+    std::fflush(nullptr);
+    _exit(code);
+  }
+  int status = -1;
+  if (child > 0) waitpid(child, &status, 0);
+  return status;
+}
+
 TEST(SimgridSettingRanges, EveryRangesEndsRunASimulation) {
-  const char* simulate = std::getenv("NCUBE_SIMULATE");
-  if (!simulate) GTEST_SKIP() << "NCUBE_SIMULATE is not set (ctest sets it)";
   const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "setting_ranges";
   std::filesystem::create_directories(dir);
   int runs = 0;
@@ -230,14 +257,16 @@ TEST(SimgridSettingRanges, EveryRangesEndsRunASimulation) {
     for (const std::string& value : ends_of(range)) {
       // Unbounded integers' top end (2^31-1) is not a resource size: no need to run it.
       if (range.high == 2147483647 && value == "2147483647") continue;
-      const std::string command = "cd '" + dir.string() + "' && timeout 60 '" + simulate +
-                                  "' scene0.json --R 2 --V 1 --iterations 1 --quiet"
-                                  " '--cfg=" + std::string(range.name) + ":" + value + "'" +
-                                  companion(range.name) + " > /dev/null 2> run.err";
-      const int status = std::system(command.c_str());
+      std::vector<std::string> arguments = {"scene0.json", "--R", "2", "--V", "1", "--iterations",
+                                            "1", "--quiet",
+                                            "--cfg=" + std::string(range.name) + ":" + value};
+      for (const std::string& setting : companion(range.name)) arguments.push_back(setting);
+      const int status = simulate_in_child(dir, arguments);
       // The TI trace format writes a folder of files per actor, which the output rule refuses
       // (docs/cli.md, "Output files"): exit 2 before the run, not a crash.
       const int expected = std::string(range.name) == "tracing/smpi/format" && value == "TI" ? 2 : 0;
+      std::string command = "simulate";
+      for (const std::string& argument : arguments) command += " " + argument;
       EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == expected)
           << command << " (status " << status << ")";
       ++runs;
