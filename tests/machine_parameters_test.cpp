@@ -138,6 +138,26 @@ TEST(MachineParameters, TheJsonLoaderReadsAndChecksEveryParameter) {
   }
 }
 
+// A platform's settings are asked of SimGrid together, in one child: the one it refuses is
+// still the one named, wherever it sorts among them, and an earlier one SimGrid refuses is
+// named before a later one of bad form.
+TEST(MachineParameters, TheSettingSimgridRefusesIsNamedAmongThePlatformsOthers) {
+  const nlohmann::json parameters =
+      nlohmann::json::parse(read_text(repo("platforms/ncube2.json")))["parameters"];
+  const auto error_with = [&](const nlohmann::json& settings) {
+    return json_error(nlohmann::json{{"simgrid_config", settings}, {"parameters", parameters}}.dump());
+  };
+  const std::string last = error_with({{"network/model", "CM02"}, {"network/solver", "fairbottleneck"},
+                                       {"network/crosstraffic", "0"}, {"tracing/actor", "maybe"}});
+  EXPECT_NE(last.find("\"simgrid_config\": \"tracing/actor\": "), std::string::npos) << last;
+  EXPECT_NE(last.find("boolean"), std::string::npos) << last;
+  const std::string first = error_with({{"network/crosstraffic", "maybe"}, {"network/model", "bogus"}});
+  EXPECT_NE(first.find("\"network/crosstraffic\": "), std::string::npos) << first;
+  EXPECT_NE(error_with({{"network/crosstraffic", "0"}, {"network/model", "bogus"}})
+                .find("\"network/model\": network/model must be one of"),
+            std::string::npos);
+}
+
 TEST(MachineParameters, AJsonFileWithoutSimgridConfigGetsTheNetworkModel) {
   const PlatformConfig p = load_platform_config(
       write_temp(nlohmann::json{{"parameters", nlohmann::json::parse(read_text(repo(

@@ -5,14 +5,20 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "util/input_error.h"
 
 namespace ncube {
 namespace {
 
-std::string refusal(const std::string& argument) {
+// The message for `argument` among `others` (checked together, `argument` last): it must
+// name `argument`.
+std::string refusal(const std::string& argument, std::vector<std::string> others = {}) {
   try {
-    check_simgrid_settings({argument});
+    others.push_back(argument);
+    check_simgrid_settings(others);
   } catch (const InputError& e) {
     const std::string message = e.what();
     EXPECT_EQ(message.find('\n'), std::string::npos) << "more than one line: " << message;
@@ -51,6 +57,21 @@ TEST(SimgridSettings, GoodSettingsPass) {
   EXPECT_NO_THROW(check_simgrid_settings({"--cfg=network/model:CM02", "--cfg=network/crosstraffic:0",
                                           "--cfg=network/solver:fairbottleneck",
                                           "--log=ncube_messages.thresh:debug"}));
+}
+
+// A run's settings are asked of SimGrid in one child; the one it refuses is still named with
+// what it says of it alone, and an earlier refused one before a later one of bad form.
+TEST(SimgridSettings, AmongOthersTheRefusedOneIsNamedAsAlone) {
+  const std::vector<std::string> good = {"--cfg=network/model:CM02", "--cfg=network/solver:fairbottleneck",
+                                         "--log=ncube_messages.thresh:debug"};
+  for (const char* bad : {"--cfg=network/crosstraffic:maybe", "--log=:::", "--cfg=bogus/name:1"})
+    EXPECT_EQ(refusal(bad, good), refusal(bad)) << bad;
+  try {
+    check_simgrid_settings({"--cfg=network/crosstraffic:maybe", "--cfg=network/model:bogus"});
+    ADD_FAILURE() << "taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), refusal("--cfg=network/crosstraffic:maybe"));
+  }
 }
 
 }  // namespace

@@ -19,18 +19,31 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
   const nlohmann::json& section = doc["simgrid_config"];
   if (!section.is_object()) throw InputError(path + ": \"simgrid_config\": expected an object");
   std::map<std::string, std::string> settings;
+  std::vector<std::string> keys, arguments;
   for (auto it = section.begin(); it != section.end(); ++it) {
     if (!it.value().is_string())
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": expected a string");
     settings[it.key()] = it.value().get<std::string>();
-    // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h);
-    // a platform file never names a file to write (src/machine/simgrid_setting_ranges.h).
+    // A platform file never names a file to write (src/machine/simgrid_setting_ranges.h).
     std::string problem = platform_setting_problem(it.key(), settings[it.key()]);
-    if (problem.empty())
-      problem = simgrid_setting_problem("--cfg=" + it.key() + ":" + settings[it.key()]);
-    if (!problem.empty())
+    const std::string argument = "--cfg=" + it.key() + ":" + settings[it.key()];
+    if (problem.empty()) problem = simgrid_setting_form_problem(argument);
+    if (!problem.empty()) {
+      // SimGrid is asked about the settings before this one first: a setting it refuses there
+      // is named first, as when each was asked in turn.
+      if (const SettingRefusal refused = simgrid_refusal_of(arguments); refused.index < keys.size())
+        throw InputError(path + ": \"simgrid_config\": \"" + keys[refused.index] + "\": " +
+                         refused.problem);
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": " + problem);
+    }
+    keys.push_back(it.key());
+    arguments.push_back(argument);
   }
+  // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h):
+  // asked about them all in one child.
+  if (const SettingRefusal refused = simgrid_refusal_of(arguments); refused.index < keys.size())
+    throw InputError(path + ": \"simgrid_config\": \"" + keys[refused.index] + "\": " +
+                     refused.problem);
   return settings;
 }
 

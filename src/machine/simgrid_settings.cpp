@@ -45,31 +45,34 @@ std::string range_problem(const std::string& argument) {
   return range ? setting_range_problem(*range, setting.substr(colon + 1)) : "";
 }
 
-// In the child: SimGrid with this one setting, up to the network model's creation, which is
+// In the child: SimGrid with these settings, up to the network model's creation, which is
 // when a model name is checked. Never returns.
-[[noreturn]] void try_in_child(const std::string& argument, int error_pipe) {
+[[noreturn]] void try_in_child(const std::vector<std::string>& arguments, int error_pipe) {
   dup2(error_pipe, STDERR_FILENO);
   dup2(error_pipe, STDOUT_FILENO);  // --cfg=help and the like print their text here
   // tracing:yes opens its trace (simgrid.trace unless named) when the platform starts: the
   // check writes nothing, so the child's goes to /dev/null. A tracing/filename being checked
-  // comes after and wins, but without tracing:yes in the same child nothing is opened; and
-  // every file the argument names (a log appender's, the trace's) is /dev/null too.
-  std::vector<std::string> storage{"simulate", "--cfg=tracing/filename:/dev/null", ""};
-  int argc = 3;
+  // comes after and wins, but every file an argument names (a log appender's, the trace's) is
+  // /dev/null too.
+  std::vector<std::string> storage{"simulate", "--cfg=tracing/filename:/dev/null"};
   try {
-    storage[2] = simgrid_argument_for_check(argument);  // never the user's files
-    std::vector<char*> argv{storage[0].data(), storage[1].data(), storage[2].data(), nullptr};
+    for (const std::string& argument : arguments)
+      storage.push_back(simgrid_argument_for_check(argument));  // never the user's files
+    std::vector<char*> argv;
+    for (std::string& argument : storage) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    int argc = int(storage.size());
     xbt_log_control_set("root.thresh:critical");
     simgrid::s4u::Engine engine(&argc, argv.data());
     auto* zone = simgrid::s4u::create_full_zone("check");
     zone->create_host("check", 1e6);
     zone->seal();
+    _exit(argc == 1 ? 0 : 4);  // SimGrid consumes the arguments it understood
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     std::fflush(stderr);
     _exit(3);
   }
-  _exit(argc == 1 ? 0 : 4);  // SimGrid consumes the arguments it understood
 }
 
 // The one line to show of what SimGrid said: its CRITICAL message, or the exception's first line.
@@ -80,8 +83,9 @@ std::string first_message_line(const std::string& said) {
   return said.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }
 
-// What SimGrid says of one setting: "" when it takes it.
-std::string simgrid_refusal(const std::string& argument) {
+// What SimGrid says of these settings together: "" when it takes them all.
+std::string simgrid_refusal(const std::vector<std::string>& arguments) {
+  if (arguments.empty()) return "";
   // A process has one Engine: once it exists (a test that ran a simulation, a platform file
   // read through SimGrid), a child cannot make its own, and the settings are SimGrid's already.
   if (simgrid::s4u::Engine::is_initialized()) return "";
@@ -96,7 +100,7 @@ std::string simgrid_refusal(const std::string& argument) {
   }
   if (child == 0) {
     close(pipe_ends[0]);
-    try_in_child(argument, pipe_ends[1]);
+    try_in_child(arguments, pipe_ends[1]);
   }
   close(pipe_ends[1]);
   std::string said;
@@ -110,7 +114,8 @@ std::string simgrid_refusal(const std::string& argument) {
   waitpid(child, &status, 0);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
   if (WIFEXITED(status) && WEXITSTATUS(status) == 4)
-    return "SimGrid does not take this argument";
+    return arguments.size() == 1 ? "SimGrid does not take this argument"
+                                 : "SimGrid does not take one of these arguments";
   const std::string line = first_message_line(said);
   if (line.rfind("Bad config key", 0) == 0)
     return line + " (SimGrid's settings: https://simgrid.org/doc/3.32/Configuring_SimGrid.html)";
@@ -119,16 +124,45 @@ std::string simgrid_refusal(const std::string& argument) {
 
 }  // namespace
 
-std::string simgrid_setting_problem(const std::string& argument) {
+std::string simgrid_setting_form_problem(const std::string& argument) {
   if (std::string problem = syntax_problem(argument); !problem.empty()) return problem;
-  if (std::string problem = range_problem(argument); !problem.empty()) return problem;
-  return simgrid_refusal(argument);
+  return range_problem(argument);
+}
+
+std::string simgrid_setting_problem(const std::string& argument) {
+  if (std::string problem = simgrid_setting_form_problem(argument); !problem.empty()) return problem;
+  return simgrid_refusal({argument});
+}
+
+SettingRefusal simgrid_refusal_of(const std::vector<std::string>& arguments) {
+  // One child for them all: a run's settings are nearly always taken, and each child is an
+  // Engine's start (about 20 ms of CPU with its fork). Only when SimGrid refuses them is each
+  // asked alone, so that the message names the one it refuses, as it would alone.
+  const std::string together = simgrid_refusal(arguments);
+  if (together.empty()) return {arguments.size(), ""};
+  for (std::size_t i = 0; i < arguments.size(); ++i)
+    if (std::string alone = simgrid_refusal({arguments[i]}); !alone.empty()) return {i, alone};
+  // Each taken alone, not together: the first whose addition SimGrid refuses.
+  for (std::size_t i = 1; i < arguments.size(); ++i)
+    if (std::string problem = simgrid_refusal({arguments.begin(), arguments.begin() + long(i) + 1});
+        !problem.empty())
+      return {i, problem + " (with the settings before it)"};
+  return {arguments.size() - 1, together + " (with the settings before it)"};
 }
 
 void check_simgrid_settings(const std::vector<std::string>& arguments) {
-  for (const std::string& argument : arguments)
-    if (const std::string problem = simgrid_setting_problem(argument); !problem.empty())
-      throw InputError(argument + ": " + problem);
+  // The checks in this process first, in order; SimGrid is asked about the arguments before
+  // the first they refuse, so the first argument refused is the one named, as one by one.
+  std::size_t first_bad_form = 0;
+  std::string form_problem;
+  for (; first_bad_form < arguments.size(); ++first_bad_form)
+    if (!(form_problem = simgrid_setting_form_problem(arguments[first_bad_form])).empty()) break;
+  const SettingRefusal refused =
+      simgrid_refusal_of({arguments.begin(), arguments.begin() + long(first_bad_form)});
+  if (refused.index < first_bad_form)
+    throw InputError(arguments[refused.index] + ": " + refused.problem);
+  if (first_bad_form < arguments.size())
+    throw InputError(arguments[first_bad_form] + ": " + form_problem);
 }
 
 }  // namespace ncube

@@ -80,7 +80,7 @@ COVERED = {
 # a program shipped and listed above is on the page too.
 SURFACE = {
     "simulate": ("a scene or model (OBJ, PLY, glTF, .glb) and the files the model names, a platform (JSON or SimGrid XML), a cost model; found by the lookup rule (NCUBE_ROOT)",
-                 "--json, --image, --mesh, --trace, --export-scene; SimGrid's log files and trace (--log, --cfg); NCUBE_RECORD_ACTIVITIES", "itself in a child per SimGrid setting (--check-settings)"),
+                 "--json, --image, --mesh, --trace, --export-scene; SimGrid's log files and trace (--log, --cfg); NCUBE_RECORD_ACTIVITIES", "itself in a child for the SimGrid settings (one each when that child refuses; --check-settings)"),
     "reference_solution": ("a scene file", "--out, --mesh", "nothing"),
     "machine_probe": ("--network (SimGrid XML), --cost-model", "--out (a SimGrid platform)", "its own timing kernels"),
     "network_bench": ("--platform (JSON or XML), --cost-model", "--json", "nothing"),
