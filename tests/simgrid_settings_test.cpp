@@ -59,6 +59,14 @@ TEST(SimgridSettings, GoodSettingsPass) {
                                           "--log=ncube_messages.thresh:debug"}));
 }
 
+// The spellings taken without asking SimGrid are SimGrid's: asked in a child, it takes each.
+TEST(SimgridSettings, TheBooleanSpellingsTakenWithoutAChildAreSimgrids) {
+  for (const char* spelling : kSimgridBooleanSpellings)
+    EXPECT_EQ(simgrid_setting_problem(std::string("--cfg=network/crosstraffic:") + spelling), "")
+        << spelling;
+  EXPECT_NE(simgrid_setting_problem("--cfg=network/crosstraffic:Yes"), "");
+}
+
 // A run's settings are asked of SimGrid in one child; the one it refuses is still named with
 // what it says of it alone, and an earlier refused one before a later one of bad form.
 TEST(SimgridSettings, AmongOthersTheRefusedOneIsNamedAsAlone) {

@@ -45,6 +45,28 @@ std::string range_problem(const std::string& argument) {
   return range ? setting_range_problem(*range, setting.substr(colon + 1)) : "";
 }
 
+// A --cfg setting SimGrid takes without being asked: its row lists the value as a choice (each
+// choice runs a simulation in tests/simgrid_setting_ranges_test.cpp), or its row is a boolean
+// and the value one of the spellings SimGrid reads (tests/simgrid_settings_test.cpp asks SimGrid
+// each). A platform's usual settings (a model, a solver, crosstraffic on or off) then need no
+// child at all.
+bool taken_without_asking(const std::string& argument) {
+  const std::string cfg = "--cfg=";
+  if (argument.rfind(cfg, 0) != 0) return false;
+  const std::string setting = argument.substr(cfg.size());
+  const std::size_t colon = setting.find(':');
+  if (colon == std::string::npos) return false;
+  const SimgridSettingRange* range = simgrid_setting_range(setting.substr(0, colon));
+  if (!range) return false;
+  const std::string value = setting.substr(colon + 1);
+  if (range->kind == SettingKind::kBoolean) {
+    for (const char* spelling : kSimgridBooleanSpellings)
+      if (value == spelling) return true;
+    return false;
+  }
+  return range->kind == SettingKind::kChoice && setting_range_problem(*range, value).empty();
+}
+
 // In the child: SimGrid with these settings, up to the network model's creation, which is
 // when a model name is checked. Never returns.
 [[noreturn]] void try_in_child(const std::vector<std::string>& arguments, int error_pipe) {
@@ -138,6 +160,9 @@ SettingRefusal simgrid_refusal_of(const std::vector<std::string>& arguments) {
   // One child for them all: a run's settings are nearly always taken, and each child is an
   // Engine's start (about 20 ms of CPU with its fork). Only when SimGrid refuses them is each
   // asked alone, so that the message names the one it refuses, as it would alone.
+  bool all_known = true;
+  for (const std::string& argument : arguments) all_known &= taken_without_asking(argument);
+  if (all_known) return {arguments.size(), ""};
   const std::string together = simgrid_refusal(arguments);
   if (together.empty()) return {arguments.size(), ""};
   for (std::size_t i = 0; i < arguments.size(); ++i)
