@@ -98,6 +98,26 @@ TEST_F(InputFileTest, SizeLimit) {
   EXPECT_THROW(std::getline(in, line), InputError);
 }
 
+// Read whole, whatever size the file claimed: a kernel file that gives its text to the first
+// read only (a sysctl: a second read at an offset gives nothing), one that claims 0 bytes and
+// gives several pages, and a file larger than one piece of the reader.
+TEST_F(InputFileTest, ReadWholeWhateverSizeItClaimed) {
+  const auto whole = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const InputKind large{"test file", 1 << 24};
+  const std::string sysctl = whole("/proc/sys/vm/max_map_count");
+  ASSERT_GT(sysctl.size(), 2u);
+  EXPECT_EQ(read_input_file("/proc/sys/vm/max_map_count", large), sysctl);
+  const std::string maps = read_input_file("/proc/self/maps", large);
+  EXPECT_GT(maps.size(), std::size_t(1) << 13);
+  EXPECT_EQ(maps.back(), '\n');
+  std::string text(3 << 20, 'x');
+  for (std::size_t i = 0; i < text.size(); i += 4096) text[i] = char('a' + i / 4096 % 26);
+  EXPECT_EQ(read_input_file(write("three_mib", text), large), text);
+}
+
 TEST_F(InputFileTest, HashOfWhatIsRead) {
   // SHA-256 of "abc" (FIPS 180-2, appendix B.1).
   EXPECT_EQ(input_sha256(write("abc", "abc"), kTen),

@@ -79,16 +79,24 @@ std::size_t InputFile::read(char* buffer, std::size_t n) {
 }
 
 std::string InputFile::read_all() {
-  // Read in pieces, joined once; at most one byte past the limit is asked for.
+  // Read in pieces, joined once; at most one byte past the limit is asked for. The first piece
+  // is the size the file had when opened and a byte more (which finds its end, or that it
+  // grew), at least 64 KiB (a kernel's file claims size 0 and gives its text to the first read
+  // only: /proc/sys/vm/max_map_count), not a zeroed MiB for a file of a few hundred bytes;
+  // pieces of 1 MiB follow only for what a file gives beyond that.
   std::vector<std::string> pieces;
-  std::size_t total = 0, got = 0;
-  do {
-    std::string piece(std::min<std::size_t>(1 << 20, kind_.max_bytes + 1 - given_), '\0');
-    got = read(piece.data(), piece.size());
+  std::size_t total = 0, want = std::max<std::size_t>(size_ + 1, 1 << 16);
+  for (;;) {
+    std::string piece(std::min<std::size_t>(want, kind_.max_bytes + 1 - given_), '\0');
+    const std::size_t asked = piece.size();
+    const std::size_t got = read(piece.data(), asked);
     piece.resize(got);
     total += got;
     pieces.push_back(std::move(piece));
-  } while (got > 0);
+    if (got < asked) break;  // read() gives fewer than asked only at the end
+    want = 1 << 20;
+  }
+  if (pieces.size() == 1) return std::move(pieces.front());
   std::string text;
   text.reserve(total);
   for (const std::string& piece : pieces) text += piece;
