@@ -17,7 +17,7 @@ import subprocess
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
-from . import cell_names, input_file, sweep_keys
+from . import cell_names, input_file, output_file, sweep_keys
 from . import options as opts
 from . import paths
 from .results import MEASURES
@@ -223,13 +223,58 @@ def read_document(path):
                          "mappings and lists)") from None
 
 
+def _simulator_files():
+    """The simulator's binary (the build behind ./simulate, or $NCUBE_SIMULATE and, when that
+    is a wrapper, the build's binary too), resolved: what a node count depends on besides the
+    platform file."""
+    named = Path(paths.simulate_binary())
+    build = (paths.ROOT / "build" / "simulate").resolve()
+    files = [build] if named.resolve() == (paths.ROOT / "simulate").resolve() else [named.resolve()]
+    if build not in files and build.exists():
+        files.append(build)
+    return files
+
+
+def _node_count_file(path, text):
+    """Where this build keeps the node count of the platform at `path` with content `text`:
+    build/platform-nodes/<key>, the key a SHA-256 of the platform's absolute path and bytes and
+    of each simulator file's identity (inode, size, modification time), so an edited platform
+    or a rebuilt simulator asks ./simulate again. A sweep's every cell job is a process of its
+    own that reads the sweep file again (a 32-cell sweep of 4 platforms asked ./simulate 128
+    times, each a start of SimGrid: about 0.1 CPU-second); now each platform is asked once per
+    build. None when the simulator's folder cannot hold the cache."""
+    key = hashlib.sha256()
+    for binary in _simulator_files():
+        status = binary.stat()
+        key.update(f"{binary}\0{status.st_ino}\0{status.st_size}\0{status.st_mtime_ns}\0".encode())
+    key.update(f"{Path(path).resolve()}\0".encode())
+    key.update(text.encode())
+    return _simulator_files()[0].parent / "platform-nodes" / key.hexdigest()
+
+
 @functools.lru_cache(maxsize=None)
-def _platform_nodes(path):
+def _platform_nodes(path, text):
+    try:
+        cached = _node_count_file(path, text)
+    except OSError:
+        cached = None
+    if cached is not None and cached.is_file():
+        try:   # through the gate, as every file read; a damaged entry is asked again
+            return int(input_file.read_input_text(cached, "platform node count", 32))
+        except (input_file.InputFileError, ValueError):
+            pass
     run = subprocess.run([paths.simulate_binary(), "--platform", path, "--platform-nodes"],
                          capture_output=True, text=True, env=paths.simulate_environment())
     if run.returncode != 0:
         raise ValueError(run.stderr.strip().removeprefix("simulate: "))
-    return int(run.stdout)
+    nodes = int(run.stdout)
+    if cached is not None:
+        try:   # written once, by the output rule (a temporary file renamed into place)
+            cached.parent.mkdir(exist_ok=True)
+            output_file.write(cached, f"{nodes}\n")
+        except OSError:
+            pass   # a read-only build: asked again next time
+    return nodes
 
 
 ESTIMATE_MAX_DIMENSION = 30   # bounds the estimate's power only (./simulate's range is 0 to 13)
@@ -243,7 +288,7 @@ def platform_nodes(path):
     the cells' own runs then check the file."""
     text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)   # through the gate
     if _simulator_built():
-        return _platform_nodes(str(path))
+        return _platform_nodes(str(path), text)
     if not text.lstrip().startswith("<"):
         dimension = json.loads(text)["parameters"]["dimension"]["value"]
         # Bounded before the power (1e9 would take 2^(10^9), 1e400 is infinite): far above

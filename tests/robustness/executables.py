@@ -93,7 +93,7 @@ SURFACE = {
     "tests/slurm_cluster.sh": ("its folder's configuration and pid files", "a Slurm configuration, logs and pid files in its folder", "slurmctld, slurmd; signals only the daemons it started"),
     ".ci/install-deps": ("nothing", "Debian packages (root)", "apt-get"),
     ".ci/run": ("the repository", "build/", "install-deps, cmake, ./simulate, ctest"),
-    "experiments/sweep": ("sweep files (YAML or JSON), the scenes, platforms and cost models they name, result files", "--results folder: plan.json, one result file per cell, sweeps/NAME/ summaries; with --slurm, slurm_job.sh (the job script's template)", "Snakemake, ./simulate per cell (locally, or through Slurm's sbatch, each job running ncube.cluster_job, no Snakemake of its own)"),
+    "experiments/sweep": ("sweep files (YAML or JSON), the scenes, platforms and cost models they name, result files, build/platform-nodes/ (its platforms' node counts)", "--results folder: plan.json, one result file per cell, sweeps/NAME/ summaries; with --slurm, slurm_job.sh (the job script's template); build/platform-nodes/KEY (a platform's node count, once per build)", "Snakemake, ./simulate per cell (locally, or through Slurm's sbatch, each job running ncube.cluster_job, no Snakemake of its own)"),
     "experiments/reproduce": ("experiments/table1-5.json, timeline.json", "--results folder", "experiments/sweep"),
     "analysis/ncube/reference_manifest.py": ("analysis/reference/*.json and manifest/, the scenes", "DIR/manifest/SCENE.json and fingerprint.json (each record written whole); with run, DIR/SCENE.json", "BUILD/reference_solution (run, fingerprint, check)"),
     "experiments/claims/references": ("scenes", "analysis/reference/SCENE.json", "build/reference_solution"),
