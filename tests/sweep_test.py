@@ -20,6 +20,7 @@ sys.path.insert(0, str(ROOT / "analysis"))
 from ncube import options, results, runner, simulate, sweep  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
+SIMULATE = os.path.abspath(os.environ.get("NCUBE_SIMULATE") or ROOT / "simulate")
 failures = []
 
 
@@ -200,7 +201,7 @@ def test_local_sweep(work):
           "a finished cell is not run again")
 
 
-def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None):
+def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
     """Runs the sweep with cell jobs held at chosen instants (ncube.run_cell's test hook,
     NCUBE_TEST_PAUSE: {point: cell}), waits until every one is reached, calls before_stop and
     stops the sweep with SIGTERM, as Ctrl-C or a scheduler would: the instant of the stop is
@@ -208,7 +209,8 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
     signals_dir.mkdir()
     environment = dict(os.environ, NCUBE_TEST_PAUSE=",".join(f"{point}:{cell.file}" for point, cell
                                                              in pauses.items()),
-                       NCUBE_TEST_PAUSE_DIR=str(signals_dir))
+                       NCUBE_TEST_PAUSE_DIR=str(signals_dir),
+                       NCUBE_SIMULATE=str(simulate or SIMULATE))
     # A job per pause held at once, and one more core for the others to run meanwhile.
     process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir),
                                         "--cores", str(max(2, len(pauses) + 1))],
@@ -245,16 +247,28 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell runs seconds on one host thread: its simulation is running when the quick
-    # cells' jobs reach their pauses.
+    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate gives its
+    # simulation (the real one, exec'd) 100000 iterations with 64 samples, minutes on one host
+    # thread, so it is running when the quick cells' jobs reach their pauses; the resume runs
+    # the cell as the sweep file has it: one iteration, a fraction of a second.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 400, samples: 64},\n"
+        "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
     results_dir = work / "killed"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow, earlier = loaded.cells
+    slow_simulate = work / "simulate-slow"
+    slow_simulate.write_text(
+        f'#!/bin/bash\ncase " $* " in *{slow.id}*) ;; *) exec {SIMULATE} "$@";; esac\n'
+        'args=()\nwhile [ $# -gt 0 ]; do\n  case "$1" in\n'
+        '    --iterations) args+=(--iterations 100000); shift 2;;\n'
+        '    --samples) args+=(--samples 64); shift 2;;\n'
+        '    --convergence) args+=(--convergence 1e-10); shift 2;;\n'
+        '    *) args+=("$1"); shift;;\n  esac\ndone\n'
+        f'exec {SIMULATE} "${{args[@]}}"\n')
+    slow_simulate.chmod(0o755)
     seen = {}
 
     def before_stop():
@@ -274,7 +288,7 @@ def test_kill_and_resume(work):
     # temporary name, not yet given its final name.
     reached = stopped_sweep(work / "kill.yaml", results_dir,
                             {"written": quick, "started": slow, "verified": earlier},
-                            work / "kill-signals", before_stop)
+                            work / "kill-signals", before_stop, simulate=slow_simulate)
     check(reached and (results_dir / quick.file).exists() and seen["running"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
     kept = file_state(results_dir / quick.file)
