@@ -179,15 +179,28 @@ def test_local_sweep(work):
     outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
                p.parent.name != "scenes_copy" and p.name != "bad.json"]
     check(not outside, f"results only under the results folder ({outside[:2]})")
-    # Files that are not a finished result of their cell run again.
+    # Files that are not a finished result of their cell run again: spoiled here, run again by
+    # the resume of test_kill_and_resume (one Snakemake for both sweeps, this folder), checked
+    # there by check_reruns (that run's exit 0 is "the sweep resumes").
     plain = [c for c in loaded.cells if not c.trace]
     traced = next(c for c in loaded.cells if c.trace)
-    stamp = {c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells}
+    SPOILED.update(plain=plain, traced=traced, results_dir=results_dir,
+                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells})
     (results_dir / plain[0].file).write_text('{"status": "ok"}\n')
     (results_dir / plain[1].file).write_bytes((results_dir / plain[2].file).read_bytes())
     (results_dir / traced.trace_file).unlink()
-    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
-    check(done.returncode == 0, "the sweep runs again")
+
+
+SPOILED = {}   # test_local_sweep's cells made unfinished, for check_reruns
+
+
+def check_reruns(done):
+    """After a sweep run over test_local_sweep's folder with its sweep file: the files that
+    are not a finished result of their cell ran again, the finished ones did not."""
+    if not SPOILED:
+        check(False, "test_local_sweep's folder is there to run again")
+        return
+    plain, traced, results_dir = SPOILED["plain"], SPOILED["traced"], SPOILED["results_dir"]
     for cell, why in ((plain[0], "a bare {status: ok}"), (plain[1], "another cell's result"),
                       (traced, "a result whose trace was deleted")):
         result = results.read(results_dir / cell.file) or {}
@@ -197,7 +210,7 @@ def test_local_sweep(work):
                (not cell.trace or (results_dir / cell.trace_file).exists()))
         check(own and f"sweep: {cell.file} is not a finished result of its cell" in done.stderr,
               f"{why} is not taken as done")
-    check((results_dir / plain[3].file).stat().st_mtime_ns == stamp[plain[3].id],
+    check((results_dir / plain[3].file).stat().st_mtime_ns == SPOILED["stamp"][plain[3].id],
           "a finished cell is not run again")
 
 
@@ -256,7 +269,8 @@ def test_kill_and_resume(work):
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
-    results_dir = work / "killed"
+    # The local sweep's folder, its spoiled cells waiting: the resume runs both sweeps.
+    results_dir = work / "res"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow, earlier = loaded.cells
     slow_simulate = work / "simulate-slow"
@@ -303,11 +317,14 @@ def test_kill_and_resume(work):
           "a cell stopped before its file got its name leaves no file at all")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
-    # The next run finishes the interrupted cells only.
-    done = run_sweep(work / "kill.yaml", "--results", results_dir, timeout=280)
+    # The next run finishes the interrupted cells only; with test_local_sweep's sweep file too
+    # (its folder), it runs its 3 spoiled cells again: 3 of the 8 cells finished (the quick
+    # cell, 2 of the local sweep's), 5 to run.
+    done = run_sweep(work / "tiny.yaml", work / "kill.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
-    check("1 with a finished result file" in done.stdout and "2 to run" in done.stdout,
+    check("3 with a finished result file" in done.stdout and "5 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
+    check_reruns(done)
     check(file_state(results_dir / quick.file) == kept and not jobs_run(results_dir, quick),
           "the finished cell is kept (no job for it; same file, time and bytes)")
     check(jobs_run(results_dir, slow) and
