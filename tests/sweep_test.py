@@ -260,10 +260,11 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate gives its
-    # simulation (the real one, exec'd) 100000 iterations with 64 samples, minutes on one host
-    # thread, so it is running when the quick cells' jobs reach their pauses; the resume runs
-    # the cell as the sweep file has it: one iteration, a fraction of a second.
+    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate has its
+    # simulation (the real one, exec'd) run to convergence at 1e-10 with 64 samples (about
+    # 4,000 iterations, some 15 s on one host thread), so it is running when the quick cells'
+    # jobs reach their pauses; the resume runs the cell as the sweep file has it: one
+    # iteration, a fraction of a second.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
