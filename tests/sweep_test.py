@@ -99,7 +99,9 @@ def test_validation(work):
               and expected in done.stderr, f"refused at once: {what} ({done.stderr.strip()[:160]})")
     path = work / "bad.yaml"
     path.write_text("measure: seconds_per_iteration\nmesure: x\ngrid: {scene: [scene0], R: [1]}\n")
-    done = run_sweep(path, "--check")
+    # In process too: the script's exit 2 on a refusal is tests/sweep_shell_words_test.py's
+    # (its first refused name runs experiments/sweep).
+    done = check_in_process(path, "--check")
     check(done.returncode == 2 and "'mesure'" in done.stderr, "unknown top-level key refused")
     check(not (work / "never").exists(), "nothing written for a refused sweep")
     # Identity: a changed option is another cell; the same configuration twice is refused.
