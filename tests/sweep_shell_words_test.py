@@ -105,7 +105,9 @@ def hostile_paths(work, safe_base):
     shutil.copytree(ROOT / "platforms", repo / "platforms", ignore=shutil.ignore_patterns("*.py"))
     (repo / "scenes").mkdir()
     hostile_sweep = ["/usr/bin/python3", str(repo / "experiments" / "sweep")]
-    refused = sweep([str(folder / "study.yaml"), "--results", str(work / hostile(work, "nl"))])
+    # Refusals before Snakemake: experiments/sweep's entry run here (the script runs below).
+    refused = sweep_in_process([str(folder / "study.yaml"), "--results",
+                                str(work / hostile(work, "nl"))], work)
     check(refused.returncode == 2 and len(refused.stderr.strip().splitlines()) == 1
           and "control character" in refused.stderr
           and not (work / hostile(work, "nl")).exists(),
@@ -119,7 +121,8 @@ def hostile_paths(work, safe_base):
           f"a sweep tool, sweep file, scene and results folder in hostile paths run locally (exit {done.returncode}: "
           f"{done.stderr.strip()[-300:]})")
     local_submit = ["--cluster", str(ROOT / "tests" / "sweep_local_submit.sh"), "--jobs", "2"]
-    refused = sweep([str(folder / "study.yaml"), "--results", str(results_dir)] + local_submit)
+    refused = sweep_in_process([str(folder / "study.yaml"), "--results", str(results_dir)] +
+                               local_submit, work)
     check(refused.returncode == 2 and len(refused.stderr.strip().splitlines()) == 1
           and "with a cluster" in refused.stderr,
           f"with a cluster, $ ` \" \\ in the results path are refused with one line "
@@ -139,7 +142,7 @@ def hostile_cfg(work):
     (folder / "s.yaml").write_text(
         "name: cfg\noptions: {iterations: 1, samples: 4, "
         "cfg: {'network/model': '$(touch ${PWNED}PWNED-cfg)'}}\ngrid: {scene: [scene0], R: [1]}\n")
-    done = sweep([str(folder / "s.yaml"), "--results", str(folder / "results")])
+    done = sweep_in_process([str(folder / "s.yaml"), "--results", str(folder / "results")], folder)
     check(done.returncode == 2 and not pwned(work),
           f"a cfg value with shell syntax is one argument to ./simulate, refused "
           f"(exit {done.returncode}: {done.stderr.strip()[:200]})")

@@ -20,6 +20,7 @@ sys.path.insert(0, str(ROOT / "analysis"))
 from ncube import options, results, runner, simulate, sweep  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
+SIMULATE = os.path.abspath(os.environ.get("NCUBE_SIMULATE") or ROOT / "simulate")
 failures = []
 
 
@@ -98,7 +99,9 @@ def test_validation(work):
               and expected in done.stderr, f"refused at once: {what} ({done.stderr.strip()[:160]})")
     path = work / "bad.yaml"
     path.write_text("measure: seconds_per_iteration\nmesure: x\ngrid: {scene: [scene0], R: [1]}\n")
-    done = run_sweep(path, "--check")
+    # In process too: the script's exit 2 on a refusal is tests/sweep_shell_words_test.py's
+    # (its first refused name runs experiments/sweep).
+    done = check_in_process(path, "--check")
     check(done.returncode == 2 and "'mesure'" in done.stderr, "unknown top-level key refused")
     check(not (work / "never").exists(), "nothing written for a refused sweep")
     # Identity: a changed option is another cell; the same configuration twice is refused.
@@ -178,15 +181,28 @@ def test_local_sweep(work):
     outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
                p.parent.name != "scenes_copy" and p.name != "bad.json"]
     check(not outside, f"results only under the results folder ({outside[:2]})")
-    # Files that are not a finished result of their cell run again.
+    # Files that are not a finished result of their cell run again: spoiled here, run again by
+    # the resume of test_kill_and_resume (one Snakemake for both sweeps, this folder), checked
+    # there by check_reruns (that run's exit 0 is "the sweep resumes").
     plain = [c for c in loaded.cells if not c.trace]
     traced = next(c for c in loaded.cells if c.trace)
-    stamp = {c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells}
+    SPOILED.update(plain=plain, traced=traced, results_dir=results_dir,
+                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells})
     (results_dir / plain[0].file).write_text('{"status": "ok"}\n')
     (results_dir / plain[1].file).write_bytes((results_dir / plain[2].file).read_bytes())
     (results_dir / traced.trace_file).unlink()
-    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
-    check(done.returncode == 0, "the sweep runs again")
+
+
+SPOILED = {}   # test_local_sweep's cells made unfinished, for check_reruns
+
+
+def check_reruns(done):
+    """After a sweep run over test_local_sweep's folder with its sweep file: the files that
+    are not a finished result of their cell ran again, the finished ones did not."""
+    if not SPOILED:
+        check(False, "test_local_sweep's folder is there to run again")
+        return
+    plain, traced, results_dir = SPOILED["plain"], SPOILED["traced"], SPOILED["results_dir"]
     for cell, why in ((plain[0], "a bare {status: ok}"), (plain[1], "another cell's result"),
                       (traced, "a result whose trace was deleted")):
         result = results.read(results_dir / cell.file) or {}
@@ -196,11 +212,11 @@ def test_local_sweep(work):
                (not cell.trace or (results_dir / cell.trace_file).exists()))
         check(own and f"sweep: {cell.file} is not a finished result of its cell" in done.stderr,
               f"{why} is not taken as done")
-    check((results_dir / plain[3].file).stat().st_mtime_ns == stamp[plain[3].id],
+    check((results_dir / plain[3].file).stat().st_mtime_ns == SPOILED["stamp"][plain[3].id],
           "a finished cell is not run again")
 
 
-def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None):
+def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
     """Runs the sweep with cell jobs held at chosen instants (ncube.run_cell's test hook,
     NCUBE_TEST_PAUSE: {point: cell}), waits until every one is reached, calls before_stop and
     stops the sweep with SIGTERM, as Ctrl-C or a scheduler would: the instant of the stop is
@@ -208,7 +224,8 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
     signals_dir.mkdir()
     environment = dict(os.environ, NCUBE_TEST_PAUSE=",".join(f"{point}:{cell.file}" for point, cell
                                                              in pauses.items()),
-                       NCUBE_TEST_PAUSE_DIR=str(signals_dir))
+                       NCUBE_TEST_PAUSE_DIR=str(signals_dir),
+                       NCUBE_SIMULATE=str(simulate or SIMULATE))
     # A job per pause held at once, and one more core for the others to run meanwhile.
     process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir),
                                         "--cores", str(max(2, len(pauses) + 1))],
@@ -245,16 +262,30 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell runs seconds on one host thread: its simulation is running when the quick
-    # cells' jobs reach their pauses.
+    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate has its
+    # simulation (the real one, exec'd) run to convergence at 1e-10 with 64 samples (about
+    # 4,000 iterations, some 15 s on one host thread), so it is running when the quick cells'
+    # jobs reach their pauses; the resume runs the cell as the sweep file has it: one
+    # iteration, a fraction of a second.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 400, samples: 64},\n"
+        "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
-    results_dir = work / "killed"
+    # The local sweep's folder, its spoiled cells waiting: the resume runs both sweeps.
+    results_dir = work / "res"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow, earlier = loaded.cells
+    slow_simulate = work / "simulate-slow"
+    slow_simulate.write_text(
+        f'#!/bin/bash\ncase " $* " in *{slow.id}*) ;; *) exec {SIMULATE} "$@";; esac\n'
+        'args=()\nwhile [ $# -gt 0 ]; do\n  case "$1" in\n'
+        '    --iterations) args+=(--iterations 100000); shift 2;;\n'
+        '    --samples) args+=(--samples 64); shift 2;;\n'
+        '    --convergence) args+=(--convergence 1e-10); shift 2;;\n'
+        '    *) args+=("$1"); shift;;\n  esac\ndone\n'
+        f'exec {SIMULATE} "${{args[@]}}"\n')
+    slow_simulate.chmod(0o755)
     seen = {}
 
     def before_stop():
@@ -274,7 +305,7 @@ def test_kill_and_resume(work):
     # temporary name, not yet given its final name.
     reached = stopped_sweep(work / "kill.yaml", results_dir,
                             {"written": quick, "started": slow, "verified": earlier},
-                            work / "kill-signals", before_stop)
+                            work / "kill-signals", before_stop, simulate=slow_simulate)
     check(reached and (results_dir / quick.file).exists() and seen["running"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
     kept = file_state(results_dir / quick.file)
@@ -289,11 +320,14 @@ def test_kill_and_resume(work):
           "a cell stopped before its file got its name leaves no file at all")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
-    # The next run finishes the interrupted cells only.
-    done = run_sweep(work / "kill.yaml", "--results", results_dir, timeout=280)
+    # The next run finishes the interrupted cells only; with test_local_sweep's sweep file too
+    # (its folder), it runs its 3 spoiled cells again: 3 of the 8 cells finished (the quick
+    # cell, 2 of the local sweep's), 5 to run.
+    done = run_sweep(work / "tiny.yaml", work / "kill.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
-    check("1 with a finished result file" in done.stdout and "2 to run" in done.stdout,
+    check("3 with a finished result file" in done.stdout and "5 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
+    check_reruns(done)
     check(file_state(results_dir / quick.file) == kept and not jobs_run(results_dir, quick),
           "the finished cell is kept (no job for it; same file, time and bytes)")
     check(jobs_run(results_dir, slow) and

@@ -254,6 +254,16 @@ def run_snakemake(command, results_dir=None, pending=(), verbose=True):
             except OSError:   # a full disk: said by the plain line; the partial log stays
                 pass
 
+    def ended():
+        """Whether Snakemake has exited, its status left for Popen to collect. Not Popen.poll:
+        this runs in a signal handler that may have interrupted process.wait(), which holds the
+        lock poll needs, and poll then says "running" until the grace is over."""
+        try:
+            return os.waitid(os.P_PID, process.pid,
+                             os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None
+        except ChildProcessError:   # already collected
+            return True
+
     def stop(signum, _frame):
         for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 0.0)):
             try:
@@ -261,7 +271,7 @@ def run_snakemake(command, results_dir=None, pending=(), verbose=True):
             except ProcessLookupError:
                 break
             deadline = time.monotonic() + grace
-            while process.poll() is None and time.monotonic() < deadline:
+            while not ended() and time.monotonic() < deadline:
                 time.sleep(0.1)
         # Jobs of the group may outlive Snakemake itself by a moment.
         try:
