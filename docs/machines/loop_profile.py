@@ -30,6 +30,7 @@ import argparse
 import json
 import os
 import re
+import resource
 import subprocess
 import sys
 import tempfile
@@ -48,7 +49,7 @@ PAGE = os.path.join(HERE, "probe.md")
 BEGIN, END = "<!-- loop-profile:begin -->", "<!-- loop-profile:end -->"
 ROOMS = [f"room of {n} patches" for n in (19, 49, 103, 241, 505, 985)]
 SCENES = [f"{s} {o}" for s in ("cornell-box", "scene0", "scene1", "scene2")
-          for o in ("in order", "shuffled")]
+          for o in ("in order", "shuffled")] + ["scene1 receivers together", "scene2 receivers together"]
 # The simulated caches: a core of AMD's Zen 2/3 as its manuals give it, first-level 32 KiB 8-way,
 # 64-byte lines; cachegrind's last level is set to the core's own second level, 512 KiB 8-way
 # (this guest's /sys shows no cache sizes: assumed). Cachegrind has no prefetcher.
@@ -84,8 +85,113 @@ def native(rounds):
     for line in done.stdout.splitlines()[1:]:
         cells = [c.strip() for c in line.split("|")]
         rows[cells[0]] = {"passes": int(cells[4]), "median_s": float(cells[5]),
-                          "spread_percent": float(cells[6].rstrip(" %"))}
+                          "spread_percent": float(cells[6].rstrip(" %")), "ns_a_test": float(cells[9])}
     return rows
+
+
+# Whole runs of the scenes, as docs/machines/prediction_table.py times them: (scene, N), the
+# iterations N+1 .. 2N the difference of a run of N and one of 2N (natively); under cachegrind
+# fewer, (scene, a, b), the difference of a and b iterations.
+REAL = [("cornell-box", 40), ("scene0", 20), ("scene1", 3), ("scene2", 1)]
+REAL_COUNTED = [("cornell-box", 10, 20), ("scene0", 5, 10), ("scene1", 1, 2)]
+KINDS = ["ray_patch_tests", "plane_crossings", "rays", "blocked_rays"]
+SIMULATE = os.path.join(ROOT, "build", "simulate")
+
+
+def simulate_run(scene, iterations, work, wrap=()):
+    out = os.path.join(work, f"{scene}-{iterations}.json")
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run(["nice", "-n", "19", *wrap, SIMULATE, os.path.join(ROOT, "scenes", scene + ".json"),
+                    "--R", "1", "--V", "0", "--iterations", str(iterations), "--reference-visibility",
+                    "--threads", "1", "--platform", PLATFORM, "--json", out, "--quiet"],
+                   check=True, capture_output=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    result = json.loads(input_file.read_input_text(out, "a result file", 1 << 26))
+    return {"cpu": after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime,
+            "simulated": result["simulated_seconds"],
+            "counts": {k: result["counts"].get(k, 0) for k in KINDS}}
+
+
+def real_round():
+    """One round: each scene's runs of N and 2N iterations, then a --scenes process of 3 rounds."""
+    row = {"real": {}}
+    with tempfile.TemporaryDirectory() as work:
+        for scene, n in REAL:
+            row["real"][scene] = [simulate_run(scene, n, work), simulate_run(scene, 2 * n, work)]
+    row["loop"] = native(3)
+    return row
+
+
+def real_counted(item):
+    """The loop function's own instructions (BruteForceOccluders::answer) in two whole runs."""
+    scene, a, b = item
+    out = {}
+    with tempfile.TemporaryDirectory() as work:
+        for iterations in (a, b):
+            cg = os.path.join(work, "cg.out")
+            run = simulate_run(scene, iterations, work,
+                               ("valgrind", "--tool=cachegrind", "--cache-sim=yes",
+                                "--branch-sim=yes", *CACHES, f"--cachegrind-out-file={cg}"))
+            text = subprocess.run(["cg_annotate", "--auto=no", cg], capture_output=True, text=True,
+                                  check=True).stdout
+            line = [x for x in text.splitlines() if "BruteForceOccluders::answer" in x][0]
+            numbers = [int(t.replace(",", "")) for t in line.split("???")[0].split()
+                       if re.fullmatch(r"[\d,]+", t)]
+            out[iterations] = {"counts": run["counts"], "answer": dict(zip(EVENTS, numbers))}
+    return {"iterations": [a, b],
+            "work": {k: out[b]["counts"][k] - out[a]["counts"][k] for k in KINDS},
+            "pass": {e: out[b]["answer"][e] - out[a]["answer"][e] for e in EVENTS}}
+
+
+def real_tables(data, ir_fit):
+    out = []
+    if data.get("real_cachegrind"):
+        out += ["", "Whole runs under cachegrind (the loop function's own counts, the difference "
+                "of two runs' iterations), against the loop's instructions fitted on the counted "
+                "kinds above:", "",
+                "| scene, iterations | tests a ray | crossing share | Ir a test | fitted from the "
+                "counts over counted | D1 misses a test | mispredicts a test |",
+                "|---|--:|--:|--:|--:|--:|--:|"]
+        for scene, r in data["real_cachegrind"].items():
+            w, p = r["work"], r["pass"]
+            t = w["ray_patch_tests"]
+            fitted = sum(c * w[k] for c, k in zip(ir_fit, KINDS))
+            a, b = r["iterations"]
+            out.append(f"| {scene}, iteration{'s' if b > a + 1 else ''} "
+                       f"{f'{a + 1} to {b}' if b > a + 1 else b} | "
+                       f"{t / w['rays']:.1f} | {w['plane_crossings'] / t:.3f} | {p['Ir'] / t:.1f} | "
+                       f"{100 * (fitted / p['Ir'] - 1):+.2f} % | {(p['D1mr'] + p['D1mw']) / t:.3f} | "
+                       f"{p['Bcm'] / t:.3f} |")
+    if data.get("real"):
+        costs, rates = cost_model(), platform_rates(PLATFORM)
+        out += ["", f"Whole runs natively, {len(data['real'])} rounds (each: the runs of N and 2N "
+                "iterations, one process each, and a --scenes process of 3 rounds beside them): "
+                "the host's ns a test of the timed iterations (their CPU seconds less what the "
+                "committed platform simulates for their other work, rays and blocked rays) over "
+                "the loop's ns a test in the same round, and the crossing share of each:", "",
+                "| scene | crossing share, run / loop | ns a test, run over loop: median (least to "
+                "largest) | expected from the counted flops a test | simulated over host − 1 at "
+                "the committed rates, median (least to largest) |", "|---|--:|--:|--:|--:|"]
+        for scene, _ in REAL:
+            ratio, sim = [], []
+            for row in data["real"]:
+                a, b = row["real"][scene]
+                d = {k: b["counts"][k] - a["counts"][k] for k in KINDS}
+                cpu, simulated = b["cpu"] - a["cpu"], b["simulated"] - a["simulated"]
+                test_flops = (d["ray_patch_tests"] * costs["flops_per_ray_patch_test"] +
+                              d["plane_crossings"] * costs["flops_per_plane_crossing"])
+                host_tests = cpu - (simulated - test_flops / rates["test_speed"])
+                ratio.append(host_tests / d["ray_patch_tests"] * 1e9 / row["loop"][scene + " in order"]["ns_a_test"])
+                sim.append(simulated / cpu - 1)
+            loop = data["cachegrind"][scene + " in order"]["work"]
+            share_loop = loop["plane_crossings"] / loop["ray_patch_tests"]
+            share_run = d["plane_crossings"] / d["ray_patch_tests"]
+            expected = ((costs["flops_per_ray_patch_test"] + share_run * costs["flops_per_plane_crossing"]) /
+                        (costs["flops_per_ray_patch_test"] + share_loop * costs["flops_per_plane_crossing"]))
+            out.append(f"| {scene} | {share_run:.3f} / {share_loop:.3f} | "
+                       f"{np.median(ratio):.2f} ({min(ratio):.2f} to {max(ratio):.2f}) | "
+                       f"{expected:.2f} | {spread_text(sim)} |")
+    return out
 
 
 def fit(x, y):
@@ -118,7 +224,8 @@ def rooms_to_scenes(data, runs):
     misses = {r: {"model": [], "Ir": [], "Ir+Bcm": []} for r in runs}
     for proc in data["native"]:
         t, model_x, ir, bcm = {}, {}, {}, {}
-        for r in runs:
+        present = [r for r in runs if r in proc]  # a run added later is in later processes only
+        for r in present:
             w, p = data["cachegrind"][r]["work"], data["cachegrind"][r]["pass"]
             t[r] = proc[r]["median_s"] / proc[r]["passes"]
             others = (w["rays"] * costs["flops_per_ray"] / rates["ray_speed"] +
@@ -129,15 +236,15 @@ def rooms_to_scenes(data, runs):
             ir[r], bcm[r] = p["Ir"], p["Bcm"]
         xs = np.array([model_x[r][0] / model_x[r][1] for r in rooms])
         s = xs.sum() / (xs @ xs)  # relative least squares, one rate
-        for r in runs:
+        for r in present:
             misses[r]["model"].append(s * model_x[r][0] / model_x[r][1] - 1)
         xs = np.array([ir[r] / t[r] for r in rooms])
         s = xs.sum() / (xs @ xs)
-        for r in runs:
+        for r in present:
             misses[r]["Ir"].append(s * ir[r] / t[r] - 1)
         a = np.array([[ir[r] / t[r], bcm[r] / t[r]] for r in rooms])
         c, *_ = np.linalg.lstsq(a, np.ones(len(rooms)), rcond=None)
-        for r in runs:
+        for r in present:
             misses[r]["Ir+Bcm"].append((c[0] * ir[r] + c[1] * bcm[r]) / t[r] - 1)
         misses.setdefault("_coef", []).append(c)
     return misses
@@ -155,7 +262,7 @@ def tables(data):
         cg = data["cachegrind"][r]
         tests = cg["work"]["ray_patch_tests"]
         p = cg["pass"]
-        ns = [1e9 * proc[r]["median_s"] / proc[r]["passes"] / tests for proc in data["native"]]
+        ns = [1e9 * proc[r]["median_s"] / proc[r]["passes"] / tests for proc in data["native"] if r in proc]
         per[r] = {"ns": float(np.median(ns)), "Ir": p["Ir"] / tests,
                   "D1": (p["D1mr"] + p["D1mw"]) / tests, "LL": (p["DLmr"] + p["DLmw"]) / tests,
                   "Bcm": p["Bcm"] / tests, "Bc": p["Bc"] / tests,
@@ -195,6 +302,7 @@ def tables(data):
             f"crossing, {c[2]:.1f} a ray, {c[3]:.1f} a blocked ray; residuals "
             f"{res.min():+.2f} to {res.max():+.2f} % (" +
             ", ".join(f"{r} {v:+.2f} %" for r, v in zip(runs, res)) + ")."]
+    out += real_tables(data, c)
     misses = rooms_to_scenes(data, runs)
     coef = np.array(misses.pop("_coef"))
     out += ["", f"Fitted on the six rooms alone, in each of the {len(data['native'])} processes, "
@@ -216,6 +324,15 @@ def tables(data):
         ratios = [(1 + a) / (1 + b) - 1 for a, b in zip(misses[scene + " in order"]["model"],
                                                          misses[scene + " shuffled"]["model"])]
         out.append(f"| {scene} | {spread_text(ratios)} |")
+    together = [f"{x} receivers together" for x in ("scene1", "scene2") if f"{x} receivers together" in runs]
+    if together:
+        out += ["", "| scene | the model's miss, its receivers one after another over every k-th (in "
+                "order), median over the processes that timed both (least to largest) |", "|---|--:|"]
+        for r in together:
+            scene = r.split()[0]
+            m_t = misses[r]["model"]
+            m_o = misses[scene + " in order"]["model"][-len(m_t):]
+            out.append(f"| {scene} | {spread_text([(1 + a) / (1 + b) - 1 for a, b in zip(m_t, m_o)])} |")
     # What the model's kinds leave (each run's median miss above) against what cachegrind
     # counts a test beyond them: does any of them carry it?
     left = np.array([np.median(misses[r]["model"]) for r in runs])
@@ -248,10 +365,24 @@ def main():
     parser.add_argument("--page", action="store_true",
                         help="write the tables into docs/machines/probe.md between its "
                              "loop-profile markers")
+    parser.add_argument("--real", type=int, default=0, metavar="ROUNDS",
+                        help="with --from: time the scenes' whole runs this many rounds, and count "
+                             "three of them under cachegrind, added to its measurements")
     args = parser.parse_args()
     if args.source:
         data = json.loads(input_file.read_input_text(args.source, "measurements", 1 << 24))
+        if args.real:
+            with ThreadPoolExecutor(args.jobs) as pool:
+                data["real_cachegrind"] = {item[0]: r for item, r in
+                                           zip(REAL_COUNTED, pool.map(real_counted, REAL_COUNTED))}
+            data["real"] = [real_round() for _ in range(args.real)]
+            if args.out:
+                output_file.write(args.out, json.dumps(data, indent=1) + "\n")
         if args.more:
+            missing = [r for r in ROOMS + SCENES if r not in data["cachegrind"]]
+            with ThreadPoolExecutor(args.jobs) as pool:
+                for run, counted in zip(missing, pool.map(simulate_counts, missing)):
+                    data["cachegrind"][run] = counted
             for _ in range(args.processes):
                 data["native"].append(native(args.rounds))
             if args.out:

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <memory>
 #include <random>
@@ -61,7 +62,9 @@ struct SceneShots {
 
 constexpr double kFlopsAPass = 1.5e8;
 
-std::shared_ptr<SceneShots> scene_shots(const std::string& scene_name, bool shuffled) {
+// A scene's shots cut to about kFlopsAPass: every k-th receiver (`together` false), or the
+// first receivers of each shooter's list, one after another as a whole run meets them.
+std::shared_ptr<SceneShots> scene_shots(const std::string& scene_name, bool shuffled, bool together) {
   const std::string root = repository_root();
   const CostModel costs = load_cost_model(root + "/platforms/cost_model.json");
   auto v = std::make_shared<SceneShots>();
@@ -98,7 +101,10 @@ std::shared_ptr<SceneShots> scene_shots(const std::string& scene_name, bool shuf
     const auto stride = std::size_t(std::ceil(estimate / kFlopsAPass));
     for (auto& receivers : v->receivers) {
       std::vector<ElementRef> kept;
-      for (std::size_t k = 0; k < receivers.size(); k += stride) kept.push_back(receivers[k]);
+      if (together)
+        kept.assign(receivers.begin(), receivers.begin() + std::ptrdiff_t((receivers.size() + stride - 1) / stride));
+      else
+        for (std::size_t k = 0; k < receivers.size(); k += stride) kept.push_back(receivers[k]);
       receivers = kept;
     }
   }
@@ -128,10 +134,17 @@ std::vector<LoopRun> scene_loop_runs() {
   for (const std::string scene_name : {"cornell-box", "scene0", "scene1", "scene2"})
     for (const bool shuffled : {false, true})
       runs.push_back({scene_name + (shuffled ? " shuffled" : " in order"), [scene_name, shuffled] {
-                        std::shared_ptr<SceneShots> shots = scene_shots(scene_name, shuffled);
+                        std::shared_ptr<SceneShots> shots = scene_shots(scene_name, shuffled, false);
                         return std::function<void(WorkCounts&)>(
                             [shots](WorkCounts& c) { shots->pass(c); });
                       }});
+  // The two scenes cut to a share of their receivers: those receivers one after another, as a
+  // whole run meets them, instead of every k-th.
+  for (const std::string scene_name : {"scene1", "scene2"})
+    runs.push_back({scene_name + " receivers together", [scene_name] {
+                      std::shared_ptr<SceneShots> shots = scene_shots(scene_name, false, true);
+                      return std::function<void(WorkCounts&)>([shots](WorkCounts& c) { shots->pass(c); });
+                    }});
   return runs;
 }
 
