@@ -22,8 +22,17 @@ test_speed, and the four scenes with their patches in order and shuffled):
 
 Then ns a test is regressed over the runs on each simulated count a test (least squares with
 an intercept), and on instructions and mispredictions together; the table gives each fit's
-slope, R^2 and its largest residual. The measurements are kept in --out (JSON); --from makes the
-tables again from such a file without running anything.
+slope, R^2 and its largest residual. A pass's instructions are fitted on the counted kinds; each
+process's times are fitted on the rooms alone (the model's way, instructions at one rate, and
+instructions with the simulated mispredictions) and the scenes predicted from them; each run's
+median miss of the model is regressed on the simulated counts. With --real, the scenes' whole
+runs as docs/machines/prediction_table.py times them: three under cachegrind (the loop
+function's own counts, the difference of two runs' iterations) and ROUNDS rounds natively, each
+against a --scenes process in the same round.
+
+The measurements are kept in --out (JSON); --from makes the tables again from such a file
+without running anything (--more, --real: adds to it); --page writes them into
+docs/machines/probe.md between its loop-profile markers.
 """
 
 import argparse
@@ -300,7 +309,9 @@ def tables(data):
     out += ["", "Instructions of a pass fitted on the counted kinds over all "
             f"{len(runs)} runs (relative least squares): {c[0]:.1f} a test, {c[1]:.1f} a "
             f"crossing, {c[2]:.1f} a ray, {c[3]:.1f} a blocked ray; residuals "
-            f"{res.min():+.2f} to {res.max():+.2f} % (" +
+            f"{res.min():+.2f} to {res.max():+.2f} % (the counts move together over these runs, "
+            "so a coefficient is not its kind's own cost, and a ray's comes out negative; the "
+            "residuals are what this checks: " +
             ", ".join(f"{r} {v:+.2f} %" for r, v in zip(runs, res)) + ")."]
     out += real_tables(data, c)
     misses = rooms_to_scenes(data, runs)
