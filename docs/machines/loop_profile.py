@@ -380,8 +380,14 @@ def main():
                         help="with --from: time the scenes' whole runs this many rounds, and count "
                              "three of them under cachegrind, added to its measurements")
     args = parser.parse_args()
+    needs = [] if args.source and not (args.more or args.real) else [PROBE]
+    needs += [SIMULATE] if args.real else []
+    for program in needs:
+        if not os.access(program, os.X_OK):
+            raise SystemExit(f"loop_profile.py: {program} is not built (cmake --build build); "
+                             "nothing written")
     if args.source:
-        data = json.loads(input_file.read_input_text(args.source, "measurements", 1 << 24))
+        data = input_file.read_json(args.source, "measurements", 1 << 24)
         if args.real:
             with ThreadPoolExecutor(args.jobs) as pool:
                 data["real_cachegrind"] = {item[0]: r for item, r in
@@ -419,4 +425,13 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except SystemExit as e:
+        if isinstance(e.code, str):
+            print(e.code, file=sys.stderr)
+            sys.exit(2)
+        raise
+    except (input_file.InputFileError, KeyError) as e:
+        print(f"loop_profile.py: {e} (not a file this script wrote?); nothing written", file=sys.stderr)
+        sys.exit(2)
