@@ -377,8 +377,8 @@ def main():
                         help="write the tables into docs/machines/probe.md between its "
                              "loop-profile markers")
     parser.add_argument("--real", type=int, default=0, metavar="ROUNDS",
-                        help="with --from: time the scenes' whole runs this many rounds, and count "
-                             "three of them under cachegrind, added to its measurements")
+                        help="with --from: time the scenes' whole runs this many rounds more, and count "
+                             "three of them under cachegrind (once), added to its measurements")
     args = parser.parse_args()
     needs = [] if args.source and not (args.more or args.real) else [PROBE]
     needs += [SIMULATE] if args.real else []
@@ -388,11 +388,12 @@ def main():
                              "nothing written")
     if args.source:
         data = input_file.read_json(args.source, "measurements", 1 << 24)
-        if args.real:
-            with ThreadPoolExecutor(args.jobs) as pool:
-                data["real_cachegrind"] = {item[0]: r for item, r in
-                                           zip(REAL_COUNTED, pool.map(real_counted, REAL_COUNTED))}
-            data["real"] = [real_round() for _ in range(args.real)]
+        if args.real:  # the whole runs' counts once; their rounds added to those kept
+            if "real_cachegrind" not in data:
+                with ThreadPoolExecutor(args.jobs) as pool:
+                    data["real_cachegrind"] = {item[0]: r for item, r in
+                                               zip(REAL_COUNTED, pool.map(real_counted, REAL_COUNTED))}
+            data["real"] = data.get("real", []) + [real_round() for _ in range(args.real)]
             if args.out:
                 output_file.write(args.out, json.dumps(data, indent=1) + "\n")
         if args.more:
