@@ -96,6 +96,17 @@ set +e; "$probe" --scenes 1 --network "$root/platforms/machines/cm5.xml" >/dev/n
 [[ $code == 2 ]] || fail "--scenes on a platform without rates: exit $code, not 2: $(cat "$tmp/err")"
 grep -q "cm5.xml: no <prop id=\"ray_speed\">" "$tmp/err" || fail "--scenes: not named: $(cat "$tmp/err")"
 [[ $(wc -l < "$tmp/err") == 1 ]] || fail "--scenes: not one line: $(cat "$tmp/err")"
+# --loop-only (one run of --scenes, for a simulator of the caches): a ray of the room of 19
+# patches tests every patch but the two it starts and ends on, 17, and --passes 0 runs none;
+# a name it does not know is bad input, named with the runs it knows (exit 2, one line).
+"$probe" --loop-only "room of 19 patches" --passes 2 > "$tmp/loop" || fail "--loop-only failed"
+grep -q "^room of 19 patches | passes 2 | patches_tested_a_ray 17.0000 |" "$tmp/loop" ||
+  fail "--loop-only: not 17 tests a ray in the room of 19 patches: $(cat "$tmp/loop")"
+"$probe" --loop-only "room of 19 patches" --passes 0 | grep -q "| rays 0 |" || fail "--passes 0 ran rays"
+set +e; "$probe" --loop-only "room of 20 patches" >/dev/null 2>"$tmp/err"; code=$?; set -e
+[[ $code == 2 ]] || fail "--loop-only of an unknown run: exit $code, not 2: $(cat "$tmp/err")"
+grep -q 'no run "room of 20 patches" (runs: room of 19 patches, ' "$tmp/err" || fail "--loop-only: not named: $(cat "$tmp/err")"
+[[ $(wc -l < "$tmp/err") == 1 ]] || fail "--loop-only: not one line: $(cat "$tmp/err")"
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
 [[ $(grep -c "), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 8 ]] ||
   fail "the file does not give the loop's 8 runs with their residuals"

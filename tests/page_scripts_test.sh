@@ -67,6 +67,9 @@ for script in analysis/openings.py docs/model_tables.py docs/options_table.py do
               docs/machines/index_table.py platforms/generate.py platforms/machines/generate.py; do
   unchanged "$script"
 done
+# docs/machines/loop_profile.py's tables of docs/machines/probe.md, made again from the committed
+# measurements (--from, no run), are the committed ones.
+unchanged docs/machines/loop_profile.py --from docs/machines/loop_profile.json --page
 
 # A page of an incomplete run never replaces the committed one: --partial and --summary write
 # only where they are told (--out-dir, --output/--figures), and every output is checked before

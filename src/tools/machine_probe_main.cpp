@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <ctime>
 #include <iomanip>
@@ -523,6 +524,24 @@ void time_rooms(std::vector<std::unique_ptr<PreparedRoom>>& rooms,
 }
 
 
+// The probe's rooms whose shots test patches (the six test_speed is fitted on), as runs of
+// --scenes and --loop-only: one pass of a room's shots as the probe times it (every k-th
+// receiver in the largest rooms).
+std::vector<ncube::LoopRun> room_loop_runs(const ncube::CostModel& costs) {
+  std::vector<ncube::LoopRun> runs;
+  for (const Room& room : kRooms) {
+    if (room.nothing_to_test || room.screen > 0) continue;
+    const std::string name = "room of " + std::to_string(6 * room.cut * room.cut + 1 + 6 * room.boxes) +
+                             " patches";
+    runs.push_back({name, [room, &costs] {
+                      std::shared_ptr<PreparedRoom> prepared = prepare_room(room, costs);
+                      return std::function<void(ncube::WorkCounts&)>(
+                          [prepared](ncube::WorkCounts& c) { prepared->loop_pass(c); });
+                    }});
+  }
+  return runs;
+}
+
 int machine_probe(int argc, char** argv) {
   const std::string root = ncube::repository_root();
   std::string out_file, network_file = root + "/platforms/machines/cluster-2024.xml",
@@ -544,11 +563,24 @@ int machine_probe(int argc, char** argv) {
                  "instead of probing: the loop's cost a test in each scene of scenes/, timed "
                  "round by round this many rounds (against --network's rates), no file written")
       ->check(ncube::decimal_count(1, 1001));
+  std::string loop_only;
+  int loop_passes = 1;
+  app.add_option("--loop-only", loop_only,
+                 "instead of probing: set up the one run of --scenes so named (\"room of 241 "
+                 "patches\", \"scene2 shuffled\") and run its shots --passes times, for a "
+                 "simulator of the caches (docs/machines/loop_profile.py)");
+  app.add_option("--passes", loop_passes, "passes of --loop-only's shots")
+      ->capture_default_str()->check(ncube::decimal_count(0, 1000));
   app.add_flag("--least", fit_least,
                "fit each run's least time over its repeats instead of their median");
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
   if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
-  if (scene_rounds > 0) return ncube::print_scene_test_costs(scene_rounds, network_file);
+  if (scene_rounds > 0 || !loop_only.empty()) {
+    const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
+    const std::vector<ncube::LoopRun> rooms = room_loop_runs(costs);
+    if (!loop_only.empty()) return ncube::run_loop_passes(loop_only, loop_passes, rooms);
+    return ncube::print_scene_test_costs(scene_rounds, network_file, rooms);
+  }
   if (out_file.empty()) {
     std::cerr << "machine_probe: --out is required (the platform file to write)\n";
     return 2;
