@@ -34,8 +34,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
-from ncube import (accuracy, claim_one, error_parts, page, paths, plotting,  # noqa: E402
-                   runner, sweep)
+from ncube import (accuracy, claim_one, error_parts, page, paths, runner,  # noqa: E402
+                   sweep)
 from ncube import opening as op  # noqa: E402
 
 ROOT = paths.ROOT
@@ -235,6 +235,7 @@ def picture_label(cell):
 
 def pictures(cells, results, jobs, path):
     """The cells' pictures side by side, one row per scene, in the sweep's order."""
+    from ncube import plotting   # matplotlib (1 s a start) where a figure is drawn, not before
     import matplotlib.image
     import matplotlib.pyplot as plt
     folder = results / "claims" / "pictures"
@@ -276,6 +277,7 @@ def series_colour(row):
 
 
 def plot(rows, path):
+    from ncube import plotting   # matplotlib (1 s a start) where a figure is drawn, not before
     import matplotlib.pyplot as plt
     scenes = sorted({r["scene"] for r in rows})
     measures = (("b_element", "(b) form-factor error, element RMS"),

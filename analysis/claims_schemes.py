@@ -45,7 +45,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ncube import accuracy, error_parts, page, paths, plotting, sweep  # noqa: E402
+from ncube import accuracy, error_parts, page, paths, sweep  # noqa: E402
 
 ROOT = paths.ROOT
 SWEEP = ROOT / "experiments" / "claims" / "schemes.yaml"
@@ -314,6 +314,7 @@ def memory_cell(row, cap):
 
 
 def plot(rows, scenes, path):
+    from ncube import plotting   # matplotlib (1 s a start) where the figure is drawn, not before
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, len(scenes), figsize=(4.6 * len(scenes), 4), squeeze=False,
                              layout="constrained")

@@ -27,10 +27,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-import matplotlib  # noqa: E402
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+np = plt = None   # numpy and matplotlib, imported by main() once the runs can start: --help
+                  # and the refusal without a simulator need neither (1 s a start)
 
 from ncube import opening as op  # noqa: E402
 from ncube import page  # noqa: E402
@@ -205,6 +203,11 @@ def main():
     argparse.ArgumentParser(description=__doc__.splitlines()[0]).parse_args()
     page.will_run("memory_sensitivity.py", "its memory-plan-only runs (--iterations 0) itself",
                   str(ROOT / "build" / "simulate"))
+    global np, plt
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
     document = json.loads((ROOT / "platforms" / "cost_model.json").read_text())
     platform = json.loads((ROOT / "platforms" / "ncube2.json").read_text())
     capacity = float(platform["parameters"]["node_memory"]["value"])

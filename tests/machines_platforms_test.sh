@@ -33,6 +33,7 @@ if ! /usr/bin/python3 "$root/docs/machines/index_table.py" --check; then status=
 
 # 2. Each file runs; its figures are the page's.
 runs=0
+ran=()   # platform file, result file: checked by one Python below (one start, not one a file)
 for f in "$root"/platforms/machines/*.xml; do
   name="$(basename "$f" .xml)"
   out="$tmp/$name.json"
@@ -40,57 +41,64 @@ for f in "$root"/platforms/machines/*.xml; do
     echo "FAIL: $name: ./simulate did not run:" >&2; cat "$tmp/$name.log" >&2; status=1; continue
   fi
   runs=$((runs + 1))
-  if ! /usr/bin/python3 - "$root" "$f" "$out" <<'EOF'
+  ran+=("$f" "$out")
+done
+if ((runs)) && ! /usr/bin/python3 - "$root" "${ran[@]}" <<'EOF'
 import json, os, re, sys
-root, platform, result = sys.argv[1:]
+root, pairs = sys.argv[1], sys.argv[2:]
 sys.path.insert(0, os.path.join(root, "docs", "machines"))
 import index_table  # the table's own reader of the XML, for the link figures
 
-base = os.path.basename(platform)[:-4]
-family = re.search(r"-n(\d+)$", base)
-machine = base[:family.start()] if family else base
-nodes = int(family.group(1)) if family else 64
-failures = []
-r = json.load(open(result))
-p = r["provenance"]["platform"]
-values = p["values"]
-if r["status"] != "ok" or p["format"] != "simgrid-xml":
-    failures.append("status %s, format %s" % (r["status"], p["format"]))
-if values["nodes"] != nodes:
-    failures.append("%s nodes, expected %d" % (values["nodes"], nodes))
+def check(platform, result):
+    base = os.path.basename(platform)[:-4]
+    family = re.search(r"-n(\d+)$", base)
+    machine = base[:family.start()] if family else base
+    nodes = int(family.group(1)) if family else 64
+    failures = []
+    r = json.load(open(result))
+    p = r["provenance"]["platform"]
+    values = p["values"]
+    if r["status"] != "ok" or p["format"] != "simgrid-xml":
+        failures.append("status %s, format %s" % (r["status"], p["format"]))
+    if values["nodes"] != nodes:
+        failures.append("%s nodes, expected %d" % (values["nodes"], nodes))
 
-page_path = os.path.join(root, "docs", "machines", machine + ".md")
-page = open(page_path, encoding="utf-8").read()
-stated = {}
-for line in page.splitlines():
-    cells = [c.strip() for c in line.split("|")[1:-1]]
-    if len(cells) < 2 or not cells[0].startswith("`"):
-        continue
-    number = re.match(r"[0-9][0-9.eE+-]*", cells[1].replace(",", ""))
-    for name in re.findall(r"`(\w+)`", cells[0]):
-        if number:
-            stated[name] = float(number.group(0))
-xml = index_table.describe(platform)
-read_back = {"nodes": values["nodes"] if not family else 64, "node_speed": values["node_speed"],
-             "node_memory": values["node_memory"], "send_overhead": values["send_overhead"],
-             "receive_overhead": values["receive_overhead"], "link_bandwidth": xml["bandwidth"],
-             "hop_latency": xml["latency"]}
-for rate in ("test_speed", "arithmetic_speed", "memory_speed"):  # given by a machine that has them
-    if rate in values:
-        read_back[rate] = values[rate]
-for name, value in read_back.items():
-    if name not in stated:
-        failures.append("%s states no `%s`" % (os.path.relpath(page_path, root), name))
-    elif abs(stated[name] - value) > 1e-9 * abs(value):
-        failures.append("`%s`: the page states %.10g, the platform has %.10g" % (name, stated[name], value))
-if "<!-- network-table:begin -->" not in page or "<!-- network-table:end -->" not in page:
-    failures.append("%s lacks the network-table markers" % os.path.relpath(page_path, root))
-for failure in failures:
-    print("FAIL: %s: %s" % (base, failure), file=sys.stderr)
-sys.exit(1 if failures else 0)
+    page_path = os.path.join(root, "docs", "machines", machine + ".md")
+    page = open(page_path, encoding="utf-8").read()
+    stated = {}
+    for line in page.splitlines():
+        cells = [c.strip() for c in line.split("|")[1:-1]]
+        if len(cells) < 2 or not cells[0].startswith("`"):
+            continue
+        number = re.match(r"[0-9][0-9.eE+-]*", cells[1].replace(",", ""))
+        for name in re.findall(r"`(\w+)`", cells[0]):
+            if number:
+                stated[name] = float(number.group(0))
+    xml = index_table.describe(platform)
+    read_back = {"nodes": values["nodes"] if not family else 64, "node_speed": values["node_speed"],
+                 "node_memory": values["node_memory"], "send_overhead": values["send_overhead"],
+                 "receive_overhead": values["receive_overhead"], "link_bandwidth": xml["bandwidth"],
+                 "hop_latency": xml["latency"]}
+    for rate in ("test_speed", "arithmetic_speed", "memory_speed"):  # given by a machine that has them
+        if rate in values:
+            read_back[rate] = values[rate]
+    for name, value in read_back.items():
+        if name not in stated:
+            failures.append("%s states no `%s`" % (os.path.relpath(page_path, root), name))
+        elif abs(stated[name] - value) > 1e-9 * abs(value):
+            failures.append("`%s`: the page states %.10g, the platform has %.10g" % (name, stated[name], value))
+    if "<!-- network-table:begin -->" not in page or "<!-- network-table:end -->" not in page:
+        failures.append("%s lacks the network-table markers" % os.path.relpath(page_path, root))
+    for failure in failures:
+        print("FAIL: %s: %s" % (base, failure), file=sys.stderr)
+    return failures
+
+failed = False
+for k in range(0, len(pairs), 2):
+    failed = bool(check(pairs[k], pairs[k + 1])) or failed
+sys.exit(1 if failed else 0)
 EOF
-  then status=1; fi
-done
+then status=1; fi
 [[ $runs -ge 5 ]] || { echo "FAIL: only $runs platform files ran" >&2; status=1; }
 
 # 3. The published figures name existing files and carry a tolerance.

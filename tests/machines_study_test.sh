@@ -105,53 +105,59 @@ grid:
     - {form_factors: hemicube, scene: scene1, R: 64, V: 0, iterations: 5}
     - {parallelisation: shooters, scene: scene1, R: 64, V: 0, iterations: 3}
 EOF
-write_results() {  # $1: fat's brute-force R=64 V=0 seconds; $2: "same": every machine's
-                  # shooter-centred cell has bigmem's node split
-/usr/bin/python3 - "$root" "$work" "$1" "${2:-}" <<'PY'
+# The three canned results sets, written by one Python start into results-5, results-7 and
+# results-7-same (each moved to results/ when its turn comes: use_results): FAT is fat's
+# brute-force R=64 V=0 seconds; "same": every machine's shooter-centred cell has bigmem's node
+# split.
+/usr/bin/python3 - "$root" "$work" 5: 7: 7:same <<'PY'
 import json, os, sys
 sys.path.insert(0, sys.argv[1] + "/analysis")
 from ncube.sweep import load
 work = sys.argv[2]
 OOM = None
-times = {("ncube2", "brute-force"): [40, 30, 50], ("ncube2", "octree"): [OOM, 10, 12],
-         ("fat", "brute-force"): [10, 6, float(sys.argv[3])], ("fat", "octree"): [4, 2.5, 2],
-         ("bigmem", "brute-force"): [8, 5, 10], ("bigmem", "octree"): [1, 2, 4],
-         ("slow", "brute-force"): [80, 60, 100], ("slow", "octree"): [OOM, 20, 24]}
-# The V = 0 methods (R=64 V=0), seconds per iteration and node split (compute, overhead, waiting):
-hemicube = {"ncube2": 25, "fat": 1, "bigmem": 5, "slow": 50}
-shooters = {"ncube2": (640, (90, 5, 5)), "fat": (128, (20, 10, 70)), "bigmem": (320, (60, 2, 38)),
-            "slow": (OOM, None)}
-if sys.argv[4] == "same":
-    shooters = {m: (v, split and (60, 2, 38)) for m, (v, split) in shooters.items()}
-for cell in load(work + "/study.yaml").cells:
-    machine = os.path.basename(cell.platform_file).split(".")[0]
-    o, sent = cell.options, 0
-    if o["form_factors"] == "hemicube":
-        value, split, sent = hemicube[machine], (90, 5, 5), 6000
-    elif o["parallelisation"] == "shooters":
-        (value, split), sent = shooters[machine], 1500000
-    else:
-        value = times[(machine, cell.options["visibility"])][[4, 16, 64].index(cell.R)]
-        split = (30, 10, 60) if (machine, cell.R, cell.options["visibility"]) == ("fat", 64, "octree") \
-            else (90, 5, 5)
-    result = {"schema_version": 2, "status": "ok" if value else "out_of_memory",
-              "config": cell.config_fields(), "iterations": o["iterations"] if value else 0,
-              "converged": False, "host_seconds": 0.0, "counts": {},
-              "simulated_seconds": 20 * value if value else 0.0, "seconds_per_iteration": value,
-              "nodes": [{"node": n, "compute_seconds": split[0] / 2, "overhead_seconds": split[1] / 2,
-                         "waiting_seconds": split[2] / 2, "bytes_sent": sent}
-                        for n in range(2)] if value else [],
-              "provenance": {"scene": {"sha256": cell.scene_sha256},
-                             "platform": {"sha256": cell.platform_sha256, "simgrid_config": {}},
-                             "cost_model": {"sha256": cell.cost_model_sha256},
-                             "code_version": "canned"}}
-    if not value:
-        result["out_of_memory"] = {"role": "radiosity", "node": 0, "needed_bytes": 4317648.0,
-                                   "available_bytes": 4194304.0}
-    os.makedirs(os.path.dirname(f"{work}/results/{cell.file}"), exist_ok=True)
-    json.dump(result, open(f"{work}/results/{cell.file}", "w"))
+cells = load(work + "/study.yaml").cells
+for spec in sys.argv[3:]:
+    fat, same = spec.split(":")
+    folder = f"{work}/results-{fat}" + ("-same" if same else "")
+    times = {("ncube2", "brute-force"): [40, 30, 50], ("ncube2", "octree"): [OOM, 10, 12],
+             ("fat", "brute-force"): [10, 6, float(fat)], ("fat", "octree"): [4, 2.5, 2],
+             ("bigmem", "brute-force"): [8, 5, 10], ("bigmem", "octree"): [1, 2, 4],
+             ("slow", "brute-force"): [80, 60, 100], ("slow", "octree"): [OOM, 20, 24]}
+    # The V = 0 methods (R=64 V=0), seconds per iteration and node split (compute, overhead, waiting):
+    hemicube = {"ncube2": 25, "fat": 1, "bigmem": 5, "slow": 50}
+    shooters = {"ncube2": (640, (90, 5, 5)), "fat": (128, (20, 10, 70)), "bigmem": (320, (60, 2, 38)),
+                "slow": (OOM, None)}
+    if same == "same":
+        shooters = {m: (v, split and (60, 2, 38)) for m, (v, split) in shooters.items()}
+    for cell in cells:
+        machine = os.path.basename(cell.platform_file).split(".")[0]
+        o, sent = cell.options, 0
+        if o["form_factors"] == "hemicube":
+            value, split, sent = hemicube[machine], (90, 5, 5), 6000
+        elif o["parallelisation"] == "shooters":
+            (value, split), sent = shooters[machine], 1500000
+        else:
+            value = times[(machine, cell.options["visibility"])][[4, 16, 64].index(cell.R)]
+            split = (30, 10, 60) if (machine, cell.R, cell.options["visibility"]) == ("fat", 64, "octree") \
+                else (90, 5, 5)
+        result = {"schema_version": 2, "status": "ok" if value else "out_of_memory",
+                  "config": cell.config_fields(), "iterations": o["iterations"] if value else 0,
+                  "converged": False, "host_seconds": 0.0, "counts": {},
+                  "simulated_seconds": 20 * value if value else 0.0, "seconds_per_iteration": value,
+                  "nodes": [{"node": n, "compute_seconds": split[0] / 2, "overhead_seconds": split[1] / 2,
+                             "waiting_seconds": split[2] / 2, "bytes_sent": sent}
+                            for n in range(2)] if value else [],
+                  "provenance": {"scene": {"sha256": cell.scene_sha256},
+                                 "platform": {"sha256": cell.platform_sha256, "simgrid_config": {}},
+                                 "cost_model": {"sha256": cell.cost_model_sha256},
+                                 "code_version": "canned"}}
+        if not value:
+            result["out_of_memory"] = {"role": "radiosity", "node": 0, "needed_bytes": 4317648.0,
+                                       "available_bytes": 4194304.0}
+        os.makedirs(os.path.dirname(f"{folder}/{cell.file}"), exist_ok=True)
+        json.dump(result, open(f"{folder}/{cell.file}", "w"))
 PY
-}
+use_results() { rm -rf "$work/results"; mv "$work/results-$1" "$work/results"; }
 analyse() {
   /usr/bin/python3 "$root/analysis/machines.py" --sweep "$work/study.yaml" --results "$work/results" \
     --output "$work/machines.md" --figures "$work/figures" "$@" >/dev/null
@@ -159,7 +165,7 @@ analyse() {
 has() { grep -qF -- "$1" "$work/machines.md" || fail "machines.md lacks: $1"; }
 lacks() { if grep -qF -- "$1" "$work/machines.md"; then fail "machines.md still says: $1"; fi; }
 
-write_results 5
+use_results 5
 analyse
 [ -s "$work/figures/machines_time_vs_R.png" ] || fail "no figure"
 has "| R | V | nCube2 | fat | bigmem | slow |"
@@ -217,7 +223,7 @@ cmp -s "$work/machines.md" "$work/first.md" || fail "the same results gave anoth
 
 # One figure changes: fat's brute force at R=64 V=0 takes 7 s, so V > 0 (6 s) pays there again
 # (7/6 = 1.17) and fat's range becomes 50/7 = 7.14 at most: 4 to 7.14 times as fast.
-write_results 7
+use_results 7
 analyse
 has "| fat | 1.17 (pays; best R=16 V=3) | 0.80 (does not pay; best R=16 V=3) |"
 has "* scene1, brute-force: on the nCube2 V > 0 pays; the same on every other machine."
@@ -226,7 +232,7 @@ has "4 to 7.14 times as fast as on the nCube2:"
 lacks "scene1 with brute-force, scene1 with octree"
 
 # The same share of the scheme on every machine: waiting on the slowest shot, not the network.
-write_results 7 same
+use_results 7-same
 analyse
 has "The shooter-centred scheme's share of node time in communication (overhead + waiting) is the same on every machine for each scene, within 0 percentage points (scene1 40.00 % to 40.00 %, the overhead at most 2.0 %): the nodes wait on the iteration's slowest shot (each shoots another patch), not on the exchange, which does not show on any machine, even at 1 MB an iteration."
 lacks "The share differs between machines"

@@ -55,12 +55,11 @@ from ncube.interpreter import use_project_python  # noqa: E402
 
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
-import numpy as np  # noqa: E402
-
 from ncube import input_file  # noqa: E402
 from ncube import page  # noqa: E402
 
-LUMINANCE = np.array([0.2126, 0.7152, 0.0722])
+np = None   # numpy, imported by run(): --help and a refused option need none (0.2 s a start)
+LUMINANCE = (0.2126, 0.7152, 0.0722)
 SCENE_DIAGONAL = 10.0
 BAKE_SCRIPT = Path(__file__).resolve().parent / "bake_in_blender.py"
 CAMERA_SCRIPT = Path(__file__).resolve().parent / "camera_in_blender.py"
@@ -167,6 +166,8 @@ def read_bake(report_path, job_path, job, quads, texels=True):
 
 
 def run(args):
+    global np
+    import numpy as np
     scene_path = resolve_scene(args.scene)
     name, patches, sha256 = load_scene(scene_path)
     # The output under the output rule before minutes of baking (onto the scene, a folder, a
@@ -240,7 +241,7 @@ def run(args):
         lighting /= texel_area[None, :, None]
         area = texel_area   # the same area to the last bit (sums of the texels' weights)
         radiosity = emission[None] + rho[None] * lighting          # seeds x patches x 3
-    y = radiosity @ LUMINANCE
+    y = radiosity @ np.array(LUMINANCE)
     count = len(job["seeds"])
     mean, se = radiosity.mean(axis=0), radiosity.std(axis=0, ddof=1) / math.sqrt(count)
     y_mean, y_se = y.mean(axis=0), y.std(axis=0, ddof=1) / math.sqrt(count)
