@@ -267,6 +267,16 @@ def adopt_orphans():
 
 
 def _children():
+    """This process's children: each of its threads' /proc/self/task/TID/children (Linux 3.5
+    and later), not every process's stat read at each case's end (4 s of the harness's CPU);
+    where the kernel has no such file, the scan."""
+    try:
+        found = []
+        for task in os.scandir("/proc/self/task"):
+            found += [int(pid) for pid in Path(task.path, "children").read_text().split()]
+        return found
+    except FileNotFoundError:
+        pass
     mine = os.getpid()
     found = []
     for entry in os.scandir("/proc"):
