@@ -20,6 +20,13 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
   if (!section.is_object()) throw InputError(path + ": \"simgrid_config\": expected an object");
   std::map<std::string, std::string> settings;
   std::vector<std::string> keys, arguments;
+  // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h):
+  // it is asked about the settings so far, in one child.
+  const auto check_so_far = [&] {
+    if (const SettingRefusal refused = simgrid_refusal_of(arguments); refused.index < keys.size())
+      throw InputError(path + ": \"simgrid_config\": \"" + keys[refused.index] + "\": " +
+                       refused.problem);
+  };
   for (auto it = section.begin(); it != section.end(); ++it) {
     if (!it.value().is_string())
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": expected a string");
@@ -29,21 +36,13 @@ std::map<std::string, std::string> read_simgrid_config(const std::string& path) 
     const std::string argument = "--cfg=" + it.key() + ":" + settings[it.key()];
     if (problem.empty()) problem = simgrid_setting_form_problem(argument);
     if (!problem.empty()) {
-      // SimGrid is asked about the settings before this one first: a setting it refuses there
-      // is named first, as when each was asked in turn.
-      if (const SettingRefusal refused = simgrid_refusal_of(arguments); refused.index < keys.size())
-        throw InputError(path + ": \"simgrid_config\": \"" + keys[refused.index] + "\": " +
-                         refused.problem);
+      check_so_far();  // one SimGrid refuses before this one is named first, as one by one
       throw InputError(path + ": \"simgrid_config\": \"" + it.key() + "\": " + problem);
     }
     keys.push_back(it.key());
     arguments.push_back(argument);
   }
-  // SimGrid would end the process on a setting it refuses (src/machine/simgrid_settings.h):
-  // asked about them all in one child.
-  if (const SettingRefusal refused = simgrid_refusal_of(arguments); refused.index < keys.size())
-    throw InputError(path + ": \"simgrid_config\": \"" + keys[refused.index] + "\": " +
-                     refused.problem);
+  check_so_far();
   return settings;
 }
 
