@@ -5,7 +5,8 @@ sweep's cell jobs, each a process that reads the sweep file again, do not each s
 for every platform. Held here, each load in a process of its own, through a wrapper of the
 simulator that counts its runs: asked once for a platform, not again; again after the platform
 changes (and the new count is its own), after the simulator changes, after a damaged entry; a
-platform ./simulate refuses is refused every time and never kept."""
+platform ./simulate refuses is refused every time and never kept; a FIFO at an entry's name is
+neither read nor written."""
 import json
 import os
 import shutil
@@ -43,7 +44,8 @@ def main():
                 [sys.executable, "-c", "import sys; sys.path.insert(0, sys.argv[1]); "
                  "from ncube import sweep; print(sweep.platform_nodes(sys.argv[2]))",
                  str(ROOT / "analysis"), str(platform)],
-                capture_output=True, text=True, env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+                capture_output=True, text=True, env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)),
+                timeout=60)
             after = len(runs.read_text().splitlines()) if runs.exists() else 0
             answer = load.stdout.strip() or load.stderr.strip().splitlines()[-1]
             return answer, after - before
@@ -69,6 +71,18 @@ def main():
         check(first[1] == 1 and second[1] == 1 and "dimension" in first[0] and first == second,
               f"a platform ./simulate refuses is refused each time, asked each time ({first})")
         check(len(list(cache.iterdir())) == count, "and never kept")
+        # A FIFO planted at an entry's name: read through the gate (refused), asked again, and
+        # nothing written onto it (a write would wait for a reader: the load would hang).
+        data["parameters"]["dimension"]["value"] = 6
+        platform.write_text(json.dumps(data))
+        for entry in cache.iterdir():
+            entry.unlink()
+        nodes()
+        entry = next(cache.iterdir())
+        entry.unlink()
+        os.mkfifo(entry)
+        check(nodes() == ("64", 1) and entry.is_fifo(),
+              "a FIFO at an entry's name is asked again, not read or written")
     print(f"platform_nodes_cache_test: {len(failures)} failed")
     return 1 if failures else 0
 

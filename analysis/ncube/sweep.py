@@ -268,8 +268,11 @@ def _platform_nodes(path, text):
     if run.returncode != 0:
         raise ValueError(run.stderr.strip().removeprefix("simulate: "))
     nodes = int(run.stdout)
-    if cached is not None:
-        try:   # written once, by the output rule (a temporary file renamed into place)
+    if cached is not None and (not os.path.lexists(cached) or
+                               (cached.is_file() and not cached.is_symlink())):
+        # Written by the output rule (a temporary file renamed into place), new or over a
+        # damaged entry; never onto whatever else lies at its name (a FIFO would block).
+        try:
             cached.parent.mkdir(exist_ok=True)
             output_file.write(cached, f"{nodes}\n")
         except OSError:
