@@ -27,7 +27,6 @@
 #include "machine/simgrid_platform_file.h"
 #include "machine/simgrid_settings.h"
 #include "tools/simulate_command.h"
-#include "tools/tool_exits.h"
 #include "util/input_error.h"
 
 namespace ncube {
@@ -240,7 +239,7 @@ int simulate_in_child(const std::filesystem::path& dir, std::vector<std::string>
     std::vector<char*> argv;
     for (std::string& argument : arguments) argv.push_back(argument.data());
     argv.push_back(nullptr);
-    const int code = run_tool("simulate", [&] { return simulate_command(int(arguments.size()), argv.data()); });
+    const int code = simulate_main(int(arguments.size()), argv.data());
     std::fflush(nullptr);
     _exit(code);
   }

@@ -390,4 +390,10 @@ int simulate_command(int argc, char** argv) {
   return ncube::kExitOk;
 }
 
+int simulate_main(int argc, char** argv) {
+  // Every exception ends in one message and its own exit code (docs/cli.md); the output
+  // files are removed as the stack unwinds.
+  return run_tool("simulate", [&] { return simulate_command(argc, argv); });
+}
+
 }  // namespace ncube

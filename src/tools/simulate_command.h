@@ -11,4 +11,8 @@ namespace ncube {
 // call in a process (SimGrid allows one Engine a process).
 int simulate_command(int argc, char** argv);
 
+// ./simulate's main: simulate_command with what it throws turned into one message and its exit
+// code. Also what tests/simulate_server.cpp runs in each forked case.
+int simulate_main(int argc, char** argv);
+
 }  // namespace ncube

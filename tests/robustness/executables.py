@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Every program and script the repository ships, and the tests that try it as a user would
 (tests/shipped_executables_test.sh). Shipped means: a target of CMakeLists.txt's
-add_executable (but the test binary), or a tracked file outside tests/ that is executable or
-starts with "#!"; tests/slurm_cluster.sh too, which users run. A new one fails the test until it
-is listed here with the tests that try it (each must name it), or as open with why.
+add_executable (but the test binaries unit_tests and simulate_server), or a tracked file
+outside tests/ that is executable or starts with "#!"; tests/slurm_cluster.sh too, which users
+run. A new one fails the test until it is listed here with the tests that try it (each must
+name it), or as open with why.
 
 usage: executables.py ROOT   (prints what is shipped and not listed, listed and gone,
                               listed tests that do not name their program, and whether
@@ -164,7 +165,8 @@ def page_text(root):
 def shipped(root):
     """Every program the repository ships, by the rule of the module's doc."""
     cmake = (root / "CMakeLists.txt").read_text()
-    programs = {name for name in re.findall(r"add_executable\((\w+)", cmake) if name != "unit_tests"}
+    programs = {name for name in re.findall(r"add_executable\((\w+)", cmake)
+                if name not in ("unit_tests", "simulate_server")}
     listed = subprocess.run(["git", "-C", str(root), "ls-files", "-s"], capture_output=True,
                             text=True, check=True).stdout.splitlines()
     for line in listed:

@@ -54,6 +54,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import cases as case_list  # noqa: E402
+import forked_runs  # noqa: E402
 import known_open  # noqa: E402
 import threat_cases  # noqa: E402
 import threat_model  # noqa: E402
@@ -142,6 +143,41 @@ def drain(path, received):
         received.append(len(f.read()))
 
 
+def forked_case(simulate, case, timeout, memory_bytes):
+    """(exit code or None when still running at `timeout`, stderr bytes) of one case, forked
+    from build/simulate_server (forked_runs.py): stdout to /dev/null, a session of its own, and
+    with a file-size limit SIGXFSZ ignored as below."""
+    run = forked_runs.Run(simulate, case["args"], cwd=os.getcwd(), env=os.environ,
+                          as_bytes=memory_bytes, fsize_bytes=case.get("fsize", 0),
+                          ignore_xfsz=bool(case.get("fsize")))
+    if not run.wait(timeout):
+        os.killpg(run.pid, signal.SIGKILL)
+        run.wait()
+        return None, run.stderr
+    return run.code, run.stderr
+
+
+def started_case(simulate, case, timeout, memory_bytes):
+    """The same, ./simulate started anew (a build without the server)."""
+    # The limits set by util-linux's prlimit, which then execs the program: no preexec_fn, so
+    # the run is spawned without a fork of this process (a fork of a Python with threads and
+    # tens of MB cost more CPU than many a refusal it runs). With a file-size limit, SIGXFSZ
+    # stays ignored as Python leaves it (restore_signals off): writes fail with EFBIG instead.
+    limits = ["/usr/bin/prlimit", f"--as={memory_bytes}", "--core=0"]
+    if case.get("fsize"):
+        limits.append(f"--fsize={case['fsize']}")
+    process = subprocess.Popen([*limits, "--", simulate, *case["args"]], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, start_new_session=True,
+                               restore_signals=not case.get("fsize"))
+    try:
+        _, stderr = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        return None, b""
+    return process.returncode, stderr
+
+
 def run_case(simulate, case, timeout, memory_bytes, results, work):
     for p in case.get("outputs", []):
         if Path(p).is_file():
@@ -153,30 +189,18 @@ def run_case(simulate, case, timeout, memory_bytes, results, work):
     if case.get("memory_mb"):
         memory_bytes = case["memory_mb"] << 20
 
-    # The limits set by util-linux's prlimit, which then execs the program: no preexec_fn, so
-    # the run is spawned without a fork of this process (a fork of a Python with threads and
-    # tens of MB cost more CPU than many a refusal it runs). With a file-size limit, SIGXFSZ
-    # stays ignored as Python leaves it (restore_signals off): writes fail with EFBIG instead.
-    limits = ["/usr/bin/prlimit", f"--as={memory_bytes}", "--core=0"]
-    if case.get("fsize"):
-        limits.append(f"--fsize={case['fsize']}")
-
     received, reader = [], None
     if case.get("reader"):
         reader = threading.Thread(target=drain, args=(case["reader"], received), daemon=True)
         reader.start()
     start = time.monotonic()
-    process = subprocess.Popen([*limits, "--", simulate, *case["args"]], stdout=subprocess.DEVNULL,
-                               stderr=subprocess.PIPE, start_new_session=True,
-                               restore_signals=not case.get("fsize"))
-    try:
-        _, stderr = process.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
+    if forked_runs.server_binary(simulate):
+        code, stderr = forked_case(simulate, case, timeout, memory_bytes)
+    else:
+        code, stderr = started_case(simulate, case, timeout, memory_bytes)
+    if code is None:
         return "hang/timeout", f"still running after {timeout} s", time.monotonic() - start
     seconds = time.monotonic() - start
-    code = process.returncode
     if reader:
         reader.join(timeout=5)
         if code == 0 and not received:
@@ -302,6 +326,8 @@ def main():
     parser.add_argument("--strict", action="store_true",
                         help="also fail on known_open.py entries that are now clean")
     args = parser.parse_args()
+    # Absolute: the cases run in folders of their own (a relative path named another file there).
+    args.simulate = str(Path(args.simulate).resolve())
     os.environ["NCUBE_ROOT"] = args.root
     failures = []
     with tempfile.TemporaryDirectory() as work, tempfile.TemporaryDirectory() as cells_work, \

@@ -15,6 +15,7 @@ import threading
 import time
 from pathlib import Path
 
+import forked_runs
 import threat_model as tm
 
 ITERATIONS = ["--iterations", "1"]
@@ -528,51 +529,72 @@ def execute(argv, env, cwd, timeout, memory_bytes):
     """Runs argv; returns (exit code or None when it hangs, stderr text or why it hangs, peak
     RSS in MiB, seconds, stdout text). A run hangs when still running at `timeout`, or as soon
     as it has waited a second for the other end of a FIFO (a hang costs about 2 s, not the
-    timeout)."""
-    # The limits set by util-linux's prlimit, which then execs the program: no preexec_fn, so
-    # the run is spawned without a fork of this process (run.py's note).
-    limits = ["/usr/bin/prlimit", f"--as={memory_bytes}", "--core=0", f"--fsize={1 << 30}", "--"]
+    timeout). ./simulate's runs are forked from build/simulate_server (forked_runs.py), the
+    other programs' started anew."""
     start = time.monotonic()
-    process = subprocess.Popen([*limits, *argv], cwd=cwd, env={**os.environ, **env},
+    if forked_runs.server_binary(argv[0]):
+        run = forked_runs.Run(argv[0], argv[1:], cwd=cwd, env={**os.environ, **env},
+                              as_bytes=memory_bytes, fsize_bytes=1 << 30,
+                              stdin=None, capture_stdout=True)
+        pid, ended = run.pid, run.wait
+    else:
+        # The limits set by util-linux's prlimit, which then execs the program: no preexec_fn,
+        # so the run is spawned without a fork of this process (run.py's note).
+        limits = ["/usr/bin/prlimit", f"--as={memory_bytes}", "--core=0", f"--fsize={1 << 30}",
+                  "--"]
+        run = subprocess.Popen([*limits, *argv], cwd=cwd, env={**os.environ, **env},
                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, start_new_session=True)
-    chunks, printed = [], []
-    reader = threading.Thread(target=lambda: chunks.append(process.stderr.read()), daemon=True)
-    reader.start()
-    summary = threading.Thread(target=lambda: printed.append(process.stdout.read()), daemon=True)
-    summary.start()
+        pid, ended = run.pid, _started_waiter(run)
     # The look at /proc reads every process's stat (hundreds on a shared host): a run that ends
     # within a second, as nearly every cell does, costs none; a hang costs about 2 s.
     blocked_since, next_look = None, start + 1.0
-    while True:
-        pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-        if pid:
-            break
+    while not ended(0.01):
         now = time.monotonic()
         if now >= next_look:
             next_look = now + 0.5
-            blocked = _blocked_on_fifo(process.pid)
+            blocked = _blocked_on_fifo(pid)
             blocked_since = (blocked_since or now) if blocked else None
         why = (f"still running after {timeout:g} s" if now - start > timeout else
                "waits forever for the other end of a FIFO"
                if blocked_since and now - blocked_since > 1 else None)
         if why:
-            os.killpg(process.pid, signal.SIGKILL)
-            os.wait4(process.pid, 0)
-            process.returncode = -9
-            reader.join(timeout=5)
+            os.killpg(pid, signal.SIGKILL)
+            ended(None)
             return None, why, 0, time.monotonic() - start, ""
-        time.sleep(0.01)
-    process.returncode = os.waitstatus_to_exitcode(status)
-    reader.join(timeout=5)
-    summary.join(timeout=5)
     try:
-        os.killpg(process.pid, signal.SIGKILL)   # anything it left running
+        os.killpg(pid, signal.SIGKILL)   # anything it left running
     except ProcessLookupError:
         pass
-    message = b"".join(chunks).decode(errors="replace")
-    return (process.returncode, message, usage.ru_maxrss / 1024, time.monotonic() - start,
-            b"".join(printed).decode(errors="replace"))
+    return (run.code, run.stderr.decode(errors="replace"), run.maxrss_kb / 1024,
+            time.monotonic() - start, run.stdout.decode(errors="replace"))
+
+
+def _started_waiter(process):
+    """For a Popen: wait(timeout) as forked_runs.Run's (True once ended; then code, maxrss_kb,
+    stdout and stderr set on `process`)."""
+    chunks, printed = [], []
+    readers = [threading.Thread(target=lambda: chunks.append(process.stderr.read()), daemon=True),
+               threading.Thread(target=lambda: printed.append(process.stdout.read()), daemon=True)]
+    for reader in readers:
+        reader.start()
+
+    def ended(timeout):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while True:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                break
+            if deadline is not None and time.monotonic() >= deadline:
+                return False
+            time.sleep(0.01 if timeout is None else min(0.01, timeout))
+        process.returncode = process.code = os.waitstatus_to_exitcode(status)
+        process.maxrss_kb = usage.ru_maxrss
+        for reader in readers:
+            reader.join(timeout=5)
+        process.stdout, process.stderr = b"".join(printed), b"".join(chunks)
+        return True
+    return ended
 
 
 # What machine_probe says when a fit gave no rate (exit 4): the host too disturbed to measure,
