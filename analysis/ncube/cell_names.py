@@ -7,6 +7,7 @@ and the SimGrid settings. A run's length (iterations, convergence) is left out: 
 what a sweep compares, and the paper's sweeps keep their names. The name depends on the cell
 alone, never on the sweep, so a cell in several sweeps is one file and runs once; the digest
 keeps names unique whatever the readable part says (which is cut at NAME_CHARACTERS)."""
+import functools
 import re
 from pathlib import Path
 
@@ -33,12 +34,18 @@ def _option_part(name, value):
     return f"{name}_{value}"
 
 
+@functools.lru_cache(maxsize=1)
+def _resolved_defaults():
+    """The default platform and cost model with links resolved, once a process (every cell's
+    name asks: 2 x 258 resolutions were a third of loading the machines study's sweep)."""
+    return DEFAULT_PLATFORM.resolve(), DEFAULT_COST_MODEL.resolve()
+
+
 def parts(cell):
     """The readable parts after the scene, R and V."""
     found = []
-    for file, default in ((cell.platform_file, DEFAULT_PLATFORM),
-                          (cell.cost_model_file, DEFAULT_COST_MODEL)):
-        if Path(file) != default.resolve():
+    for file, default in zip((cell.platform_file, cell.cost_model_file), _resolved_defaults()):
+        if Path(file) != default:
             found.append(Path(file).stem)
     for name, option in opts.OPTIONS.items():
         if name not in LEFT_OUT and cell.options.get(name, option.default) != option.default:

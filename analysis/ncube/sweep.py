@@ -289,6 +289,10 @@ def platform_nodes(path):
     (sweep files read by a page script in a fresh clone), an estimate that runs nothing: a JSON
     platform's 2^dimension, an XML one's node-k hosts and cluster radicals, counted by ranges;
     the cells' own runs then check the file."""
+    return _once("nodes", path, lambda: _counted_nodes(path))
+
+
+def _counted_nodes(path):
     text = read_input(path, "platform file", input_file.PLATFORM_FILE_BYTES)   # through the gate
     if _simulator_built():
         return _platform_nodes(str(path), text)
@@ -463,7 +467,8 @@ def _cell(spec, label, sweep_name, base, where):
         name = spec.get(key, default)
         if not isinstance(name, str):
             fail(key, "must be a file name or path")
-        files[key] = paths.find_input(name, base, role)
+        files[key] = _once("input", (name, str(base), role),
+                           lambda: paths.find_input(name, base, role))
         if files[key] is None:
             fail(key, f"no such {role} file: {name!r} ({paths.looked_for(name, base, role)})")
     options = {}
