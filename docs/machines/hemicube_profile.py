@@ -624,14 +624,15 @@ def opening(data, misses, ir_model, ir_rows, f, real, pairs, against, procs):
             f"and a process timed just after it, the probe's rates predict the scenes' kernels "
             f"{100 * min(shift.values()):+.1f} to {100 * max(shift.values()):+.1f} points from "
             f"the process's own fit (medians; the probe's `projection_speed` below the process's "
-            f"in {lower[0]} of the pairs, its `raster_speed` in {lower[1]}). scene1's host seconds "
-            f"in the records (median {np.median(against['scene1']['records_host']):.3f} s, "
-            f"{min(against['scene1']['records_host']):.3f} to {max(against['scene1']['records_host']):.3f}"
-            f") are {100 * abs(1 / (1 + part['scene1'][2]) - 1):.1f} % "
-            f"{'below' if part['scene1'][2] > 0 else 'above'} this study's rounds of the same "
-            f"iterations (median {np.median(against['scene1']['rounds_host']):.3f} s), against which "
-            f"the fit is {pct(against['scene1']['fit'] / np.median(against['scene1']['rounds_host']) - 1)}: "
-            "the host's draw, not a cost the counters miss.")
+            f"in {lower[0]} of the pairs, its `raster_speed` in {lower[1]}). Rates and host "
+            "seconds of the same minutes agree closer: in this study's rounds the rooms' fit of "
+            "the round's own process predicts the whole rows at "
+            + ", ".join(f"{pct(np.median(real[sc]['run']))}" for sc, _, _ in REAL) +
+            f" (medians of {len(data['real'])} rounds, each one process of N and one of 2N "
+            "iterations; the records take the least of 2 or 3 processes, and at other hours: the "
+            "rounds' host seconds are "
+            + ", ".join(f"{pct(part[sc][2])}" for sc, _, _ in REAL) + " over the records' "
+            "medians).")
     if real and against and pairs:
         rc = data["real_callgrind"]
         share = {s: 1 - rc[s]["kernel"]["Ir"] / rc[s]["process"]["Ir"] for s in rc}
@@ -705,8 +706,9 @@ depth tests, cells read) at `raster_speed`.
 
 ```sh
 cmake --build build --target machine_probe simulate
-/usr/bin/python3 docs/machines/hemicube_profile.py --processes 10 --rounds 21 --out /tmp/h.json   # about 10 min
-/usr/bin/python3 docs/machines/hemicube_profile.py --from /tmp/h.json --real 8 --out /tmp/h2.json  # about 15 min
+/usr/bin/python3 docs/machines/hemicube_profile.py --processes 10 --rounds 21 --out /tmp/h.json  # about 8 min
+/usr/bin/python3 docs/machines/hemicube_profile.py --from /tmp/h.json --real 16 --jobs 2 --out /tmp/h2.json  # about 10 min
+/usr/bin/python3 docs/machines/hemicube_profile.py --from /tmp/h2.json --probe 14 --records --out /tmp/h3.json  # about 4 min
 /usr/bin/python3 docs/machines/hemicube_profile.py --from docs/machines/hemicube_profile.json --page  # these tables again
 ```"""
 
