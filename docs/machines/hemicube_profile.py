@@ -757,7 +757,7 @@ def main():
     needs = [] if args.source and not (args.more or args.real or args.probe) else [lp.PROBE]
     lp.check_built(needs + ([lp.SIMULATE] if args.real else []), "hemicube_profile.py")
     if args.source:
-        data = input_file.read_json(args.source, "measurements", 1 << 24)
+        data = lp.read_measurements(args.source, "hemicube_profile.py", ["native", "callgrind"])
     else:
         data = {"caches": lp.CACHES, "native": [], "callgrind": {}}
     if not args.source or args.more:

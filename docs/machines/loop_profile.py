@@ -390,6 +390,15 @@ def study_parser(description, rounds, counter, markers, whole):
     return parser
 
 
+def read_measurements(path, script, keys):
+    """A measurements file this study wrote (--from): an object with `keys`, or a refusal."""
+    data = input_file.read_json(path, "measurements", 1 << 24)
+    if not isinstance(data, dict) or not all(isinstance(data.get(k), (dict, list)) for k in keys):
+        raise SystemExit(f"{script}: {path}: not measurements of this study (an object with "
+                         f"{', '.join(keys)}); nothing written")
+    return data
+
+
 def check_built(programs, script):
     for program in programs:
         if not os.access(program, os.X_OK):
@@ -416,7 +425,7 @@ def main():
     needs = [] if args.source and not (args.more or args.real) else [PROBE]
     check_built(needs + ([SIMULATE] if args.real else []), "loop_profile.py")
     if args.source:
-        data = input_file.read_json(args.source, "measurements", 1 << 24)
+        data = read_measurements(args.source, "loop_profile.py", ["native", "cachegrind"])
         if args.real:  # the whole runs' counts once; their rounds added to those kept
             if "real_cachegrind" not in data:
                 with ThreadPoolExecutor(args.jobs) as pool:
