@@ -715,7 +715,7 @@ depth tests, cells read) at `raster_speed`.
 
 ```sh
 cmake --build build --target machine_probe simulate
-/usr/bin/python3 docs/machines/hemicube_profile.py --processes 10 --rounds 21 --out /tmp/h.json  # about 8 min
+/usr/bin/python3 docs/machines/hemicube_profile.py --processes 15 --rounds 21 --out /tmp/h.json  # about 8 min
 /usr/bin/python3 docs/machines/hemicube_profile.py --from /tmp/h.json --real 16 --jobs 2 --out /tmp/h2.json  # about 10 min
 /usr/bin/python3 docs/machines/hemicube_profile.py --from /tmp/h2.json --probe 14 --records --out /tmp/h3.json  # about 4 min
 /usr/bin/python3 docs/machines/hemicube_profile.py --from docs/machines/hemicube_profile.json --page  # these tables again
