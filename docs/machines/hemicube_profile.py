@@ -736,9 +736,13 @@ def replace_between(page, begin, end, text, name):
 
 def measure_counts(data, jobs):
     missing = [r for r in ROOMS + SCENES if r not in data["callgrind"]]
+    if not missing:
+        return
+    start = stamp()
     with ThreadPoolExecutor(jobs) as pool:
         for run, counted in zip(missing, pool.map(kernel_counts, missing)):
             data["callgrind"][run] = counted
+    data.setdefault("log", []).append(f"callgrind of {len(missing)} kernel runs {start} to {stamp()}")
 
 
 def main():
@@ -770,6 +774,7 @@ def main():
     if args.real:
         start = stamp()
         if "real_callgrind" not in data:
+            data.setdefault("log", []).append(f"callgrind of 3 whole runs from {stamp()}")
             with ThreadPoolExecutor(args.jobs) as pool:
                 data["real_callgrind"] = {item[0]: r for item, r in
                                           zip(REAL_COUNTED, pool.map(real_counted, REAL_COUNTED))}
