@@ -107,6 +107,21 @@ set +e; "$probe" --loop-only "room of 20 patches" >/dev/null 2>"$tmp/err"; code=
 [[ $code == 2 ]] || fail "--loop-only of an unknown run: exit $code, not 2: $(cat "$tmp/err")"
 grep -q 'no run "room of 20 patches" (runs: room of 19 patches, ' "$tmp/err" || fail "--loop-only: not named: $(cat "$tmp/err")"
 [[ $(wc -l < "$tmp/err") == 1 ]] || fail "--loop-only: not one line: $(cat "$tmp/err")"
+# --hemicube-only (one run of --hemicube-scenes): the room of 19 patches on hemicubes of
+# 200 x 200 cells, from 4 eyes, each drawing the 18 other patches: a pass reads 4 x (200^2 +
+# 4 x 200 x 100) = 480,000 cells and sets up 4 x 18 = 72 polygons; a Cornell box's hemicube
+# draws its 1,078 elements less the shooter's. An unknown name is bad input, named (exit 2).
+"$probe" --hemicube-only "room of 19 patches, 200 x 200 cells" --passes 2 > "$tmp/hemicube" ||
+  fail "--hemicube-only failed"
+grep -q "^room of 19 patches, 200 x 200 cells | passes 2 | .*| hemicube_polygons_set_up 72 |.*| hemicube_cells_read 480000 |" \
+  "$tmp/hemicube" || fail "--hemicube-only: not 72 polygons and 480000 cells a pass: $(cat "$tmp/hemicube")"
+"$probe" --hemicube-only "room of 19 patches, 200 x 200 cells" --passes 0 | grep -q "| hemicube_cells_read 0 |" ||
+  fail "--hemicube-only --passes 0 read cells"
+set +e; "$probe" --hemicube-only "scene9, hemicube" >/dev/null 2>"$tmp/err"; code=$?; set -e
+[[ $code == 2 ]] || fail "--hemicube-only of an unknown run: exit $code, not 2: $(cat "$tmp/err")"
+grep -q 'no run "scene9, hemicube" (runs: room of 985 patches, 8 x 8 cells, ' "$tmp/err" ||
+  fail "--hemicube-only: not named: $(cat "$tmp/err")"
+[[ $(wc -l < "$tmp/err") == 1 ]] || fail "--hemicube-only: not one line: $(cat "$tmp/err")"
 grep -q "spread" "$tmp/probed.xml" || fail "the file does not give the spread"
 [[ $(grep -c "), the shots .* residual [-+][0-9.]* %" "$tmp/probed.xml") == 8 ]] ||
   fail "the file does not give the loop's 8 runs with their residuals"

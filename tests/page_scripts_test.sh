@@ -70,6 +70,8 @@ done
 # docs/machines/loop_profile.py's tables of docs/machines/probe.md, made again from the committed
 # measurements (--from, no run), are the committed ones.
 unchanged docs/machines/loop_profile.py --from docs/machines/loop_profile.json --page
+# docs/machines/hemicube_profile.py's section of the same page, likewise.
+unchanged docs/machines/hemicube_profile.py --from docs/machines/hemicube_profile.json --page
 
 # A page of an incomplete run never replaces the committed one: --partial and --summary write
 # only where they are told (--out-dir, --output/--figures), and every output is checked before

@@ -113,18 +113,18 @@ KINDS = ["ray_patch_tests", "plane_crossings", "rays", "blocked_rays"]
 SIMULATE = os.path.join(ROOT, "build", "simulate")
 
 
-def simulate_run(scene, iterations, work, wrap=()):
+def simulate_run(scene, iterations, work, wrap=(), extra=(), counters=KINDS):
     out = os.path.join(work, f"{scene}-{iterations}.json")
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run(["nice", "-n", "19", *wrap, SIMULATE, os.path.join(ROOT, "scenes", scene + ".json"),
                     "--R", "1", "--V", "0", "--iterations", str(iterations), "--reference-visibility",
-                    "--threads", "1", "--platform", PLATFORM, "--json", out, "--quiet"],
+                    "--threads", "1", "--platform", PLATFORM, "--json", out, "--quiet", *extra],
                    check=True, capture_output=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     result = json.loads(input_file.read_input_text(out, "a result file", 1 << 26))
     return {"cpu": after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime,
             "simulated": result["simulated_seconds"],
-            "counts": {k: result["counts"].get(k, 0) for k in KINDS}}
+            "counts": {k: result["counts"].get(k, 0) for k in counters}}
 
 
 def real_round():
@@ -369,31 +369,63 @@ def tables(data):
     return "\n".join(out) + "\n"
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def study_parser(description, rounds, counter, markers, whole):
+    """The options this study shares with docs/machines/hemicube_profile.py: `counter` names the
+    valgrind tool, `markers` the page's, `whole` the rows the whole runs are of."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--processes", type=int, default=3)
-    parser.add_argument("--rounds", type=int, default=15)
-    parser.add_argument("--jobs", type=int, default=1, help="cachegrind processes at once")
+    parser.add_argument("--rounds", type=int, default=rounds)
+    parser.add_argument("--jobs", type=int, default=1, help=f"{counter} processes at once")
     parser.add_argument("--out", help="keep the measurements here (JSON)")
     parser.add_argument("--from", dest="source", help="no runs: the tables from this JSON")
     parser.add_argument("--more", action="store_true",
                         help="with --from: time --processes more processes natively, added to "
-                             "its measurements (cachegrind's counts are the binary's own)")
+                             f"its measurements ({counter}'s counts are the binary's own)")
     parser.add_argument("--page", action="store_true",
-                        help="write the tables into docs/machines/probe.md between its "
-                             "loop-profile markers")
+                        help=f"write the tables into docs/machines/probe.md between its {markers} "
+                             "markers")
     parser.add_argument("--real", type=int, default=0, metavar="ROUNDS",
-                        help="with --from: time the scenes' whole runs this many rounds more, and count "
-                             "three of them under cachegrind (once), added to its measurements")
+                        help=f"with --from: time the {whole} whole runs this many rounds more, and "
+                             f"count three of them under {counter} (once), added to its measurements")
+    return parser
+
+
+def read_measurements(path, script, keys):
+    """A measurements file this study wrote (--from): an object with `keys`, or a refusal."""
+    data = input_file.read_json(path, "measurements", 1 << 24)
+    if not isinstance(data, dict) or not all(isinstance(data.get(k), (dict, list)) for k in keys):
+        raise SystemExit(f"{script}: {path}: not measurements of this study (an object with "
+                         f"{', '.join(keys)}); nothing written")
+    return data
+
+
+def check_built(programs, script):
+    for program in programs:
+        if not os.access(program, os.X_OK):
+            raise SystemExit(f"{script}: {program} is not built (cmake --build build); nothing written")
+
+
+def run_main(main, script):
+    """`main` with the studies' exits: a refusal's message on one line, exit 2."""
+    try:
+        main()
+    except SystemExit as e:
+        if isinstance(e.code, str):
+            print(e.code, file=sys.stderr)
+            sys.exit(2)
+        raise
+    except (input_file.InputFileError, KeyError, StopIteration) as e:
+        print(f"{script}: {e} (not a file this script wrote?); nothing written", file=sys.stderr)
+        sys.exit(2)
+
+
+def main():
+    parser = study_parser(__doc__.split("\n")[0], 15, "cachegrind", "loop-profile", "scenes'")
     args = parser.parse_args()
     needs = [] if args.source and not (args.more or args.real) else [PROBE]
-    needs += [SIMULATE] if args.real else []
-    for program in needs:
-        if not os.access(program, os.X_OK):
-            raise SystemExit(f"loop_profile.py: {program} is not built (cmake --build build); "
-                             "nothing written")
+    check_built(needs + ([SIMULATE] if args.real else []), "loop_profile.py")
     if args.source:
-        data = input_file.read_json(args.source, "measurements", 1 << 24)
+        data = read_measurements(args.source, "loop_profile.py", ["native", "cachegrind"])
         if args.real:  # the whole runs' counts once; their rounds added to those kept
             if "real_cachegrind" not in data:
                 with ThreadPoolExecutor(args.jobs) as pool:
@@ -432,13 +464,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except SystemExit as e:
-        if isinstance(e.code, str):
-            print(e.code, file=sys.stderr)
-            sys.exit(2)
-        raise
-    except (input_file.InputFileError, KeyError) as e:
-        print(f"loop_profile.py: {e} (not a file this script wrote?); nothing written", file=sys.stderr)
-        sys.exit(2)
+    run_main(main, "loop_profile.py")

@@ -54,6 +54,7 @@
 #include "scene/scene.h"
 #include "tools/option_table.h"
 #include "tools/output_files.h"
+#include "tools/scene_hemicube_cost.h"
 #include "tools/scene_test_cost.h"
 #include "tools/simulate_options.h"
 #include "tools/thread_clock.h"
@@ -542,6 +543,23 @@ std::vector<ncube::LoopRun> room_loop_runs(const ncube::CostModel& costs) {
   return runs;
 }
 
+// The probe's hemicube runs, as runs of --hemicube-scenes and --hemicube-only: one pass of a
+// room's hemicubes as the probe times it.
+std::vector<ncube::LoopRun> room_hemicube_runs() {
+  std::vector<ncube::LoopRun> runs;
+  for (const HemicubeRoom& room : kHemicubeRooms) {
+    const std::string name = "room of " + std::to_string(6 * room.cut * room.cut + 1 + 6 * room.boxes) +
+                             " patches, " + std::to_string(room.resolution) + " x " +
+                             std::to_string(room.resolution) + " cells";
+    runs.push_back({name, [room] {
+                      std::shared_ptr<PreparedHemicube> prepared = prepare_hemicube(room);
+                      return std::function<void(ncube::WorkCounts&)>(
+                          [prepared](ncube::WorkCounts& c) { prepared->pass(c); });
+                    }});
+  }
+  return runs;
+}
+
 int machine_probe(int argc, char** argv) {
   const std::string root = ncube::repository_root();
   std::string out_file, network_file = root + "/platforms/machines/cluster-2024.xml",
@@ -569,12 +587,28 @@ int machine_probe(int argc, char** argv) {
                  "instead of probing: set up the one run of --scenes so named (\"room of 241 "
                  "patches\", \"scene2 shuffled\") and run its shots --passes times, for a "
                  "simulator of the caches (docs/machines/loop_profile.py)");
-  app.add_option("--passes", loop_passes, "passes of --loop-only's shots")
+  int hemicube_rounds = 0;
+  app.add_option("--hemicube-scenes", hemicube_rounds,
+                 "instead of probing: the hemicube's work in the probe's hemicube rooms and the "
+                 "prediction table's three hemicube scenes, timed round by round this many rounds, "
+                 "no file written")
+      ->check(ncube::decimal_count(1, 1001));
+  std::string hemicube_only;
+  app.add_option("--hemicube-only", hemicube_only,
+                 "instead of probing: set up the one run of --hemicube-scenes so named (\"scene0, "
+                 "hemicube at 400\") and run its hemicubes --passes times, for a simulator of the "
+                 "caches (docs/machines/hemicube_profile.py)");
+  app.add_option("--passes", loop_passes, "passes of --loop-only's shots or --hemicube-only's hemicubes")
       ->capture_default_str()->check(ncube::decimal_count(0, 1000));
   app.add_flag("--least", fit_least,
                "fit each run's least time over its repeats instead of their median");
   app.set_version_flag("--version", [] { return "machine_probe " + ncube::code_version(); });
   if (const auto ended = ncube::parse_command_line(app, "machine_probe", argc, argv)) return *ended;
+  if (hemicube_rounds > 0 || !hemicube_only.empty()) {
+    if (!hemicube_only.empty())
+      return ncube::run_hemicube_passes(hemicube_only, loop_passes, room_hemicube_runs());
+    return ncube::print_hemicube_costs(hemicube_rounds, room_hemicube_runs());
+  }
   if (scene_rounds > 0 || !loop_only.empty()) {
     const ncube::CostModel costs = ncube::load_cost_model(cost_model_file);
     const std::vector<ncube::LoopRun> rooms = room_loop_runs(costs);

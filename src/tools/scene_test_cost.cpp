@@ -75,20 +75,8 @@ std::shared_ptr<SceneShots> scene_shots(const std::string& scene_name, bool shuf
   std::vector<int> tested = all;
   if (shuffled) std::shuffle(tested.begin(), tested.end(), std::mt19937(1994));
   v->occluders = std::make_unique<BruteForceOccluders>(v->scene, tested, RayTestPolicy::kTestAllPatches);
-  int light = 0;
-  for (std::size_t k = 0; k < v->scene.patches.size(); ++k) {
-    const auto& e = v->scene.patches[k].emission;
-    const auto& b = v->scene.patches[std::size_t(light)].emission;
-    if (e.r + e.g + e.b > b.r + b.g + b.b) light = int(k);
-  }
-  std::vector<int> chosen = {light};
   const int n = int(all.size());
-  for (int k = 0; k < 3; ++k) {
-    int patch = int(std::lround((k + 0.5) * n / 3 - 0.5));
-    while (std::find(chosen.begin(), chosen.end(), patch) != chosen.end()) patch = (patch + 1) % n;
-    chosen.push_back(patch);
-  }
-  for (int patch : chosen) {
+  for (int patch : scene_shooter_patches(v->scene)) {
     v->shooters.push_back(make_shooter(v->scene, patch, Rgb(1.0), 64));
     WorkCounts ignored;
     v->receivers.push_back(v->engine->receivers(v->shooters.back(), false, ignored));
@@ -113,21 +101,48 @@ std::shared_ptr<SceneShots> scene_shots(const std::string& scene_name, bool shuf
   return v;
 }
 
-// A run set up for timing: one pass, its counts, the passes a timed unit, the unit's times.
-struct Prepared {
-  std::string name;
-  std::function<void(WorkCounts&)> pass;
-  WorkCounts counts;  // of one pass
-  int passes = 1;
-  std::vector<double> seconds;
-};
-
 double test_flops(const CostModel& costs, const WorkCounts& c) {
   return double(c.ray_patch_tests) * costs.flops_per_ray_patch_test +
          double(c.plane_crossings) * costs.flops_per_plane_crossing;
 }
 
 }  // namespace
+
+std::vector<int> scene_shooter_patches(const Scene& scene) {
+  int light = 0;
+  for (std::size_t k = 0; k < scene.patches.size(); ++k) {
+    const auto& e = scene.patches[k].emission;
+    const auto& b = scene.patches[std::size_t(light)].emission;
+    if (e.r + e.g + e.b > b.r + b.g + b.b) light = int(k);
+  }
+  std::vector<int> chosen = {light};
+  const int n = int(scene.patches.size());
+  for (int k = 0; k < 3; ++k) {
+    int patch = int(std::lround((k + 0.5) * n / 3 - 0.5));
+    while (std::find(chosen.begin(), chosen.end(), patch) != chosen.end()) patch = (patch + 1) % n;
+    chosen.push_back(patch);
+  }
+  return chosen;
+}
+
+void time_round_by_round(std::vector<TimedPasses>& runs, int rounds) {
+  for (int r = 0; r < rounds; ++r)
+    for (TimedPasses& p : runs) {
+      WorkCounts c;
+      const double t0 = thread_seconds();
+      for (int k = 0; k < p.passes; ++k) p.pass(c);
+      p.seconds.push_back(thread_seconds() - t0);
+    }
+}
+
+const LoopRun& named_run(const std::string& option, const std::string& name,
+                         const std::vector<LoopRun>& runs) {
+  for (const LoopRun& run : runs)
+    if (run.name == name) return run;
+  std::string names;
+  for (const LoopRun& run : runs) names += (names.empty() ? "" : ", ") + run.name;
+  throw InputError(option + ": no run \"" + name + "\" (runs: " + names + ")");
+}
 
 std::vector<LoopRun> scene_loop_runs() {
   std::vector<LoopRun> runs;
@@ -158,25 +173,19 @@ int print_scene_test_costs(int rounds, const std::string& platform_file,
                test_speed = prop(platform_file, platform, "test_speed");
   std::vector<LoopRun> all = rooms;
   for (LoopRun& run : scene_loop_runs()) all.push_back(std::move(run));
-  std::vector<Prepared> prepared;
+  std::vector<TimedPasses> prepared;
   for (const LoopRun& run : all) {
-    Prepared p;
+    TimedPasses p;
     p.name = run.name;
     p.pass = run.prepare();
     p.pass(p.counts);
     p.passes = std::max(1, int(std::lround(kFlopsAPass / test_flops(costs, p.counts))));
     prepared.push_back(std::move(p));
   }
-  for (int r = 0; r < rounds; ++r)
-    for (Prepared& p : prepared) {
-      WorkCounts c;
-      const double t0 = thread_seconds();
-      for (int k = 0; k < p.passes; ++k) p.pass(c);
-      p.seconds.push_back(thread_seconds() - t0);
-    }
+  time_round_by_round(prepared, rounds);
   std::printf("run | tests a ray | crossing share | blocked a ray | passes | median s | spread | "
               "test rate shown, flop/s | over test_speed | ns a test\n");
-  for (const Prepared& p : prepared) {
+  for (const TimedPasses& p : prepared) {
     const WorkCounts& c = p.counts;
     const double t = median(p.seconds) / p.passes;
     const double others = double(c.rays) * costs.flops_per_ray / ray_speed +
@@ -196,23 +205,17 @@ int print_scene_test_costs(int rounds, const std::string& platform_file,
 int run_loop_passes(const std::string& name, int passes, const std::vector<LoopRun>& rooms) {
   std::vector<LoopRun> all = rooms;
   for (LoopRun& run : scene_loop_runs()) all.push_back(std::move(run));
-  for (const LoopRun& run : all) {
-    if (run.name != name) continue;
-    const std::function<void(WorkCounts&)> pass = run.prepare();
-    WorkCounts c;
-    for (int k = 0; k < passes; ++k) pass(c);
-    std::printf("%s | passes %d | patches_tested_a_ray %.4f | rays %llu | ray_patch_tests %llu | "
-                "plane_crossings %llu | blocked_rays %llu\n",
-                name.c_str(), passes, double(c.ray_patch_tests) / double(c.rays),
-                (unsigned long long)(c.rays / std::uint64_t(passes)),
-                (unsigned long long)(c.ray_patch_tests / std::uint64_t(passes)),
-                (unsigned long long)(c.plane_crossings / std::uint64_t(passes)),
-                (unsigned long long)(c.blocked_rays / std::uint64_t(passes)));
-    return 0;
-  }
-  std::string names;
-  for (const LoopRun& run : all) names += (names.empty() ? "" : ", ") + run.name;
-  throw InputError("--loop-only: no run \"" + name + "\" (runs: " + names + ")");
+  const std::function<void(WorkCounts&)> pass = named_run("--loop-only", name, all).prepare();
+  WorkCounts c;
+  for (int k = 0; k < passes; ++k) pass(c);
+  std::printf("%s | passes %d | patches_tested_a_ray %.4f | rays %llu | ray_patch_tests %llu | "
+              "plane_crossings %llu | blocked_rays %llu\n",
+              name.c_str(), passes, double(c.ray_patch_tests) / double(c.rays),
+              (unsigned long long)(c.rays / std::uint64_t(passes)),
+              (unsigned long long)(c.ray_patch_tests / std::uint64_t(passes)),
+              (unsigned long long)(c.plane_crossings / std::uint64_t(passes)),
+              (unsigned long long)(c.blocked_rays / std::uint64_t(passes)));
+  return 0;
 }
 
 }  // namespace ncube

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "counts/work_counts.h"
+#include "scene/scene.h"
 
 namespace ncube {
 
@@ -20,6 +21,27 @@ struct LoopRun {
 
 // The four scenes of scenes/, each with its patches tested in the scene's order and shuffled.
 std::vector<LoopRun> scene_loop_runs();
+
+// The shooters a scene's runs take, as the probe's rooms: its brightest patch and three
+// spread through its list.
+std::vector<int> scene_shooter_patches(const Scene& scene);
+
+// A run set up for timing: one pass, its counts, the passes a timed unit, the unit's times.
+struct TimedPasses {
+  std::string name;
+  std::function<void(WorkCounts&)> pass;
+  WorkCounts counts;  // of one pass
+  int passes = 1;
+  std::vector<double> seconds;
+};
+
+// Every run's timed unit (`passes` passes) once a round, one run after another, `rounds`
+// rounds: the host's other work falls on all runs alike (thread CPU time).
+void time_round_by_round(std::vector<TimedPasses>& runs, int rounds);
+
+// The run of `runs` named `name` (exit 2 naming `option` and the runs for an unknown name).
+const LoopRun& named_run(const std::string& option, const std::string& name,
+                         const std::vector<LoopRun>& runs);
 
 // Prints one line per run (the probe's `rooms`, then the scenes in both orders); the platform
 // file gives the rates taken off (ray_speed, blocked_ray_speed) and the test_speed compared
