@@ -89,4 +89,40 @@ if /usr/bin/python3 "$root/docs/machines/prediction_table.py" --regenerate --no-
 fi
 grep -qF "records.jsonl: line 9: not a record" "$tmp/err" || fail "not named: $(cat "$tmp/err")"
 [[ ! -s "$tmp/out2" ]] || fail "a table was printed from a bad records file"
+# The probe's exit 4 (the host too disturbed to measure): probed again, up to 3 times in all;
+# still disturbed, probe() says so (the run is then not made, or has no second probe); any
+# other exit ends the script with one line naming the probe. A fake probe exits with $EXITS's
+# codes in turn.
+cat > "$tmp/probe" <<'SH'
+#!/bin/sh
+n=$(cat "$COUNT" 2>/dev/null || echo 0); echo $((n + 1)) > "$COUNT"
+code=$(echo "$EXITS" | cut -d, -f$((n + 1)))
+echo "machine_probe: the host was too disturbed" >&2
+[ "$code" = 0 ] && : > "$2"
+exit "$code"
+SH
+chmod +x "$tmp/probe"
+COUNT="$tmp/count" /usr/bin/python3 - "$root/docs/machines/prediction_table.py" "$tmp" <<'PY' ||
+import importlib.util, os, sys
+path, tmp = sys.argv[1], sys.argv[2]
+spec = importlib.util.spec_from_file_location("prediction_table", path)
+table = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(table)
+table.PROBE = os.path.join(tmp, "probe")
+def tries(exits):
+    os.environ["EXITS"] = exits
+    with open(os.environ["COUNT"], "w") as f:
+        f.write("0")
+    try:
+        result = table.probe(os.path.join(tmp, "p.xml"))
+    except SystemExit as e:
+        result = str(e)
+    return result, int(open(os.environ["COUNT"]).read())
+assert tries("4,0") == (True, 2), tries("4,0")
+assert tries("4,4,4,0") == (False, 3), tries("4,4,4,0")
+said, count = tries("3")
+assert count == 1 and said == ("prediction_table.py: build/machine_probe failed (exit 3): "
+                               "machine_probe: the host was too disturbed"), said
+PY
+  fail "the probe's exit 4 is not probed again, or another exit is not one line"
 echo "prediction_records_test: ok"
