@@ -205,6 +205,26 @@ def preload(tree):
             importlib.import_module(name.removesuffix(".__init__"))
         except Exception:   # a module that needs what a case gives it: imported there
             pass
+    # The modules a program imports from its own folder (docs/machines/prediction_records.py
+    # and the like): each case imported them again (half of a small case of
+    # hemicube_profile.py). A name two folders share is left to the cases.
+    beside = {}
+    for program, _ in programs():
+        path = tree / program
+        if not path.is_file():
+            continue
+        for name in re.findall(r"^(?:import|from) (\w+)", path.read_text(errors="replace"), re.M):
+            if (path.parent / f"{name}.py").is_file() and name not in sys.modules:
+                beside.setdefault(name, set()).add(path.parent)
+    for name, folders in sorted(beside.items()):
+        if len(folders) == 1:
+            sys.path.insert(0, str(folders.pop()))
+            try:
+                importlib.import_module(name)
+            except Exception:
+                pass
+            finally:
+                sys.path.pop(0)
 
 
 def compiled(path):
