@@ -37,7 +37,8 @@ namespace {
 constexpr int kDescriptors = 3;
 
 // One request: its JSON text and its descriptors; false when the socket is closed.
-bool receive(int socket_fd, std::vector<char>& buffer, std::string& text, int (&fds)[kDescriptors]) {
+bool receive(int socket_fd, std::vector<char>& buffer, std::string& text,
+             int (&fds)[kDescriptors]) {
   iovec io{buffer.data(), buffer.size()};
   alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * kDescriptors)];
   msghdr message{};
@@ -48,7 +49,8 @@ bool receive(int socket_fd, std::vector<char>& buffer, std::string& text, int (&
   const ssize_t n = recvmsg(socket_fd, &message, MSG_CMSG_CLOEXEC);
   if (n <= 0) return false;
   if (message.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) {
-    std::fprintf(stderr, "simulate_server: a request over %zu bytes or 3 descriptors\n", buffer.size());
+    std::fprintf(stderr, "simulate_server: a request over %zu bytes or 3 descriptors\n",
+                 buffer.size());
     std::exit(7);
   }
   const cmsghdr* header = CMSG_FIRSTHDR(&message);
@@ -67,7 +69,8 @@ void answer(int socket_fd, const std::string& text) {
 }
 
 // In the child: the process a fresh exec of ./simulate would be, then its main.
-[[noreturn]] void run_case(const nlohmann::json& request, const int (&fds)[kDescriptors], int socket_fd) {
+[[noreturn]] void run_case(const nlohmann::json& request, const int (&fds)[kDescriptors],
+                          int socket_fd) {
   setsid();
   for (int target = 0; target < kDescriptors; ++target) dup2(fds[target], target);
   for (int fd : fds)
@@ -128,7 +131,8 @@ int main(int argc, char** argv) {
     rusage usage{};
     while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
-    answer(socket_fd, "status " + std::to_string(status) + " maxrss " + std::to_string(usage.ru_maxrss));
+    answer(socket_fd,
+           "status " + std::to_string(status) + " maxrss " + std::to_string(usage.ru_maxrss));
   }
   return 0;
 }

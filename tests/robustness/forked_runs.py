@@ -27,11 +27,19 @@ _lock = threading.Lock()
 
 
 def server_binary(simulate):
-    """The server beside `simulate`, or None (another build of ./simulate, or none built):
-    the caller then starts ./simulate itself."""
+    """The server beside `simulate`, or None (another build of ./simulate, none built, or one
+    linked before the libraries both link were last built, as after `cmake --build build
+    --target simulate`: it would run older code): the caller then starts ./simulate itself."""
     simulate = Path(simulate)
     server = simulate.parent / "simulate_server"
     if simulate.name != "simulate" or not os.access(server, os.X_OK):
+        return None
+    try:
+        built = server.stat().st_mtime_ns
+        if any(built < library.stat().st_mtime_ns
+               for library in simulate.parent.glob("libncube*.a")):
+            return None
+    except OSError:
         return None
     return server
 
