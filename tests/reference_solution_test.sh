@@ -23,7 +23,8 @@ PY
 }
 
 # Bad input: one line, exit 2, no file.
-for args in "--samples 9" "--samples 2" "--samples 4096" "--threads -1" "--samples x" "--refine 0" "--refine 5"; do
+for args in "--samples 9" "--samples 2" "--samples 4096" "--threads -1" "--samples x" "--refine 0" "--refine 5" \
+    "--structure elements --samples 4" "--structure hemicube-elements --samples 4"; do
   "$solver" cornell-box $args --out "$scratch/bad.json" > "$scratch/out" 2> "$scratch/err"
   rc=$?
   [[ $rc == 2 && $(wc -l < "$scratch/err") == 1 && ! -e $scratch/bad.json ]] ||

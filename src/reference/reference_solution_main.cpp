@@ -150,8 +150,8 @@ int run(int argc, char** argv) {
   app.add_option("scene", scene_name, "scene file (JSON); a bare name is also looked up in scenes/")
       ->required();
   app.add_option("--samples", samples,
-                 "K, points per element: the square of an even number from 4 to 1024; the "
-                 "self-agreement is measured against K/4")
+                 "K, points per element: the square of an even number from 4 to 1024 (16 or more "
+                 "with --structure); the self-agreement is measured against K/4")
       ->capture_default_str();
   app.add_option("--refine", refine,
                  "solve on every element cut into N x N parts and give each element its parts' "
@@ -202,6 +202,12 @@ int run(int argc, char** argv) {
   if (side * side != samples || side % 2 != 0 || samples < 4 || samples > 1024)
     throw InputError("--samples " + std::to_string(samples) +
                      ": must be the square of an even number from 4 to 1024 (4, 16, 36, 64, ...)");
+  // A structure is also solved at K/4 points (its self-agreement), and that needs a side of 2
+  // at least: K = 4 would ask for one point (an internal error, exit 7, before this check).
+  if (!structure_choice.empty() && samples < 16)
+    throw InputError("--samples " + std::to_string(samples) +
+                     " with --structure: its self-agreement solves at K/4 points, at least 4: "
+                     "give 16 or more");
   // As ./simulate's --threads: more threads than cores gains nothing, and each takes a stack
   // (a huge count ended in SIGSEGV).
   if (threads < 0 || threads > 64)
