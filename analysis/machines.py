@@ -1043,6 +1043,9 @@ def main():
     except SweepError as e:
         print(f"machines: {e}", file=sys.stderr)
         sys.exit(2)
+    # The output rule's paths first: one that cannot be written is named before the results are
+    # read or a sweep is run for it (the committed page's own rule needs the results: below).
+    page.check_outputs("machines.py", [args.output, args.figures / FIGURE])
     if args.run:
         run_sweep(args.sweep, results_dir)
     found = entries(sweep, results_dir)

@@ -71,6 +71,18 @@ with tempfile.TemporaryDirectory() as work:
         except output_file.OutputPathError as e:
             expect(name in str(e), f"message does not say {name}")
         expect(test(os.lstat(w / name).st_mode), f"{name} replaced")
+    # A path under a regular file (README.md/page.md): bad input naming that file, as ./simulate
+    # says it (exit 2), by each entry of the rule, not an OSError of the host's.
+    (w / "plain").write_text("plain")
+    for how, call in (("check", lambda p: output_file.check(p)),
+                      ("write", lambda p: output_file.write(p, "x")),
+                      ("move", lambda p: output_file.move(w / "plain", p))):
+        try:
+            call(w / "plain" / "deeper" / "page.md")
+            problems.append(f"{how} under a regular file did not fail")
+        except output_file.MissingFolderError as e:
+            expect("plain is not a folder" in str(e), f"{how} under a file: message {e}")
+    expect((w / "plain").read_text() == "plain", "the file above was written")
     # A file read through the input gate, and one protected: never written, by any name or link.
     from ncube import input_file
     (w / "input.yaml").write_text("read")

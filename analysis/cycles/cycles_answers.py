@@ -34,7 +34,9 @@ How (each choice checked in tests/cycles_answers_test.sh on closed forms):
   over them divided by sqrt(N); the answer is their mean.
 The answer file: scene, scene_file, scene_sha256, the settings, blender version, host seconds
 and per patch [patch, area, R, G, B, se_R, se_G, se_B, Y, se_Y] (Y: Rec. 709 luminance, as the
-simulator's). Exit codes: 0; 2 bad input or Blender missing; 5 output not writable; 7 Blender
+simulator's); and `seed_radiosity`, each seed's own [R, G, B] per patch (the mean and standard
+error are theirs), so that a run of the first seeds alone reproduces part of a committed file:
+Cycles is deterministic for a seed, and seed s renders the same whatever N. Exit codes: 0; 2 bad input or Blender missing; 5 output not writable; 7 Blender
 failed."""
 import argparse
 import hashlib
@@ -271,6 +273,8 @@ def run(args):
     header.update({
         "host_seconds": round(time.time() - start, 1),
         "columns": ["patch", "area", "R", "G", "B", "se_R", "se_G", "se_B", "Y", "se_Y"],
+        "seed_radiosity": [[[float(f"{v:.9g}") for v in radiosity[k, p]] for p in range(len(patches))]
+                           for k in range(count)],
     })
     text = "{\n" + "".join(f" {json.dumps(k)}: {json.dumps(v)},\n" for k, v in header.items())
     text += ' "patches": [\n' + ",\n".join("  " + json.dumps([r[0]] + [float(f"{v:.9g}") for v in r[1:]])

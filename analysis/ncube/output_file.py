@@ -69,11 +69,24 @@ def target(path):
     raise OutputPathError(f"{path}: more than {MAX_LINKS} symbolic links")
 
 
+def _status(path, final):
+    """os.stat of `final` (the path's target), None when there is none; a path under something
+    that is not a folder (README.md/page.md) is bad input, as ./simulate says it."""
+    try:
+        return os.stat(final)
+    except FileNotFoundError:
+        return None
+    except NotADirectoryError:
+        folder = final.parent
+        while folder != folder.parent and not folder.exists():
+            folder = folder.parent
+        raise MissingFolderError(f"{path}: folder {folder} is not a folder") from None
+
+
 def _refuse_inputs(path, final):
     """An OutputPathError when `final` (the path's target) is a file this process read."""
-    try:
-        status = os.stat(final)
-    except FileNotFoundError:
+    status = _status(path, final)
+    if status is None:
         return
     read = input_file.files_read().get((status.st_dev, status.st_ino))
     if read is not None:
@@ -89,12 +102,12 @@ def check(path, folder_made=True, replace_committed=True):
     final = target(path)
     _refuse_inputs(path, final)
     _refuse_committed(path, final, replace_committed)
-    try:
-        mode = os.stat(final).st_mode
-    except FileNotFoundError:
+    status = _status(path, final)
+    if status is None:
         if not folder_made and not final.parent.is_dir():
-            raise MissingFolderError(f"{path}: its folder does not exist") from None
+            raise MissingFolderError(f"{path}: its folder does not exist")
         return
+    mode = status.st_mode
     if not (stat.S_ISREG(mode) or stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
         kind = "a folder" if stat.S_ISDIR(mode) else "a socket" if stat.S_ISSOCK(mode) else \
             "a block device" if stat.S_ISBLK(mode) else "not a file"
@@ -109,10 +122,8 @@ def write(path, data, replace_committed=True):
     final = target(path)
     _refuse_inputs(path, final)
     _refuse_committed(path, final, replace_committed)
-    try:
-        mode = os.stat(final).st_mode
-    except FileNotFoundError:
-        mode = None
+    status = _status(path, final)
+    mode = status.st_mode if status is not None else None
     if mode is not None and (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
         with open(final, "wb") as stream:
             stream.write(data)
