@@ -160,30 +160,33 @@ def test_validation(work):
 
 
 def test_local_sweep(work):
+    """The sweep file of a small sweep on the local cores; it runs in test_kill_and_resume's
+    stopped run (one Snakemake for both: its cells and its table are finished before the stop,
+    checked by check_local_sweep) and, spoiled, in the resume (check_reruns)."""
     (work / "tiny.yaml").write_text(
         "measure: seconds_per_iteration\noptions: {iterations: 2, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2], V: [0, 1]}\n"
         "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1}]\n")
     (work / "scenes_copy").mkdir()
     (work / "scenes_copy" / "box.json").write_bytes((ROOT / "scenes" / "cornell-box.json").read_bytes())
-    results_dir = work / "res"
-    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
-    check(done.returncode == 0, f"a small sweep runs on 2 local cores ({done.stderr[-300:]})")
+
+
+def check_local_sweep(work, results_dir):
+    """tiny.yaml's cells finished in a sweep that was then stopped (test_kill_and_resume): each
+    a finished result of its cell, its CSV and plots written. Then files that are not a
+    finished result of their cell are made, run again by the resume of test_kill_and_resume
+    (one Snakemake for both sweeps, this folder), checked there by check_reruns (that run's
+    exit 0 is "the sweep resumes")."""
     loaded = sweep.load(work / "tiny.yaml")
     for cell in loaded.cells:
         check(results.mismatch(results.read(results_dir / cell.file), cell) is None,
               f"{cell.file} is a finished result of its cell")
-    table = (results_dir / "sweeps" / "tiny" / "cells.csv").read_text().splitlines()
-    check(len(table) == 6, "the sweep's CSV has a row per cell")
+    table = results_dir / "sweeps" / "tiny" / "cells.csv"
+    check(table.exists() and len(table.read_text().splitlines()) == 6,
+          "the sweep's CSV has a row per cell")
     check(all((results_dir / "sweeps" / "tiny" / f).exists() for f in
               ("time_vs_R.png", "speedup.png", "efficiency.png", "node_breakdown.png")),
           "the sweep's plots are written")
-    outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
-               p.parent.name != "scenes_copy" and p.name != "bad.json"]
-    check(not outside, f"results only under the results folder ({outside[:2]})")
-    # Files that are not a finished result of their cell run again: spoiled here, run again by
-    # the resume of test_kill_and_resume (one Snakemake for both sweeps, this folder), checked
-    # there by check_reruns (that run's exit 0 is "the sweep resumes").
     plain = [c for c in loaded.cells if not c.trace]
     traced = next(c for c in loaded.cells if c.trace)
     SPOILED.update(plain=plain, traced=traced, results_dir=results_dir,
@@ -216,8 +219,8 @@ def check_reruns(done):
           "a finished cell is not run again")
 
 
-def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
-    """Runs the sweep with cell jobs held at chosen instants (ncube.run_cell's test hook,
+def stopped_sweep(sweep_files, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
+    """Runs the sweeps with cell jobs held at chosen instants (ncube.run_cell's test hook,
     NCUBE_TEST_PAUSE: {point: cell}), waits until every one is reached, calls before_stop and
     stops the sweep with SIGTERM, as Ctrl-C or a scheduler would: the instant of the stop is
     driven, not raced. Returns whether every pause was reached."""
@@ -226,9 +229,9 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
                                                              in pauses.items()),
                        NCUBE_TEST_PAUSE_DIR=str(signals_dir),
                        NCUBE_SIMULATE=str(simulate or SIMULATE))
-    # A job per pause held at once, and one more core for the others to run meanwhile.
-    process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir),
-                                        "--cores", str(max(2, len(pauses) + 1))],
+    # A job per pause held at once, and two more cores for the others to run meanwhile.
+    process = subprocess.Popen(SWEEP + [str(f) for f in sweep_files] +
+                               ["--results", str(results_dir), "--cores", str(len(pauses) + 2)],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                env=environment)
     deadline = time.monotonic() + 240
@@ -237,11 +240,25 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
         time.sleep(0.05)
     reached = all((signals_dir / point).exists() for point in pauses)
     if before_stop:
-        before_stop()
+        before_stop(process, deadline)
     process.send_signal(signal.SIGTERM)
     process.wait(timeout=60)
     time.sleep(0.5)
     return reached
+
+
+def simulations_of(cell):
+    """The processes running the real ./simulate (its executable, not a wrapper) for `cell`."""
+    found = []
+    real = os.path.realpath(SIMULATE)
+    for entry in Path("/proc").iterdir():
+        try:
+            if entry.name.isdigit() and os.path.realpath(entry / "exe") == real and \
+                    cell.id in (entry / "cmdline").read_bytes().decode(errors="replace"):
+                found.append(int(entry.name))
+        except OSError:
+            continue
+    return found
 
 
 def file_state(path):
@@ -262,23 +279,27 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate has its
-    # simulation (the real one, exec'd) run to convergence at 1e-10 with 64 samples (about
-    # 4,000 iterations, some 15 s on one host thread), so it is running when the quick cells'
-    # jobs reach their pauses; the resume runs the cell as the sweep file has it: one
-    # iteration, a fraction of a second.
+    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate waits for
+    # the test's word (a FIFO; no CPU spent meanwhile) and then has its simulation (the real
+    # one, exec'd) run to convergence at 1e-10 with 64 samples (about 4,000 iterations, some
+    # 15 s on one host thread), so it is running when the sweep is stopped; the resume runs
+    # the cell as the sweep file has it: one iteration, a fraction of a second.
     (work / "kill.yaml").write_text(
         "measure: total_seconds\n"
         "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
         "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
-    # The local sweep's folder, its spoiled cells waiting: the resume runs both sweeps.
+    # The local sweep (test_local_sweep) runs in the same Snakemake and folder: its cells and
+    # its table are finished before the stop, then spoiled, and the resume runs both sweeps.
     results_dir = work / "res"
     loaded = sweep.load(work / "kill.yaml")
     quick, slow, earlier = loaded.cells
+    go = work / "slow-go"
+    os.mkfifo(go)
     slow_simulate = work / "simulate-slow"
     slow_simulate.write_text(
         f'#!/bin/bash\ncase " $* " in *{slow.id}*) ;; *) exec {SIMULATE} "$@";; esac\n'
+        f'read -r _ < {go}\n'
         'args=()\nwhile [ $# -gt 0 ]; do\n  case "$1" in\n'
         '    --iterations) args+=(--iterations 100000); shift 2;;\n'
         '    --samples) args+=(--samples 64); shift 2;;\n'
@@ -287,10 +308,28 @@ def test_kill_and_resume(work):
         f'exec {SIMULATE} "${{args[@]}}"\n')
     slow_simulate.chmod(0o755)
     seen = {}
+    table = results_dir / "sweeps" / "tiny" / "cells.csv"
 
-    def before_stop():
+    def before_stop(process, deadline):
+        # The local sweep's cells and table done (the held jobs keep their cores) ...
+        while not table.exists() and process.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        # ... then the slow cell's real simulation let go, and seen running.
+        while process.poll() is None and time.monotonic() < deadline:
+            try:
+                writer = os.open(go, os.O_WRONLY | os.O_NONBLOCK)
+            except OSError:   # ENXIO: its wrapper has not opened the FIFO yet
+                time.sleep(0.05)
+                continue
+            os.write(writer, b"go\n")
+            os.close(writer)
+            break
+        while not simulations_of(slow) and process.poll() is None and \
+                time.monotonic() < deadline:
+            time.sleep(0.02)
         seen["running"] = [c for c in processes_mentioning(str(results_dir))
                            if "simulate" in c and slow.id in c and "run_cell" not in c]
+        seen["real"] = simulations_of(slow)
         # A lock as a Snakemake stopped between a job's end and its bookkeeping leaves
         # behind (seen once in CI): the stopped sweep must clear it, or the resume refuses
         # the folder.
@@ -303,11 +342,12 @@ def test_kill_and_resume(work):
     # (marked incomplete, a failed job's output); on a cluster this is a job cancelled after its
     # file appeared. A moment earlier for the other quick cell: its result verified under its
     # temporary name, not yet given its final name.
-    reached = stopped_sweep(work / "kill.yaml", results_dir,
+    reached = stopped_sweep([work / "tiny.yaml", work / "kill.yaml"], results_dir,
                             {"written": quick, "started": slow, "verified": earlier},
                             work / "kill-signals", before_stop, simulate=slow_simulate)
-    check(reached and (results_dir / quick.file).exists() and seen["running"],
+    check(reached and (results_dir / quick.file).exists() and seen["running"] and seen["real"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
+    check_local_sweep(work, results_dir)
     kept = file_state(results_dir / quick.file)
     check(kept is not None, "the stopped cell's file is still there")
     left = processes_mentioning(str(results_dir))
@@ -328,6 +368,9 @@ def test_kill_and_resume(work):
     check("3 with a finished result file" in done.stdout and "5 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
     check_reruns(done)
+    outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
+               p.parent.name != "scenes_copy" and p.name != "bad.json"]
+    check(not outside, f"results only under the results folder ({outside[:2]})")
     check(file_state(results_dir / quick.file) == kept and not jobs_run(results_dir, quick),
           "the finished cell is kept (no job for it; same file, time and bytes)")
     check(jobs_run(results_dir, slow) and
