@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Sweeps through the real Snakemake (docs/sweeps.md): validation of sweep files, a small sweep
 on the local cores, results that do not belong to their cell run again, an interrupted sweep
-resumes without losing a finished cell and leaves no simulation running, and the path a
-cluster takes (Snakemake's generic cluster mode with a submit command that runs here)."""
+resumes without losing a finished cell and leaves no simulation running. The path a cluster
+takes (Snakemake's generic cluster mode with a submit command that runs here,
+tests/sweep_local_submit.sh) is tests/sweep_shell_words_test.py's: its one cell's result
+checked and its job seen in Snakemake's log."""
 import contextlib
 import io
 import json
@@ -398,27 +400,11 @@ def test_reproduce_check(work):
           f"experiments/reproduce --check lists the cells, writes nothing ({done.stderr[-200:]})")
 
 
-def test_cluster_mode(work):
-    # One cell: each job in this mode runs a Snakemake of its own (seconds); one shows the path.
-    (work / "cluster.yaml").write_text(
-        "options: {iterations: 1, samples: 4}\ngrid: {scene: [scene0], R: [1]}\n")
-    results_dir = work / "cluster"
-    submit = f"bash {ROOT / 'tests' / 'sweep_local_submit.sh'}"
-    done = run_sweep(work / "cluster.yaml", "--results", results_dir, "--cluster", submit,
-                     "--jobs", "2", "--", "--latency-wait", "5")
-    loaded = sweep.load(work / "cluster.yaml")
-    check(done.returncode == 0 and all(results.mismatch(results.read(results_dir / c.file), c) is None
-                                       for c in loaded.cells),
-          f"generic cluster mode with a local submit command ({done.stderr[-300:]})")
-    check("local-" in (results_dir / "logs" / "snakemake.log").read_text(),
-          "the jobs went through the submit command (Snakemake's log)")
-
-
 def main():
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-test-") as folder:
         work = Path(folder)
         for test in (test_validation, test_local_sweep, test_kill_and_resume,
-                     test_reproduce_check, test_cluster_mode):
+                     test_reproduce_check):
             print(f"-- {test.__name__}", flush=True)
             test(work)
     print(f"sweep_test: {len(failures)} failure(s)")
