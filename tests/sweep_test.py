@@ -162,40 +162,55 @@ def test_validation(work):
 
 
 def test_local_sweep(work):
-    """The sweep file of a small sweep on the local cores; it runs in test_kill_and_resume's
-    stopped run (one Snakemake for both: its cells and its table are finished before the stop,
-    checked by check_local_sweep) and, spoiled, in the resume (check_reruns)."""
+    """A small sweep on the local cores (tiny.yaml): a grid of scene0 at two iterations, a traced
+    cell of a scene file copied here, and test_kill_and_resume's three cells. It runs in
+    test_kill_and_resume's stopped run: the grid's and the traced cell finish before the stop
+    (check_local_sweep), test_kill_and_resume's are stopped; the resume runs the rest, its
+    spoiled cells among them (check_reruns), and writes the sweep's table (check_table)."""
     (work / "tiny.yaml").write_text(
         "measure: seconds_per_iteration\noptions: {iterations: 2, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2], V: [0, 1]}\n"
-        "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1}]\n")
+        "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1},\n"
+        "        {scene: scene0, R: 1, iterations: 1}, {scene: scene1, R: 1, iterations: 1},\n"
+        "        {scene: scene0, R: 2, iterations: 1}]\n")
     (work / "scenes_copy").mkdir()
     (work / "scenes_copy" / "box.json").write_bytes((ROOT / "scenes" / "cornell-box.json").read_bytes())
 
 
+def local_cells(work):
+    """tiny.yaml's cells: the grid's four (two iterations), the traced one, and the three of
+    test_kill_and_resume (quick, slow, earlier)."""
+    cells = sweep.load(work / "tiny.yaml").cells
+    grid = [c for c in cells if c.options["iterations"] == 2]
+    traced = next(c for c in cells if c.trace)
+    stopped = [c for c in cells if c not in grid and c is not traced]
+    return grid, traced, stopped
+
+
 def check_local_sweep(work, results_dir):
-    """tiny.yaml's cells finished in a sweep that was then stopped (test_kill_and_resume): each
-    a finished result of its cell, its CSV and plots written. Then files that are not a
-    finished result of their cell are made, run again by the resume of test_kill_and_resume
-    (one Snakemake for both sweeps, this folder), checked there by check_reruns (that run's
-    exit 0 is "the sweep resumes")."""
-    loaded = sweep.load(work / "tiny.yaml")
-    for cell in loaded.cells:
+    """The grid's and the traced cell, finished in a sweep that was then stopped
+    (test_kill_and_resume): each a finished result of its cell. Then files that are not a
+    finished result of their cell are made, run again by the resume of test_kill_and_resume,
+    checked there by check_reruns (that run's exit 0 is "the sweep resumes")."""
+    grid, traced, _ = local_cells(work)
+    for cell in grid + [traced]:
         check(results.mismatch(results.read(results_dir / cell.file), cell) is None,
               f"{cell.file} is a finished result of its cell")
+    SPOILED.update(plain=grid, traced=traced, results_dir=results_dir,
+                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in grid})
+    (results_dir / grid[0].file).write_text('{"status": "ok"}\n')
+    (results_dir / grid[1].file).write_bytes((results_dir / grid[2].file).read_bytes())
+    (results_dir / traced.trace_file).unlink()
+
+
+def check_table(work, results_dir):
+    """After the resume: the sweep's CSV has a row per cell, its plots are written."""
     table = results_dir / "sweeps" / "tiny" / "cells.csv"
-    check(table.exists() and len(table.read_text().splitlines()) == 6,
-          "the sweep's CSV has a row per cell")
+    check(table.exists() and len(table.read_text().splitlines()) ==
+          1 + len(sweep.load(work / "tiny.yaml").cells), "the sweep's CSV has a row per cell")
     check(all((results_dir / "sweeps" / "tiny" / f).exists() for f in
               ("time_vs_R.png", "speedup.png", "efficiency.png", "node_breakdown.png")),
           "the sweep's plots are written")
-    plain = [c for c in loaded.cells if not c.trace]
-    traced = next(c for c in loaded.cells if c.trace)
-    SPOILED.update(plain=plain, traced=traced, results_dir=results_dir,
-                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells})
-    (results_dir / plain[0].file).write_text('{"status": "ok"}\n')
-    (results_dir / plain[1].file).write_bytes((results_dir / plain[2].file).read_bytes())
-    (results_dir / traced.trace_file).unlink()
 
 
 SPOILED = {}   # test_local_sweep's cells made unfinished, for check_reruns
@@ -286,16 +301,10 @@ def test_kill_and_resume(work):
     # one, exec'd) run to convergence at 1e-10 with 64 samples (about 4,000 iterations, some
     # 15 s on one host thread), so it is running when the sweep is stopped; the resume runs
     # the cell as the sweep file has it: one iteration, a fraction of a second.
-    (work / "kill.yaml").write_text(
-        "measure: total_seconds\n"
-        "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
-    # The local sweep (test_local_sweep) runs in the same Snakemake and folder: its cells and
-    # its table are finished before the stop, then spoiled, and the resume runs both sweeps.
+    # The cells are tiny.yaml's (test_local_sweep): the other cells of the sweep finish before
+    # the stop, then some are spoiled, and the resume runs those too.
     results_dir = work / "res"
-    loaded = sweep.load(work / "kill.yaml")
-    quick, slow, earlier = loaded.cells
+    grid, traced, (quick, slow, earlier) = local_cells(work)
     go = work / "slow-go"
     os.mkfifo(go)
     slow_simulate = work / "simulate-slow"
@@ -310,11 +319,11 @@ def test_kill_and_resume(work):
         f'exec {SIMULATE} "${{args[@]}}"\n')
     slow_simulate.chmod(0o755)
     seen = {}
-    table = results_dir / "sweeps" / "tiny" / "cells.csv"
 
     def before_stop(process, deadline):
-        # The local sweep's cells and table done (the held jobs keep their cores) ...
-        while not table.exists() and process.poll() is None and time.monotonic() < deadline:
+        # The other cells done (the held jobs keep their cores) ...
+        while not all((results_dir / c.file).exists() for c in grid + [traced]) and \
+                process.poll() is None and time.monotonic() < deadline:
             time.sleep(0.05)
         # ... then the slow cell's real simulation let go, and seen running.
         while process.poll() is None and time.monotonic() < deadline:
@@ -344,7 +353,7 @@ def test_kill_and_resume(work):
     # (marked incomplete, a failed job's output); on a cluster this is a job cancelled after its
     # file appeared. A moment earlier for the other quick cell: its result verified under its
     # temporary name, not yet given its final name.
-    reached = stopped_sweep([work / "tiny.yaml", work / "kill.yaml"], results_dir,
+    reached = stopped_sweep([work / "tiny.yaml"], results_dir,
                             {"written": quick, "started": slow, "verified": earlier},
                             work / "kill-signals", before_stop, simulate=slow_simulate)
     check(reached and (results_dir / quick.file).exists() and seen["running"] and seen["real"],
@@ -362,14 +371,14 @@ def test_kill_and_resume(work):
           "a cell stopped before its file got its name leaves no file at all")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
-    # The next run finishes the interrupted cells only; with test_local_sweep's sweep file too
-    # (its folder), it runs its 3 spoiled cells again: 3 of the 8 cells finished (the quick
-    # cell, 2 of the local sweep's), 5 to run.
-    done = run_sweep(work / "tiny.yaml", work / "kill.yaml", "--results", results_dir, timeout=280)
+    # The next run finishes the interrupted cells and the 3 spoiled ones only: 3 of the 8 cells
+    # finished (the quick cell, 2 of the grid's), 5 to run.
+    done = run_sweep(work / "tiny.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
     check("3 with a finished result file" in done.stdout and "5 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
     check_reruns(done)
+    check_table(work, results_dir)
     outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
                p.parent.name != "scenes_copy" and p.name != "bad.json"]
     check(not outside, f"results only under the results folder ({outside[:2]})")
