@@ -4,9 +4,12 @@ results folder in use by a running sweep, a cell failing, an interruption and a 
 system each give one plain line saying what happened and what to do, their documented exit
 code, and a last line naming only the tables written; finished cells stay valid and the same
 command completes the sweep afterwards. The instants are driven (ncube.run_cell's test pause),
-not raced."""
+not raced. The cases run in turn on one sweep folder, in a private mount namespace (unshare
+-rm) where the full file system is a 1 MiB tmpfs (without one, that case is skipped, saying
+so)."""
 import io
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -22,10 +25,9 @@ SWEEP = [str(ROOT / "experiments" / "sweep")]
 SIMULATE = os.path.abspath(os.environ.get("NCUBE_SIMULATE") or ROOT / "simulate")
 failures = []
 
-TINY = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
-        "grid: {scene: [scene0], R: [1, 2, 4]}\n")
 # Two cells where one that waits, then fails, and one other are all the cases need (each cell
-# is a job: a Python and a ./simulate); the full disk keeps three, its filler sized for them.
+# is a job: a Python and a ./simulate). The cases run in turn on one folder, one Snakemake run
+# each: stopped, failing, full file system (the filler sized from the space left), completed.
 PAIR = ("measure: total_seconds\noptions: {iterations: 1, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2]}\n")
 
@@ -66,12 +68,15 @@ def paused_sweep(sweep_file, results_dir, point, cell, signals_dir):
     return process, (signals_dir / point).exists()
 
 
-def test_folder_in_use_then_failing(work):
+def test_folder_in_use_then_failing(work, disk=None):
     """A sweep in use, stopped, then run again with its stopped cell failing, then fixed: one
-    sweep folder for the three cases, each a Snakemake run fewer than a folder of its own."""
+    sweep folder for the cases, each a Snakemake run fewer than a folder of its own. With
+    `disk` (in a private mount namespace: main) the fixed run first meets a full file system
+    (full_disk: the folder moved onto a 1 MiB tmpfs mounted there), then completes once space
+    is freed."""
     (work / "busy.yaml").write_text(PAIR)
     cells = sweep.load(work / "busy.yaml").cells
-    results_dir = work / "busy"
+    results_dir = (disk or work) / "busy"
     first, reached = paused_sweep(work / "busy.yaml", results_dir, "started", cells[0],
                                   work / "busy-signals")
     plan = (results_dir / "plan.json").read_bytes()
@@ -120,28 +125,35 @@ def test_folder_in_use_then_failing(work):
     check(all(results.mismatch(results.read(results_dir / c.file), c) is None for c in others)
           and not (results_dir / failing.file).exists(), "the other cells finished")
 
+    kept = others
+    if disk:   # fixed, but the file system full: then freed
+        kept = full_disk(work, results_dir, disk, cells)
     done = run_sweep(work / "busy.yaml", "--results", results_dir)
-    check(done.returncode == 0 and "1 to run" in done.stdout and
+    check(done.returncode == 0 and f"{len(kept)} with a finished result file" in done.stdout and
+          f"{len(cells) - len(kept)} to run" in done.stdout and
           results.mismatch(results.read(results_dir / failing.file), failing) is None,
-          "once fixed, the same command runs the failed cell only")
+          f"once fixed, the same command runs only the cells without a finished result "
+          f"({done.stdout.splitlines()[:1]})")
     check(done.returncode == 0 and last_line(done).endswith(
         f"written: {folder / 'cells.csv'}, {folder / 'summary.csv'}, {folder / 'summary.md'}"),
         f"the same command completes it and names its table ({last_line(done)})")
 
 
-def full_disk_inside(folder):
-    """Run in a private mount namespace (unshare -rm): the results folder on a 1 MiB tmpfs."""
-    folder = Path(folder)
-    disk = folder / "disk"
-    disk.mkdir()
+def full_disk(work, results_dir, disk, cells):
+    """The fixed sweep run again with its folder on a 1 MiB tmpfs all but full (about 90 KiB
+    left): exit 5, one plain line, no table; the cells written are finished results. The
+    folder is moved there first (its path unchanged: the same command), the filler removed
+    afterwards. Returns the cells with a finished result."""
+    sweep_file = work / "busy.yaml"
+    shutil.move(results_dir, work / "stash")
     subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(disk)], check=True)
-    (folder / "full.yaml").write_text(TINY)
-    cells = sweep.load(folder / "full.yaml").cells
-    results_dir = disk / "res"
+    shutil.move(work / "stash", results_dir)
+    free = os.statvfs(disk)
     filler = disk / "filler"
-    filler.write_bytes(bytes(1024 * 1024 - 100 * 1024))   # about 90 KiB left
-    done = run_sweep(folder / "full.yaml", "--results", results_dir)
-    check(done.returncode == 5, f"a full file system: exit 5 ({done.returncode})")
+    filler.write_bytes(bytes(max(0, free.f_bavail * free.f_frsize - 90 * 1024)))
+    done = run_sweep(sweep_file, "--results", results_dir)
+    check(done.returncode == 5 and "1 to run" in done.stdout,
+          f"a full file system: exit 5; the failed cell is the one to run ({done.returncode})")
     said = plain_lines(done)
     check(len(said) == 1 and
           said[0].startswith(f"sweep: the file system of {results_dir} is full (")
@@ -149,35 +161,24 @@ def full_disk_inside(folder):
                                "same command again"), f"one plain line says so ({said[:1]})")
     check("Traceback" not in done.stderr and "Logging error" not in done.stderr,
           "no traceback")
-    table = results_dir / "sweeps" / "full" / "cells.csv"
+    table = results_dir / "sweeps" / sweep_file.stem / "cells.csv"
     check(last_line(done).endswith("written: no table") and not table.exists(),
           f"the last line names no table, none was written ({last_line(done)})")
     kept = [c for c in cells if (results_dir / c.file).exists()]
     check(all(results.mismatch(results.read(results_dir / c.file), c) is None for c in kept),
           f"the cells written are finished results ({len(kept)} of {len(cells)})")
     filler.unlink()
-    done = run_sweep(folder / "full.yaml", "--results", results_dir)
-    check(done.returncode == 0 and f"{len(kept)} with a finished result file" in done.stdout and
-          last_line(done).endswith(f"written: {table}, {table.parent / 'summary.csv'}, "
-                                   f"{table.parent / 'summary.md'}"),
-          f"after freeing space the same command completes the sweep ({last_line(done)})")
+    return kept
+
+
+def in_namespace(folder):
+    """Run in a private mount namespace (unshare -rm): the cases, the full file system among
+    them (a tmpfs mounted on `disk`, the folder that holds the sweep folder)."""
+    work = Path(folder)
+    disk = work / "disk"
+    disk.mkdir()
+    test_folder_in_use_then_failing(work, disk)
     return 1 if failures else 0
-
-
-def test_full_disk(work):
-    inside = work / "full-disk"
-    inside.mkdir()
-    probe = subprocess.run(["unshare", "-rm", "mount", "-t", "tmpfs", "tmpfs", str(inside)],
-                           capture_output=True, text=True)
-    if probe.returncode != 0:
-        print(f"skip full file system: no private mount namespace here "
-              f"({probe.stderr.strip()[:120]})", flush=True)
-        return
-    done = subprocess.run(["unshare", "-rm", sys.executable, __file__, "--full-disk-inside",
-                           str(inside)], capture_output=True, text=True, timeout=400,
-                          env=dict(os.environ, NCUBE_SIMULATE=SIMULATE))
-    sys.stdout.write(done.stdout)
-    check(done.returncode == 0, f"the full-disk case ran ({done.stderr[-300:]})")
 
 
 def test_logging_tracebacks_dropped(_work):
@@ -208,15 +209,28 @@ def test_logging_tracebacks_dropped(_work):
 
 
 def main():
-    if sys.argv[1:2] == ["--full-disk-inside"]:
-        return full_disk_inside(sys.argv[2])
+    if sys.argv[1:2] == ["--in-namespace"]:
+        return in_namespace(sys.argv[2])
     os.environ["NCUBE_SIMULATE"] = SIMULATE
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-failures-") as folder:
         work = Path(folder)
-        for test in (test_logging_tracebacks_dropped, test_folder_in_use_then_failing,
-                     test_full_disk):
-            print(f"-- {test.__name__}", flush=True)
-            test(work)
+        print("-- test_logging_tracebacks_dropped", flush=True)
+        test_logging_tracebacks_dropped(work)
+        print("-- test_folder_in_use_then_failing", flush=True)
+        inside = work / "namespace"
+        inside.mkdir()
+        probe = subprocess.run(["unshare", "-rm", "mount", "-t", "tmpfs", "tmpfs", str(inside)],
+                               capture_output=True, text=True)
+        if probe.returncode != 0:
+            print(f"skip full file system: no private mount namespace here "
+                  f"({probe.stderr.strip()[:120]})", flush=True)
+            test_folder_in_use_then_failing(work)
+        else:
+            done = subprocess.run(["unshare", "-rm", sys.executable, __file__, "--in-namespace",
+                                   str(inside)], capture_output=True, text=True, timeout=500)
+            sys.stdout.write(done.stdout)
+            check(done.returncode == 0, f"the cases ran, the full file system among them "
+                                        f"({done.stderr[-300:]})")
     print(f"sweep_failures_test: {len(failures)} failure(s)")
     return 1 if failures else 0
 

@@ -22,7 +22,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import cluster_job, runner  # noqa: E402
+from ncube import cluster_job, results, runner  # noqa: E402
+from ncube.sweep import load as load_sweep  # noqa: E402
 from snakemake.utils import format as snakemake_format  # noqa: E402
 
 SWEEP = ["/usr/bin/python3", str(ROOT / "experiments" / "sweep")]
@@ -133,6 +134,14 @@ def hostile_paths(work, safe_base):
     check(done.returncode == 0 and len(cells) == 1,
           f"through a cluster submit command, a results path with the other syntax runs "
           f"(exit {done.returncode}: {done.stderr.strip()[-300:]})")
+    # Snakemake's generic cluster mode (the suite's one run of it): the job went through the
+    # submit command and made its cell's finished result.
+    cell, = load_sweep(folder / "study.yaml").cells
+    log = cluster_results / "logs" / "snakemake.log"
+    check(results.mismatch(results.read(cluster_results / cell.file), cell) is None and
+          "local-" in (log.read_text() if log.exists() else ""),
+          "the cluster job went through the submit command (Snakemake's log) and its result is "
+          "the cell's")
     check(not pwned(work), f"nothing in the paths ran: {pwned(work)}")
 
 

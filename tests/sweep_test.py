@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Sweeps through the real Snakemake (docs/sweeps.md): validation of sweep files, a small sweep
 on the local cores, results that do not belong to their cell run again, an interrupted sweep
-resumes without losing a finished cell and leaves no simulation running, and the path a
-cluster takes (Snakemake's generic cluster mode with a submit command that runs here)."""
+resumes without losing a finished cell and leaves no simulation running. The path a cluster
+takes (Snakemake's generic cluster mode with a submit command that runs here,
+tests/sweep_local_submit.sh) is tests/sweep_shell_words_test.py's: its one cell's result
+checked and its job seen in Snakemake's log."""
 import contextlib
 import io
 import json
@@ -160,37 +162,55 @@ def test_validation(work):
 
 
 def test_local_sweep(work):
+    """A small sweep on the local cores (tiny.yaml): a grid of scene0 at two iterations, a traced
+    cell of a scene file copied here, and test_kill_and_resume's three cells. It runs in
+    test_kill_and_resume's stopped run: the grid's and the traced cell finish before the stop
+    (check_local_sweep), test_kill_and_resume's are stopped; the resume runs the rest, its
+    spoiled cells among them (check_reruns), and writes the sweep's table (check_table)."""
     (work / "tiny.yaml").write_text(
         "measure: seconds_per_iteration\noptions: {iterations: 2, samples: 4}\n"
         "grid: {scene: [scene0], R: [1, 2], V: [0, 1]}\n"
-        "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1}]\n")
+        "cells: [{scene: scenes_copy/box.json, R: 1, trace: true, iterations: 1},\n"
+        "        {scene: scene0, R: 1, iterations: 1}, {scene: scene1, R: 1, iterations: 1},\n"
+        "        {scene: scene0, R: 2, iterations: 1}]\n")
     (work / "scenes_copy").mkdir()
     (work / "scenes_copy" / "box.json").write_bytes((ROOT / "scenes" / "cornell-box.json").read_bytes())
-    results_dir = work / "res"
-    done = run_sweep(work / "tiny.yaml", "--results", results_dir)
-    check(done.returncode == 0, f"a small sweep runs on 2 local cores ({done.stderr[-300:]})")
-    loaded = sweep.load(work / "tiny.yaml")
-    for cell in loaded.cells:
+
+
+def local_cells(work):
+    """tiny.yaml's cells: the grid's four (two iterations), the traced one, and the three of
+    test_kill_and_resume (quick, slow, earlier)."""
+    cells = sweep.load(work / "tiny.yaml").cells
+    grid = [c for c in cells if c.options["iterations"] == 2]
+    traced = next(c for c in cells if c.trace)
+    stopped = [c for c in cells if c not in grid and c is not traced]
+    return grid, traced, stopped
+
+
+def check_local_sweep(work, results_dir):
+    """The grid's and the traced cell, finished in a sweep that was then stopped
+    (test_kill_and_resume): each a finished result of its cell. Then files that are not a
+    finished result of their cell are made, run again by the resume of test_kill_and_resume,
+    checked there by check_reruns (that run's exit 0 is "the sweep resumes")."""
+    grid, traced, _ = local_cells(work)
+    for cell in grid + [traced]:
         check(results.mismatch(results.read(results_dir / cell.file), cell) is None,
               f"{cell.file} is a finished result of its cell")
-    table = (results_dir / "sweeps" / "tiny" / "cells.csv").read_text().splitlines()
-    check(len(table) == 6, "the sweep's CSV has a row per cell")
+    SPOILED.update(plain=grid, traced=traced, results_dir=results_dir,
+                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in grid})
+    (results_dir / grid[0].file).write_text('{"status": "ok"}\n')
+    (results_dir / grid[1].file).write_bytes((results_dir / grid[2].file).read_bytes())
+    (results_dir / traced.trace_file).unlink()
+
+
+def check_table(work, results_dir):
+    """After the resume: the sweep's CSV has a row per cell, its plots are written."""
+    table = results_dir / "sweeps" / "tiny" / "cells.csv"
+    check(table.exists() and len(table.read_text().splitlines()) ==
+          1 + len(sweep.load(work / "tiny.yaml").cells), "the sweep's CSV has a row per cell")
     check(all((results_dir / "sweeps" / "tiny" / f).exists() for f in
               ("time_vs_R.png", "speedup.png", "efficiency.png", "node_breakdown.png")),
           "the sweep's plots are written")
-    outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
-               p.parent.name != "scenes_copy" and p.name != "bad.json"]
-    check(not outside, f"results only under the results folder ({outside[:2]})")
-    # Files that are not a finished result of their cell run again: spoiled here, run again by
-    # the resume of test_kill_and_resume (one Snakemake for both sweeps, this folder), checked
-    # there by check_reruns (that run's exit 0 is "the sweep resumes").
-    plain = [c for c in loaded.cells if not c.trace]
-    traced = next(c for c in loaded.cells if c.trace)
-    SPOILED.update(plain=plain, traced=traced, results_dir=results_dir,
-                   stamp={c.id: (results_dir / c.file).stat().st_mtime_ns for c in loaded.cells})
-    (results_dir / plain[0].file).write_text('{"status": "ok"}\n')
-    (results_dir / plain[1].file).write_bytes((results_dir / plain[2].file).read_bytes())
-    (results_dir / traced.trace_file).unlink()
 
 
 SPOILED = {}   # test_local_sweep's cells made unfinished, for check_reruns
@@ -216,8 +236,8 @@ def check_reruns(done):
           "a finished cell is not run again")
 
 
-def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
-    """Runs the sweep with cell jobs held at chosen instants (ncube.run_cell's test hook,
+def stopped_sweep(sweep_files, results_dir, pauses, signals_dir, before_stop=None, simulate=None):
+    """Runs the sweeps with cell jobs held at chosen instants (ncube.run_cell's test hook,
     NCUBE_TEST_PAUSE: {point: cell}), waits until every one is reached, calls before_stop and
     stops the sweep with SIGTERM, as Ctrl-C or a scheduler would: the instant of the stop is
     driven, not raced. Returns whether every pause was reached."""
@@ -226,9 +246,9 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
                                                              in pauses.items()),
                        NCUBE_TEST_PAUSE_DIR=str(signals_dir),
                        NCUBE_SIMULATE=str(simulate or SIMULATE))
-    # A job per pause held at once, and one more core for the others to run meanwhile.
-    process = subprocess.Popen(SWEEP + [str(sweep_file), "--results", str(results_dir),
-                                        "--cores", str(max(2, len(pauses) + 1))],
+    # A job per pause held at once, and two more cores for the others to run meanwhile.
+    process = subprocess.Popen(SWEEP + [str(f) for f in sweep_files] +
+                               ["--results", str(results_dir), "--cores", str(len(pauses) + 2)],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                env=environment)
     deadline = time.monotonic() + 240
@@ -237,11 +257,25 @@ def stopped_sweep(sweep_file, results_dir, pauses, signals_dir, before_stop=None
         time.sleep(0.05)
     reached = all((signals_dir / point).exists() for point in pauses)
     if before_stop:
-        before_stop()
+        before_stop(process, deadline)
     process.send_signal(signal.SIGTERM)
     process.wait(timeout=60)
     time.sleep(0.5)
     return reached
+
+
+def simulations_of(cell):
+    """The processes running the real ./simulate (its executable, not a wrapper) for `cell`."""
+    found = []
+    real = os.path.realpath(SIMULATE)
+    for entry in Path("/proc").iterdir():
+        try:
+            if entry.name.isdigit() and os.path.realpath(entry / "exe") == real and \
+                    cell.id in (entry / "cmdline").read_bytes().decode(errors="replace"):
+                found.append(int(entry.name))
+        except OSError:
+            continue
+    return found
 
 
 def file_state(path):
@@ -262,23 +296,21 @@ def jobs_run(results_dir, cell):
 
 
 def test_kill_and_resume(work):
-    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate has its
-    # simulation (the real one, exec'd) run to convergence at 1e-10 with 64 samples (about
-    # 4,000 iterations, some 15 s on one host thread), so it is running when the quick cells'
-    # jobs reach their pauses; the resume runs the cell as the sweep file has it: one
-    # iteration, a fraction of a second.
-    (work / "kill.yaml").write_text(
-        "measure: total_seconds\n"
-        "cells: [{scene: scene0, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene1, R: 1, iterations: 1, samples: 4},\n"
-        "        {scene: scene0, R: 2, iterations: 1, samples: 4}]\n")
-    # The local sweep's folder, its spoiled cells waiting: the resume runs both sweeps.
+    # The slow cell is slow in the stopped run only: there a wrapper of ./simulate waits for
+    # the test's word (a FIFO; no CPU spent meanwhile) and then has its simulation (the real
+    # one, exec'd) run to convergence at 1e-10 with 64 samples (about 4,000 iterations, some
+    # 15 s on one host thread), so it is running when the sweep is stopped; the resume runs
+    # the cell as the sweep file has it: one iteration, a fraction of a second.
+    # The cells are tiny.yaml's (test_local_sweep): the other cells of the sweep finish before
+    # the stop, then some are spoiled, and the resume runs those too.
     results_dir = work / "res"
-    loaded = sweep.load(work / "kill.yaml")
-    quick, slow, earlier = loaded.cells
+    grid, traced, (quick, slow, earlier) = local_cells(work)
+    go = work / "slow-go"
+    os.mkfifo(go)
     slow_simulate = work / "simulate-slow"
     slow_simulate.write_text(
         f'#!/bin/bash\ncase " $* " in *{slow.id}*) ;; *) exec {SIMULATE} "$@";; esac\n'
+        f'read -r _ < {go}\n'
         'args=()\nwhile [ $# -gt 0 ]; do\n  case "$1" in\n'
         '    --iterations) args+=(--iterations 100000); shift 2;;\n'
         '    --samples) args+=(--samples 64); shift 2;;\n'
@@ -288,9 +320,27 @@ def test_kill_and_resume(work):
     slow_simulate.chmod(0o755)
     seen = {}
 
-    def before_stop():
+    def before_stop(process, deadline):
+        # The other cells done (the held jobs keep their cores) ...
+        while not all((results_dir / c.file).exists() for c in grid + [traced]) and \
+                process.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        # ... then the slow cell's real simulation let go, and seen running.
+        while process.poll() is None and time.monotonic() < deadline:
+            try:
+                writer = os.open(go, os.O_WRONLY | os.O_NONBLOCK)
+            except OSError:   # ENXIO: its wrapper has not opened the FIFO yet
+                time.sleep(0.05)
+                continue
+            os.write(writer, b"go\n")
+            os.close(writer)
+            break
+        while not simulations_of(slow) and process.poll() is None and \
+                time.monotonic() < deadline:
+            time.sleep(0.02)
         seen["running"] = [c for c in processes_mentioning(str(results_dir))
                            if "simulate" in c and slow.id in c and "run_cell" not in c]
+        seen["real"] = simulations_of(slow)
         # A lock as a Snakemake stopped between a job's end and its bookkeeping leaves
         # behind (seen once in CI): the stopped sweep must clear it, or the resume refuses
         # the folder.
@@ -303,11 +353,12 @@ def test_kill_and_resume(work):
     # (marked incomplete, a failed job's output); on a cluster this is a job cancelled after its
     # file appeared. A moment earlier for the other quick cell: its result verified under its
     # temporary name, not yet given its final name.
-    reached = stopped_sweep(work / "kill.yaml", results_dir,
+    reached = stopped_sweep([work / "tiny.yaml"], results_dir,
                             {"written": quick, "started": slow, "verified": earlier},
                             work / "kill-signals", before_stop, simulate=slow_simulate)
-    check(reached and (results_dir / quick.file).exists() and seen["running"],
+    check(reached and (results_dir / quick.file).exists() and seen["running"] and seen["real"],
           "stopped with one cell's file written (its job not exited) and a simulation running")
+    check_local_sweep(work, results_dir)
     kept = file_state(results_dir / quick.file)
     check(kept is not None, "the stopped cell's file is still there")
     left = processes_mentioning(str(results_dir))
@@ -320,14 +371,17 @@ def test_kill_and_resume(work):
           "a cell stopped before its file got its name leaves no file at all")
     locks = list((results_dir / ".snakemake" / "locks").glob("*"))
     check(not locks, f"a stopped sweep leaves no Snakemake lock ({[p.name for p in locks]})")
-    # The next run finishes the interrupted cells only; with test_local_sweep's sweep file too
-    # (its folder), it runs its 3 spoiled cells again: 3 of the 8 cells finished (the quick
-    # cell, 2 of the local sweep's), 5 to run.
-    done = run_sweep(work / "tiny.yaml", work / "kill.yaml", "--results", results_dir, timeout=280)
+    # The next run finishes the interrupted cells and the 3 spoiled ones only: 3 of the 8 cells
+    # finished (the quick cell, 2 of the grid's), 5 to run.
+    done = run_sweep(work / "tiny.yaml", "--results", results_dir, timeout=280)
     check(done.returncode == 0, f"the sweep resumes ({done.stderr[-300:]})")
     check("3 with a finished result file" in done.stdout and "5 to run" in done.stdout,
           f"the sweep decides from the result files ({done.stdout.splitlines()[:1]})")
     check_reruns(done)
+    check_table(work, results_dir)
+    outside = [p for p in work.rglob("*.json") if results_dir not in p.parents and
+               p.parent.name != "scenes_copy" and p.name != "bad.json"]
+    check(not outside, f"results only under the results folder ({outside[:2]})")
     check(file_state(results_dir / quick.file) == kept and not jobs_run(results_dir, quick),
           "the finished cell is kept (no job for it; same file, time and bytes)")
     check(jobs_run(results_dir, slow) and
@@ -355,27 +409,11 @@ def test_reproduce_check(work):
           f"experiments/reproduce --check lists the cells, writes nothing ({done.stderr[-200:]})")
 
 
-def test_cluster_mode(work):
-    # One cell: each job in this mode runs a Snakemake of its own (seconds); one shows the path.
-    (work / "cluster.yaml").write_text(
-        "options: {iterations: 1, samples: 4}\ngrid: {scene: [scene0], R: [1]}\n")
-    results_dir = work / "cluster"
-    submit = f"bash {ROOT / 'tests' / 'sweep_local_submit.sh'}"
-    done = run_sweep(work / "cluster.yaml", "--results", results_dir, "--cluster", submit,
-                     "--jobs", "2", "--", "--latency-wait", "5")
-    loaded = sweep.load(work / "cluster.yaml")
-    check(done.returncode == 0 and all(results.mismatch(results.read(results_dir / c.file), c) is None
-                                       for c in loaded.cells),
-          f"generic cluster mode with a local submit command ({done.stderr[-300:]})")
-    check("local-" in (results_dir / "logs" / "snakemake.log").read_text(),
-          "the jobs went through the submit command (Snakemake's log)")
-
-
 def main():
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-test-") as folder:
         work = Path(folder)
         for test in (test_validation, test_local_sweep, test_kill_and_resume,
-                     test_reproduce_check, test_cluster_mode):
+                     test_reproduce_check):
             print(f"-- {test.__name__}", flush=True)
             test(work)
     print(f"sweep_test: {len(failures)} failure(s)")
