@@ -14,7 +14,7 @@
 #    committed hemicube structures, the decisions' sentences recounted from their table, the
 #    cost table's front recounted, the reciprocity count written for hemicube runs only and
 #    shown.
-# About 30 s.
+# About 15 CPU seconds.
 set -u
 simulate=$1 root=$2
 scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
