@@ -70,7 +70,6 @@ def simulate(cell, values, document, workdir, changes):
 
 @page.refusing_outputs("calibrate.py")
 def main():
-    import numpy as np
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dry-run", action="store_true", help="fit, but write nothing")
     parser.add_argument("--set", action="append", default=[], metavar="OPTION=VALUE",
@@ -79,6 +78,7 @@ def main():
     args = parser.parse_args()
     page.will_run("calibrate.py", "the calibration cells of analysis/calibration.json itself "
                   "(a few runs per Newton step)")
+    import numpy as np
     import yaml
     changes = {k: yaml.safe_load(v) for k, _, v in (item.partition("=") for item in args.set)}
     calibration = json.loads((ANALYSIS / "calibration.json").read_text())
