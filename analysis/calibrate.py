@@ -22,7 +22,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-import numpy as np
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: --help and refusals need none.
 
 from ncube import page  # noqa: E402
 from ncube import simulate as simulator
@@ -78,6 +78,7 @@ def main():
     args = parser.parse_args()
     page.will_run("calibrate.py", "the calibration cells of analysis/calibration.json itself "
                   "(a few runs per Newton step)")
+    import numpy as np
     import yaml
     changes = {k: yaml.safe_load(v) for k, _, v in (item.partition("=") for item in args.set)}
     calibration = json.loads((ANALYSIS / "calibration.json").read_text())

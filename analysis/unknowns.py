@@ -26,8 +26,7 @@ from ncube.interpreter import use_project_python  # noqa: E402
 
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 
-import numpy as np  # noqa: E402
-
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: a refusal needs none.
 from ncube import opening as op  # noqa: E402
 from ncube import input_file  # noqa: E402
 from ncube import page as page_rule  # noqa: E402
@@ -103,6 +102,7 @@ def collect(count, seed, study):
 # worlds).
 
 def interval(values):
+    import numpy as np
     values = np.array([v for v in values if v is not None], dtype=float)
     if values.size == 0:
         return None
@@ -137,6 +137,7 @@ def finding_counts(worlds):
 
 
 def error_distribution(worlds, which):
+    import numpy as np
     values = np.array([w["stats"][which] for w in worlds], dtype=float)
     return {"min": float(values.min()), "p5": float(np.percentile(values, 5)),
             "median": float(np.median(values)), "p95": float(np.percentile(values, 95)),
@@ -146,6 +147,7 @@ def error_distribution(worlds, which):
 def design_columns(worlds, names):
     """The regressors of one group of unknowns: numbers as they are (a block size on a log
     scale), a choice one-hot (its first value the baseline); constant columns dropped."""
+    import numpy as np
     columns = []
     for name in names:
         values = [w["values"][name] for w in worlds]
@@ -161,6 +163,7 @@ def design_columns(worlds, names):
 
 def r_squared(y, columns):
     """Share of the variance of y that a least-squares fit on the columns explains."""
+    import numpy as np
     if not columns or np.var(y) == 0:
         return 0.0
     design = np.column_stack([np.ones_like(y)] + columns)
@@ -197,6 +200,7 @@ def sensitivity(summary, worlds):
     """{cell key: {group: share}}: the R^2 of the cell's log value over the worlds on each
     group's drawn values alone; also the chance level of each group (its column count over
     the worlds less one). Worlds without the cell's value are left out of its row."""
+    import numpy as np
     table = {}
     for key, table_number, scene, *_ in summary["cells"]:
         have = [w for w in worlds if w["cells"].get(key) is not None]
@@ -219,6 +223,7 @@ def width(span):
 
 def scale_comparison(summary, worlds, first):
     """How the intervals change from the first `first` worlds to all of them."""
+    import numpy as np
     small = {r["key"]: r for r in cell_table(summary, worlds[:first])}
     large = {r["key"]: r for r in cell_table(summary, worlds)}
     ratios = [width(large[k]["interval"]) / width(small[k]["interval"])
@@ -254,6 +259,7 @@ def group_fits(rows, table, scene, exclude_one_node=False):
     of paper - median world) and a factor f on the simulated time (a cost per unit of work
     that differs from what the fit on scene2 gives: the median of paper / median world); for
     each, the cells it leaves outside their interval shifted or scaled by it."""
+    import numpy as np
     picked = [r for r in rows if r["table"] == table and r["scene"] == scene and r["interval"]
               and not (exclude_one_node and r["R"] * (r["V"] + 1) == 1)]
     if not picked:

@@ -14,7 +14,7 @@
 #    committed hemicube structures, the decisions' sentences recounted from their table, the
 #    cost table's front recounted, the reciprocity count written for hemicube runs only and
 #    shown.
-# About 30 s.
+# About 15 CPU seconds.
 set -u
 simulate=$1 root=$2
 scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
@@ -35,7 +35,7 @@ YAML
 cat > "$scratch/claims-test.yaml" <<'YAML'
 name: claims-test
 measure: total_seconds
-options: {V: 0, R: 4, convergence: 0.01}
+options: {V: 0, R: 4, convergence: 0.03}
 cells:
   - {scene: cornell-box, samples: 4}
   - {scene: cornell-box, parallelisation: shooters, form_factors: hemicube, hemicube_resolution: 20, hemicube_placement: centre}

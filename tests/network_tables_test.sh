@@ -15,15 +15,30 @@ python=/usr/bin/python3
 [[ -x "$python" ]] || python=python3
 [[ -x "$bench" ]] || { echo "FAIL: $bench not built" >&2; exit 1; }
 
-if ! "$python" "$root/docs/machines/network_tables.py" --check --bench "$bench"; then
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+# Every run of the benchmark goes through $tmp/bench: a run whose arguments and input files
+# (by content: the copy below names the same files from another folder) were benchmarked
+# before in this test is replayed from its result file, the others run build/network_bench.
+cat > "$tmp/bench" <<EOF
+#!/usr/bin/env bash
+out= key=()
+while ((\$#)); do
+  if [[ \$1 == --json ]]; then out=\$2; shift 2; else key+=("\$1"); shift; fi
+done
+saved="$tmp/bench-\$(for a in "\${key[@]}"; do if [[ -f \$a ]]; then md5sum < "\$a"; else printf '%s\n' "\$a"; fi; done | md5sum | cut -c1-32).json"
+[[ -e \$saved ]] || "$(cd "$(dirname "$bench")" && pwd)/network_bench" "\${key[@]}" --json "\$saved" || exit
+cp "\$saved" "\$out"
+EOF
+chmod +x "$tmp/bench"
+
+if ! "$python" "$root/docs/machines/network_tables.py" --check --bench "$tmp/bench"; then
   echo "FAIL: a machine page's network table is stale or out of its tolerance" >&2
   exit 1
 fi
 
 # The check itself must notice each kind of drift: in a copy of the nCube2's files, with
 # published figures made up here (not the machine library's).
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/docs/machines" "$tmp/platforms/machines"
 cp "$root/docs/machines/network_tables.py" "$tmp/docs/machines/"
 # The published figures are read through the project's input gate (analysis/ncube).
@@ -41,19 +56,8 @@ published() {  # one-way time (s), its tolerance; a second machine whose files a
 EOF
 }
 # Every run below benchmarks the same files (the nCube2's platform and cost model, the same as
-# the tree's, whose benchmark the --check above ran): the benchmark runs once, and its result
-# file is replayed to the later runs (the check's logic is under test here, not the benchmark).
-cat > "$tmp/bench" <<EOF
-#!/usr/bin/env bash
-out= key=()
-while ((\$#)); do
-  if [[ \$1 == --json ]]; then out=\$2; shift 2; else key+=("\$1"); shift; fi
-done
-saved="$tmp/bench-\$(printf '%s ' "\${key[@]}" | md5sum | cut -c1-32).json"
-[[ -e \$saved ]] || "$(cd "$(dirname "$bench")" && pwd)/network_bench" "\${key[@]}" --json "\$saved" || exit
-cp "\$saved" "\$out"
-EOF
-chmod +x "$tmp/bench"
+# the tree's, whose benchmark the --check above ran): $tmp/bench replays that run's result file
+# to them (the check's logic is under test here, not the benchmark).
 tables() { "$python" "$tmp/docs/machines/network_tables.py" --bench "$tmp/bench" "$@" 2>"$tmp/log"; }
 fails() {  # what: the check must fail and say `expected`
   local what="$1" expected="$2"

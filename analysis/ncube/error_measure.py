@@ -25,13 +25,14 @@ every solution that carries light (tests/error_measure_test.py holds it on every
 reference); for small errors d and the relative error agree to first order (d = r - r^2/2 + ...).
 """
 
-import numpy as np
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: --help and refusals need none.
 
 FLOOR = 0.01          # of the mean luminance: an item darker has no relative error of its own
 
 
 def dark_floor(truth, weight, emitting):
     """FLOOR x the weighted mean of the truth over the items that do not emit."""
+    import numpy as np
     truth, weight = np.asarray(truth, dtype=float), np.asarray(weight, dtype=float)
     dark = ~np.asarray(emitting, dtype=bool)
     if not np.any(dark) or np.sum(weight[dark]) <= 0:
@@ -41,11 +42,13 @@ def dark_floor(truth, weight, emitting):
 
 def kept(truth, floor):
     """The items the measure counts: truth at or above the floor."""
+    import numpy as np
     return np.asarray(truth, dtype=float) >= floor
 
 
 def difference(y, truth):
     """The symmetric relative difference (Y - T) / ((Y + T) / 2); 0 where both are 0."""
+    import numpy as np
     y, truth = np.asarray(y, dtype=float), np.asarray(truth, dtype=float)
     mean = (y + truth) / 2
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -54,6 +57,7 @@ def difference(y, truth):
 
 def rms(y, truth, weight, floor):
     """The weighted RMS of the difference over the items kept (0 when none is)."""
+    import numpy as np
     w = np.where(kept(truth, floor), np.asarray(weight, dtype=float), 0.0)
     if np.sum(w) <= 0:
         return 0.0
@@ -63,6 +67,7 @@ def rms(y, truth, weight, floor):
 
 def patch_means(values, area, patch, patches):
     """Per patch the area-weighted mean of its elements' values (a patch no element has: 0)."""
+    import numpy as np
     area = np.asarray(area, dtype=float)
     total = np.bincount(patch, area, patches)
     sums = np.bincount(patch, area * np.asarray(values, dtype=float), patches)
@@ -74,6 +79,7 @@ def measure(y, truth, area, patch, patch_emits):
     per_patch, element_floor, patch_floor, left_out_elements, left_out_patches}; per_element and
     per_patch hold None where an item is left out. patch: per element its patch index;
     patch_emits: per patch whether it emits."""
+    import numpy as np
     patch = np.asarray(patch, dtype=int)
     patch_emits = np.asarray(patch_emits, dtype=bool)
     patches = len(patch_emits)

@@ -35,7 +35,7 @@ the 2.5th percentile of the draws' low ends to the 97.5th of their high ends."""
 import json
 import math
 
-import numpy as np
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: --help and refusals need none.
 
 from ncube import error_measure, input_file
 from ncube.accuracy import LUMINANCE, solution_from_ply
@@ -44,7 +44,6 @@ FLOOR = error_measure.FLOOR
 BOOTSTRAP = 2000      # draws of the patches
 SEED = 1994
 LEVEL = 0.95
-_LUMA = np.array(LUMINANCE)
 _BYTES = 512 << 20
 
 
@@ -52,15 +51,21 @@ class Solution:
     """Per element: patch, area, rgb (n x 3), from a reference-layout file or a mesh."""
 
     def __init__(self, patch, area, rgb):
+        import numpy as np
         self.patch = np.asarray(patch, dtype=int)
         self.area = np.asarray(area, dtype=float)
         self.rgb = np.asarray(rgb, dtype=float).reshape(-1, 3)
-        self.y = self.rgb @ _LUMA
+        self.y = self.rgb @ _luma()
         self.patches = int(self.patch.max()) + 1
         self.patch_area = np.bincount(self.patch, self.area, self.patches)
         self.patch_rgb = np.stack([np.bincount(self.patch, self.area * self.rgb[:, c], self.patches)
                                    for c in range(3)], axis=1) / self.patch_area[:, None]
-        self.patch_y = self.patch_rgb @ _LUMA
+        self.patch_y = self.patch_rgb @ _luma()
+
+
+def _luma():
+    import numpy as np
+    return np.array(LUMINANCE)
 
 
 def read_json(path, what):
@@ -69,12 +74,14 @@ def read_json(path, what):
 
 def reference_solution(data):
     """A Solution from a reference-layout file's parsed JSON (the reference, a structure)."""
+    import numpy as np
     e = np.array(data["elements"], dtype=float)
     return Solution(e[:, 0].astype(int), e[:, 1], e[:, 2:5])
 
 
 def mesh_solution(path, like):
     """A Solution from ./simulate's --mesh, with the areas of `like` (same element grid)."""
+    import numpy as np
     faces = solution_from_ply(path)
     patch = np.array([p for p, _ in faces], dtype=int)
     if len(faces) != len(like.area) or not np.array_equal(patch, like.patch):
@@ -84,6 +91,7 @@ def mesh_solution(path, like):
 
 def scene_materials(path):
     """Per patch: emission (p x 3) and reflectance (p x 3) from the scene file."""
+    import numpy as np
     scene = read_json(path, "scene file")
     emission = np.array([p.get("emission", [0.0, 0.0, 0.0]) for p in scene["patches"]], dtype=float)
     reflectance = np.array([p["reflectance"] for p in scene["patches"]], dtype=float)
@@ -96,6 +104,7 @@ class Truth:
     `widen`: added to the RMS's ends)."""
 
     def __init__(self, y, weight, patch_of, patches, emitting, noise=None, widen=0.0):
+        import numpy as np
         self.y = np.asarray(y, dtype=float)
         self.weight = np.asarray(weight, dtype=float)
         self.patch_of = np.asarray(patch_of, dtype=int)
@@ -111,15 +120,17 @@ class Truth:
 
 def element_truth(solution, emission, widen=0.0):
     return Truth(solution.y, solution.area, solution.patch, solution.patches,
-                 (emission[solution.patch] @ _LUMA) > 0, widen=widen)
+                 (emission[solution.patch] @ _luma()) > 0, widen=widen)
 
 
 def patch_truth(y, area, emission, noise=None, widen=0.0):
+    import numpy as np
     n = len(y)
-    return Truth(y, area, np.arange(n), n, (emission[:n] @ _LUMA) > 0, noise=noise, widen=widen)
+    return Truth(y, area, np.arange(n), n, (emission[:n] @ _luma()) > 0, noise=noise, widen=widen)
 
 
 def _draws(patches):
+    import numpy as np
     rng = np.random.default_rng(SEED)
     return rng.multinomial(patches, np.full(patches, 1.0 / patches), size=BOOTSTRAP)
 
@@ -130,12 +141,14 @@ def relative(y, truth):
 
 
 def rms(y, truth):
+    import numpy as np
     r = relative(y, truth)
     return float(math.sqrt(np.sum(truth.weight * r * r) / np.sum(truth.weight)))
 
 
 def _replicates(y, truth, counts):
     """The RMS in every bootstrap draw (counts: draws x patches)."""
+    import numpy as np
     if truth.noise is None:
         r = relative(y, truth)
         per_patch = np.bincount(truth.patch_of, truth.weight * r * r, truth.patches)
@@ -149,6 +162,7 @@ def _replicates(y, truth, counts):
 
 def interval(y, truth):
     """(RMS, low, high): the 95 % interval of the module's docstring."""
+    import numpy as np
     draws = _replicates(y, truth, _draws(truth.patches))
     tail = (1 - LEVEL) / 2
     return (rms(y, truth), float(np.quantile(np.maximum(draws - truth.widen, 0.0), tail)),
@@ -158,6 +172,7 @@ def interval(y, truth):
 def ratio_interval(y_numerator, y_denominator, truth):
     """RMS(numerator) / RMS(denominator) against one truth, paired (the same draws), each RMS
     widened by the truth's own error: (ratio, low, high)."""
+    import numpy as np
     counts = _draws(truth.patches)
     top = _replicates(y_numerator, truth, counts)
     bottom = _replicates(y_denominator, truth, counts)
@@ -181,6 +196,7 @@ def own_error(agreement):
 def self_agreement(structure_data, emission):
     """The exact structure's own error under this module's measure: its K/4 solution against
     its K solution (element RMS, patch RMS)."""
+    import numpy as np
     main = reference_solution(structure_data)
     check_y = np.asarray(structure_data["check_luminance"], dtype=float)
     patch_check = np.bincount(main.patch, main.area * check_y, main.patches) / main.patch_area
@@ -195,11 +211,12 @@ def balance(solution, emission, reflectance, delivery=None, shooter_of=None):
     structure's centre form factors fail to deliver of what this solution's shooters hold:
     lost = sum_s A_s Y(Bbar_s) (1 - s_s). `shooter_of`: per element its shooter (the patch, or
     itself when every element is its own patch). Returns a dict of powers and shares."""
+    import numpy as np
     e = emission[solution.patch]
     rho = reflectance[solution.patch]
-    emitted = float(np.sum(solution.area * (e @ _LUMA)))
+    emitted = float(np.sum(solution.area * (e @ _luma())))
     irradiance = (solution.rgb - e) / rho
-    absorbed = float(np.sum(solution.area * (((1 - rho) * irradiance) @ _LUMA)))
+    absorbed = float(np.sum(solution.area * (((1 - rho) * irradiance) @ _luma())))
     out = {"emitted": emitted, "absorbed": absorbed, "absorbed_share": absorbed / emitted,
            "deficit_share": 1 - absorbed / emitted}
     if delivery is not None:
@@ -217,11 +234,12 @@ def balance(solution, emission, reflectance, delivery=None, shooter_of=None):
 def cycles_balance(cycles, emission, reflectance):
     """Cycles' balance per patch: absorbed share and its standard error (the channels' standard
     errors taken independent)."""
+    import numpy as np
     rows = np.array(cycles["patches"], dtype=float)
     area, rgb, se = rows[:, 1], rows[:, 2:5], rows[:, 5:8]
     e, rho = emission[: len(rows)], reflectance[: len(rows)]
-    emitted = float(np.sum(area * (e @ _LUMA)))
-    per = area[:, None] * (1 - rho) / rho * _LUMA[None, :]
+    emitted = float(np.sum(area * (e @ _luma())))
+    per = area[:, None] * (1 - rho) / rho * _luma()[None, :]
     absorbed = float(np.sum(per * (rgb - e)))
     se_absorbed = float(math.sqrt(np.sum((per * se) ** 2)))
     return {"emitted": emitted, "absorbed": absorbed, "absorbed_share": absorbed / emitted,

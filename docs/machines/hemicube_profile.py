@@ -53,7 +53,7 @@ import loop_profile as lp  # noqa: E402  (beside this script: its machinery and 
 import prediction_records  # noqa: E402  (the records of docs/machines/probe.md's table)
 import prediction_table  # noqa: E402  (the hemicube's rows and its counters by kind)
 
-import numpy as np  # noqa: E402  (loop_profile has put Debian's python in charge)
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: --help and refusals need none.
 from ncube import input_file, output_file  # noqa: E402
 
 PAGE = lp.PAGE
@@ -239,6 +239,7 @@ FITS = [("model", "the model's kinds (projection, raster)"),
 def fit_on_rooms(proc, cols, name):
     """One process's times of the rooms fitted on the columns `name` (relative least squares):
     seconds a unit of each column."""
+    import numpy as np
     a = np.array([np.array(cols(r)[name]) / seconds_a_pass(proc, r) for r in ROOMS])
     c, *_ = np.linalg.lstsq(a, np.ones(len(ROOMS)), rcond=None)
     return c
@@ -248,6 +249,7 @@ def rooms_to_scenes(data, runs, flops, rates):
     """Each process's times fitted on the rooms alone, each way of FITS, and what each predicts
     for every run (fitted over measured, minus 1); with the committed platform's rates'
     prediction of the same pass."""
+    import numpy as np
     cols = fit_columns(data, flops)
     misses = {r: {name: [] for name, _ in FITS + [("committed", "")]} for r in runs}
     coefs = {name: [] for name, _ in FITS}
@@ -266,6 +268,7 @@ def rooms_to_scenes(data, runs, flops, rates):
 def ir_fit(data, runs, flops, name):
     """A pass's instructions fitted on the columns `name` over the rooms alone (relative least
     squares): the coefficients and every run's residual (fitted over counted, minus 1)."""
+    import numpy as np
     cols = fit_columns(data, flops)
     ir = {r: data["callgrind"][r]["pass"]["Ir"] for r in runs}
     a = np.array([np.array(cols(r)[name]) / ir[r] for r in ROOMS])
@@ -278,6 +281,7 @@ def real_native(data, flops, rates):
     what it predicts for the scene's kernel pass (over its time there, minus 1) and for the row's
     timed iterations (over their CPU seconds less what the committed platform simulates for
     their other work, minus 1); and the whole row at the committed rates."""
+    import numpy as np
     cols = fit_columns(data, flops)
     out = {}
     for scene, _, _ in REAL:
@@ -305,6 +309,7 @@ def real_native(data, flops, rates):
 def probe_pairs(data, flops):
     """Each pair: what the probe's own hemicube rates predict for the scenes' kernels in the
     --hemicube-scenes process beside it, and what that process's own fit of its rooms predicts."""
+    import numpy as np
     cols = fit_columns(data, flops)
     out = {r: {"probe": [], "process": []} for r in SCENES}
     rates = {"projection_speed": [], "raster_speed": [], "fit_projection": [], "fit_raster": []}
@@ -340,6 +345,7 @@ def records_against_study(data, flops, rates):
     """Each row's records against this study: the records' host and simulated seconds, the
     whole rounds' host seconds (the same iterations: the same counts), and what the rooms' fit
     (each coefficient the median over the native processes) gives those counts."""
+    import numpy as np
     cols = fit_columns(data, flops)
     c = np.median([fit_on_rooms(proc, cols, "model") for proc in data["native"]], axis=0)
     out = {}
@@ -374,12 +380,14 @@ def pct(x, digits=1):
 
 
 def median_range(values, digits=1):
+    import numpy as np
     v = 100 * np.array(values)
     return f"{np.median(v):+.{digits}f} % ({v.min():+.{digits}f} to {v.max():+.{digits}f})"
 
 
 def tables(data):
     """The section's text: what was found, in figures, then the tables."""
+    import numpy as np
     flops, rates = costs_and_rates()
     runs = [r for r in ROOMS + SCENES if r in data["callgrind"]]
     f = features(data, runs, flops)
@@ -524,6 +532,7 @@ REGRESSORS = [("rows_share", "rows' share of the raster flops"),
 
 
 def regressor(f, runs, key, label):
+    import numpy as np
     return np.array([np.log10(f[r][key]) if "log10" in label else f[r][key] for r in runs])
 
 
@@ -540,6 +549,7 @@ def name_of(run):
 
 def opening(data, misses, ir_model, ir_rows, f, real, pairs, against, procs):
     """The finding, in figures: the section's first paragraph and the page opening's sentence."""
+    import numpy as np
     med = {r: {n: float(np.median(v)) for n, v in misses[r].items()} for r in misses}
     room_model = [med[r]["model"] for r in ROOMS]
     scene = ", ".join(f"{name_of(s)} {median_range(misses[s]['model'])}" for s in SCENES)

@@ -51,7 +51,7 @@ from ncube.interpreter import use_project_python  # noqa: E402
 
 use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use"): numpy below
 
-import numpy as np  # noqa: E402
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: --help and refusals need none.
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -159,6 +159,7 @@ def real_counted(item):
 
 
 def real_tables(data, ir_fit):
+    import numpy as np
     out = []
     if data.get("real_cachegrind"):
         out += ["", "Whole runs under cachegrind (the loop function's own counts, the difference "
@@ -211,6 +212,7 @@ def real_tables(data, ir_fit):
 
 def fit(x, y):
     """Least squares y = a + b x (x a matrix of columns): coefficients, R^2, residuals."""
+    import numpy as np
     a = np.column_stack([np.ones(len(y)), *x])
     coef, *_ = np.linalg.lstsq(a, y, rcond=None)
     res = y - a @ coef
@@ -234,6 +236,7 @@ def rooms_to_scenes(data, runs):
     (tests and crossings at one test rate, the rays and blocked rays taken off at the committed
     platform's rates), the instructions' (the loop's whole time at one rate an instruction), and
     the instructions with the simulated mispredictions as a second kind."""
+    import numpy as np
     costs, rates = cost_model(), platform_rates(PLATFORM)
     rooms = [r for r in runs if r in ROOMS]
     misses = {r: {"model": [], "Ir": [], "Ir+Bcm": []} for r in runs}
@@ -266,11 +269,13 @@ def rooms_to_scenes(data, runs):
 
 
 def spread_text(values):
+    import numpy as np
     v = 100 * np.array(values)
     return f"{np.median(v):+.1f} % ({v.min():+.1f} to {v.max():+.1f})"
 
 
 def tables(data):
+    import numpy as np
     runs = [r for r in ROOMS + SCENES if r in data["cachegrind"]]
     rows, per = [], {}
     for r in runs:

@@ -2,7 +2,7 @@
 findings."""
 import json
 
-import numpy as np
+# numpy (0.1 s of CPU a start) is imported by the functions that use it: a refusal needs none.
 
 from .. import findings as f
 from .. import headline as hl
@@ -161,6 +161,7 @@ def notes_text(cell):
 
 
 def table_section(inputs, table):
+    import numpy as np
     number = table["table"]
     cells = [c for c in inputs.cells if c.table == number]
     unit = ("seconds per iteration" if table["quantity"] == "seconds_per_iteration"
@@ -192,6 +193,7 @@ def tables_section(inputs):
 
 
 def error_statistics(cells):
+    import numpy as np
     errors = np.array([c.error for c in cells if c.error is not None])
     if errors.size == 0:
         return None
@@ -305,6 +307,7 @@ def decision_text(decision):
 def worlds_section(findings, summary):
     """The error and the findings in the default world next to their spread over the unknowns
     study's worlds (analysis/unknowns.md): how sure the report's figures are."""
+    import numpy as np
     if summary is None:
         return []
     worlds = summary["worlds"][1:]
@@ -397,6 +400,7 @@ def flip_section(inputs, summary):
 def patch_order_table(summary, table, scene, configurations):
     """The drawn worlds by their patch order: where the headline holds, and the fastest
     configuration with visibility processors over the fastest naive one."""
+    import numpy as np
     groups = {}
     for world in summary["worlds"][1:]:
         decision = hl.decide(hl.world_times(world, table, scene, configurations))
