@@ -86,14 +86,11 @@ if problems:
     print("; ".join(problems)); sys.exit(1)
 PY
 
-# 4. Bad input and limits.
-refused() {  # expected exit, what the one line must say, simulate's arguments
-  local code="$1" words="$2"; shift 2
-  "$simulate" scene0.json --iterations 1 --quiet "$@" > "$work/out" 2> "$work/err"
-  local got=$?
-  [ "$got" -eq "$code" ] || fail "$*: exit $got, expected $code"
-  grep -q -- "$words" "$work/err" || fail "$*: the message does not say '$words': $(cat "$work/err")"
-  [ "$code" -ne 2 ] || [ "$(grep -c 'simulate:' "$work/err")" -eq 1 ] || fail "$*: not one line: $(cat "$work/err")"
+# 4. Bad input and limits: the ten cases in one batch, each forked from build/simulate_server
+# (tests/forked_batch.py: about 85 ms of CPU less a case than a new ./simulate).
+expected=() messages=() arguments=()
+refused() {  # expected exit, what the one line must say, simulate's arguments (no spaces)
+  expected+=("$1"); messages+=("$2"); shift 2; arguments+=("$*")
 }
 refused 2 "visibility processors" --form-factors hemicube --V 1
 refused 2 "traces no rays" --form-factors hemicube --visibility octree
@@ -105,6 +102,19 @@ refused 2 "is not even" --form-factors hemicube --hemicube-resolution 51
 refused 2 "out of range" --form-factors hemicube --hemicube-resolution 2002
 refused 2 "hemicube" --form-factors hemicubes
 refused 3 "out of memory" --form-factors hemicube --hemicube-resolution 1000
+for k in "${!arguments[@]}"; do
+  args=$(printf ', "%s"' ${arguments[k]})
+  printf '{"args": ["scene0.json", "--iterations", "1", "--quiet"%s], "stdout": "%s", "stderr": "%s"}\n' \
+    "$args" "$work/out-$k" "$work/err-$k"
+done > "$work/refusals.jsonl"
+mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/refusals.jsonl")
+[ "${#codes[@]}" = "${#arguments[@]}" ] || fail "the batch ran ${#codes[@]} of ${#arguments[@]} cases"
+for k in "${!arguments[@]}"; do
+  code=${expected[k]} words=${messages[k]} args=${arguments[k]} got=${codes[k]:-none}
+  [ "$got" = "$code" ] || fail "$args: exit $got, expected $code"
+  grep -q -- "$words" "$work/err-$k" || fail "$args: the message does not say '$words': $(cat "$work/err-$k")"
+  [ "$code" -ne 2 ] || [ "$(grep -c 'simulate:' "$work/err-$k")" -eq 1 ] || fail "$args: not one line: $(cat "$work/err-$k")"
+done
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"
