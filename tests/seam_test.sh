@@ -56,11 +56,21 @@ without_host_fields() {
 r = json.load(open(sys.argv[1])); r.pop("host_seconds"); r["provenance"].pop("command_line")
 print(json.dumps(r, indent=1, sort_keys=True))' "$1"
 }
-check() {
+# The runs are made in one batch, each forked from build/simulate_server (tests/forked_batch.py:
+# about 85 ms of CPU less a run than a new ./simulate), then compared pair by pair.
+names=()
+check() {  # name, then simulate's arguments (no spaces): the fast path and the reference
   local name="$1"; shift
-  "$simulate" "$@" --json "$work/$name-fast.json" --quiet || fail "$name: simulate exited $?"
-  "$simulate" "$@" --reference-visibility --json "$work/$name-reference.json" --quiet ||
-    fail "$name: simulate --reference-visibility exited $?"
+  local args
+  names+=("$name")
+  args=$(printf '"%s", ' "$@")
+  printf '{"args": [%s"--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$args" "$work/$name-fast.json" "$work/$name-fast.err" >> "$work/cases.jsonl"
+  printf '{"args": [%s"--reference-visibility", "--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$args" "$work/$name-reference.json" "$work/$name-reference.err" >> "$work/cases.jsonl"
+}
+compare() {
+  local name="$1"
   [ -s "$work/$name-fast.json" ] && [ -s "$work/$name-reference.json" ] || return
   # One Python start per pair; the two files printed (without_host_fields) only for a diff.
   if ! same_but_host_fields "$work/$name-fast.json" "$work/$name-reference.json"; then
@@ -75,6 +85,15 @@ check scene1-R4-V1 scene1.json --R 4 --V 1 --iterations 4 --samples 16 --threads
 check scene1-octree scene1.json --R 2 --V 3 --iterations 6 --visibility octree --threads 2
 check cornell-subdivide-balance cornell-box.json --R 4 --V 1 --subdivide --balance --iterations 20 --threads 2
 check cornell-subdivide-V0 cornell-box.json --R 2 --subdivide --iterations 20 --threads 2
+mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/cases.jsonl")
+[ "${#codes[@]}" = $((2 * ${#names[@]})) ] || fail "the batch ran ${#codes[@]} of $((2 * ${#names[@]})) runs"
+for k in "${!names[@]}"; do
+  name=${names[k]}
+  [ "${codes[2 * k]:-none}" = 0 ] || fail "$name: simulate exited ${codes[2 * k]:-none}: $(head -c 300 "$work/$name-fast.err")"
+  [ "${codes[2 * k + 1]:-none}" = 0 ] ||
+    fail "$name: simulate --reference-visibility exited ${codes[2 * k + 1]:-none}: $(head -c 300 "$work/$name-reference.err")"
+  compare "$name"
+done
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"
