@@ -21,9 +21,23 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-run() {  # name, then simulate's arguments
+# The runs of sections 1 to 3 are made first, in one batch, each forked from
+# build/simulate_server (tests/forked_batch.py: about 85 ms of CPU less a run than a new
+# ./simulate); `ran` then checks that each ended in exit 0.
+names=()
+run() {  # name, then simulate's arguments (no spaces)
   local name="$1"; shift
-  "$simulate" "$@" --json "$work/$name.json" --quiet || fail "$name: simulate exited $?"
+  names+=("$name")
+  printf '{"args": [%s"--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$(printf '"%s", ' "$@")" "$work/$name.json" "$work/$name.err" >> "$work/runs.jsonl"
+}
+ran() {
+  local k
+  mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/runs.jsonl")
+  [ "${#codes[@]}" = "${#names[@]}" ] || fail "the batch ran ${#codes[@]} of ${#names[@]} runs"
+  for k in "${!names[@]}"; do
+    [ "${codes[k]:-none}" = 0 ] || fail "${names[k]}: simulate exited ${codes[k]:-none}: $(head -c 300 "$work/${names[k]}.err")"
+  done
 }
 same() {  # what, file a, file b, keys
   /usr/bin/python3 - "$@" <<'PY' || fail "$1"
@@ -50,21 +64,30 @@ for placement in centre elements; do
   for R in 1 $Rs; do
     run "scene0-$placement-R$R" scene0.json --R "$R" --form-factors hemicube --hemicube-placement "$placement" --iterations "$iterations"
   done
+done
+run scene1-R1 scene1.json --R 1 --form-factors hemicube --iterations 10
+run scene1-R8 scene1.json --R 8 --form-factors hemicube --iterations 10
+# 2. The seam.
+run cornell-fast cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 2
+run cornell-reference cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 1 --reference-visibility
+# 3. What the result file records.
+run paper scene0.json --R 2 --iterations 2
+ran
+
+# 1. R does not change the answers.
+for placement in centre elements; do
+  Rs="3 8"
+  [ "$placement" = centre ] || Rs=8
   for R in $Rs; do
     same "scene0 $placement R=$R against R=1" "$work/scene0-$placement-R1.json" "$work/scene0-$placement-R$R.json" patch_radiosity shooters
   done
 done
-run scene1-R1 scene1.json --R 1 --form-factors hemicube --iterations 10
-run scene1-R8 scene1.json --R 8 --form-factors hemicube --iterations 10
 same "scene1 R=8 against R=1" "$work/scene1-R1.json" "$work/scene1-R8.json" patch_radiosity shooters
 
 # 2. The seam.
-run cornell-fast cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 2
-run cornell-reference cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 1 --reference-visibility
 same "the seam (threads, --reference-visibility)" "$work/cornell-fast.json" "$work/cornell-reference.json"
 
 # 3. What the result file records.
-run paper scene0.json --R 2 --iterations 2
 /usr/bin/python3 - "$work/paper.json" "$work/scene0-elements-R8.json" <<'PY' || fail "result-file fields"
 import json, sys
 paper, hemicube = (json.load(open(p)) for p in sys.argv[1:3])
