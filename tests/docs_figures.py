@@ -19,7 +19,8 @@ it is a dated record of what was measured then. Host times are not checked (they
 the host); every figure here is simulated or counted, so deterministic. The figures of a run
 tests/goldens_test.sh pins (scene0 to convergence, scene2 at R = 4, V = 15) are read from its
 record, whose command is checked to be the same run, not run again. About 20 s of CPU time,
-every run on one host thread, so about as long on an idle machine. Python 3 standard library
+every run on one host thread, so about as long on an idle machine; the runs are forked from
+build/simulate_server when it is built (tests/robustness/forked_runs.py). Python 3 standard library
 only.
 """
 
@@ -41,6 +42,8 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tests" / "robustness"))
+import forked_runs  # noqa: E402
 DOCS = sorted((ROOT / "docs").glob("*.md")) + [ROOT / "README.md"]
 DATED = {"performance-log.md"}
 WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
@@ -70,11 +73,25 @@ class Probe:
                 self.results[args] = pinned
         if args not in self.results:
             out = self.work / ("run%d.json" % len(self.results))
-            command = [self.simulate, *args, "--threads", "1", "--quiet", "--json", str(out)]
-            subprocess.run(command, check=True, env=dict(os.environ, NCUBE_ROOT=str(ROOT)),
-                           cwd=ROOT)
+            self.simulate_run([*args, "--threads", "1", "--quiet", "--json", str(out)])
             self.results[args] = json.loads(out.read_text())
         return self.results[args]
+
+    def simulate_run(self, args):
+        """./simulate ARGS in the source folder; its stdout. Forked from build/simulate_server
+        (tests/robustness/forked_runs.py: about 85 ms of CPU less a run than a new process)
+        when one is built beside SIMULATE, else started anew; CalledProcessError when it fails."""
+        env = dict(os.environ, NCUBE_ROOT=str(ROOT))
+        if not forked_runs.server_binary(self.simulate):
+            return subprocess.run([self.simulate, *args], check=True, env=env, cwd=ROOT,
+                                  stdout=subprocess.PIPE, text=True).stdout
+        run = forked_runs.Run(self.simulate, args, cwd=ROOT, env=env, as_bytes=1 << 50,
+                              capture_stdout=True)
+        run.wait()
+        if run.code != 0:
+            sys.stderr.write(run.stderr.decode(errors="replace"))
+            raise subprocess.CalledProcessError(run.code, [self.simulate, *args])
+        return run.stdout.decode()
 
     def golden(self, name, args):
         """The figures of a run tests/goldens_test.sh pins to the last digit, from its record
@@ -118,8 +135,7 @@ class Probe:
 
     def options(self):
         if self._options is None:
-            text = subprocess.run([self.simulate, "--describe-options"], check=True,
-                                  capture_output=True, text=True).stdout
+            text = self.simulate_run(["--describe-options"])
             self._options = {o["flag"]: o for o in json.loads(text)}
         return self._options
 

@@ -12,6 +12,7 @@ the study: tests/claims_sentences_test.py). scene1's elements run is left out bu
 
 usage: error_measure_test.py SIMULATE SOURCE_DIR [--every-run]"""
 import math
+import os
 import subprocess
 import sys
 import tempfile
@@ -23,7 +24,24 @@ import numpy as np  # noqa: E402
 
 from ncube import accuracy, error_measure, error_parts  # noqa: E402
 
+sys.path.insert(0, str(root / "tests" / "robustness"))
+import forked_runs  # noqa: E402
+
 failures = []
+
+
+def run_simulate(args):
+    """./simulate ARGS, forked from build/simulate_server (tests/robustness/forked_runs.py:
+    about 85 ms of CPU less a run than a new process) when one is built beside SIMULATE, else
+    started anew; CalledProcessError when it fails."""
+    if not forked_runs.server_binary(simulate):
+        subprocess.run([simulate, *args], check=True)
+        return
+    run = forked_runs.Run(simulate, args, cwd=os.getcwd(), env=os.environ, as_bytes=1 << 50)
+    run.wait()
+    if run.code != 0:
+        sys.stderr.write(run.stderr.decode(errors="replace"))
+        raise subprocess.CalledProcessError(run.code, [simulate, *args])
 
 
 def check(condition, what):
@@ -77,9 +95,8 @@ with tempfile.TemporaryDirectory() as folder:
             if (scene, name) in LEFT_OUT:
                 continue
             mesh = folder / f"{scene}-{name.replace(' ', '_')}.ply"
-            subprocess.run([simulate, str(scene_file), "--R", "4", "--threads", "1", "--quiet",
-                            "--json", str(mesh.with_suffix(".json")), "--mesh", str(mesh)]
-                           + options, check=True)
+            run_simulate([str(scene_file), "--R", "4", "--threads", "1", "--quiet",
+                          "--json", str(mesh.with_suffix(".json")), "--mesh", str(mesh)] + options)
             got = accuracy.compare(accuracy.solution_from_ply(mesh), reference)
             for measure in ("element_rms", "patch_rms"):
                 check(got[measure] < dark[measure],

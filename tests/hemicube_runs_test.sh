@@ -4,7 +4,9 @@
 #     to the last bit (every processor draws the same polygons, ties of depth go to the lower
 #     patch), at the centre, and R = 1 and 8 at each shooter element's centre (there every
 #     processor draws a hemicube per shooter element, so a run's cost grows with R: R = 3's
-#     uneven share is the centre's case, R = 8 the elements' own);
+#     uneven share is the centre's case, R = 8 the elements' own, over 10 iterations: the two
+#     lights (36 elements each) and six lit walls (28 to 32 elements), two of them twice; 25
+#     iterations at R = 8 cost 4.9 CPU s, 10 cost 2.2);
 #  2. the seam: --reference-visibility and two host threads change nothing but host fields;
 #  3. the paper's runs do not record the hemicube (no field, no counter), hemicube runs do;
 #  4. bad input: one line and exit 2 (V > 0, the rays' options with it, its options without
@@ -19,9 +21,23 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-run() {  # name, then simulate's arguments
+# The runs of sections 1 to 3 are made first, in one batch, each forked from
+# build/simulate_server (tests/forked_batch.py: about 85 ms of CPU less a run than a new
+# ./simulate); `ran` then checks that each ended in exit 0.
+names=()
+run() {  # name, then simulate's arguments (no spaces)
   local name="$1"; shift
-  "$simulate" "$@" --json "$work/$name.json" --quiet || fail "$name: simulate exited $?"
+  names+=("$name")
+  printf '{"args": [%s"--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$(printf '"%s", ' "$@")" "$work/$name.json" "$work/$name.err" >> "$work/runs.jsonl"
+}
+ran() {
+  local k
+  mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/runs.jsonl")
+  [ "${#codes[@]}" = "${#names[@]}" ] || fail "the batch ran ${#codes[@]} of ${#names[@]} runs"
+  for k in "${!names[@]}"; do
+    [ "${codes[k]:-none}" = 0 ] || fail "${names[k]}: simulate exited ${codes[k]:-none}: $(head -c 300 "$work/${names[k]}.err")"
+  done
 }
 same() {  # what, file a, file b, keys
   /usr/bin/python3 - "$@" <<'PY' || fail "$1"
@@ -42,26 +58,36 @@ PY
 
 # 1. R does not change the answers.
 for placement in centre elements; do
-  Rs="3 8"
-  [ "$placement" = centre ] || Rs=8   # R = 3 at the elements: 2 CPU s, its share shown at the centre
+  Rs="3 8" iterations=25
+  # R = 3 at the elements: 2 CPU s, its share shown at the centre
+  [ "$placement" = centre ] || Rs=8 iterations=10
   for R in 1 $Rs; do
-    run "scene0-$placement-R$R" scene0.json --R "$R" --form-factors hemicube --hemicube-placement "$placement" --iterations 25
-  done
-  for R in $Rs; do
-    same "scene0 $placement R=$R against R=1" "$work/scene0-$placement-R1.json" "$work/scene0-$placement-R$R.json" patch_radiosity shooters
+    run "scene0-$placement-R$R" scene0.json --R "$R" --form-factors hemicube --hemicube-placement "$placement" --iterations "$iterations"
   done
 done
 run scene1-R1 scene1.json --R 1 --form-factors hemicube --iterations 10
 run scene1-R8 scene1.json --R 8 --form-factors hemicube --iterations 10
-same "scene1 R=8 against R=1" "$work/scene1-R1.json" "$work/scene1-R8.json" patch_radiosity shooters
-
 # 2. The seam.
 run cornell-fast cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 2
 run cornell-reference cornell-box.json --R 2 --form-factors hemicube --hemicube-resolution 50 --subdivide --iterations 20 --threads 1 --reference-visibility
+# 3. What the result file records.
+run paper scene0.json --R 2 --iterations 2
+ran
+
+# 1. R does not change the answers.
+for placement in centre elements; do
+  Rs="3 8"
+  [ "$placement" = centre ] || Rs=8
+  for R in $Rs; do
+    same "scene0 $placement R=$R against R=1" "$work/scene0-$placement-R1.json" "$work/scene0-$placement-R$R.json" patch_radiosity shooters
+  done
+done
+same "scene1 R=8 against R=1" "$work/scene1-R1.json" "$work/scene1-R8.json" patch_radiosity shooters
+
+# 2. The seam.
 same "the seam (threads, --reference-visibility)" "$work/cornell-fast.json" "$work/cornell-reference.json"
 
 # 3. What the result file records.
-run paper scene0.json --R 2 --iterations 2
 /usr/bin/python3 - "$work/paper.json" "$work/scene0-elements-R8.json" <<'PY' || fail "result-file fields"
 import json, sys
 paper, hemicube = (json.load(open(p)) for p in sys.argv[1:3])
@@ -83,14 +109,11 @@ if problems:
     print("; ".join(problems)); sys.exit(1)
 PY
 
-# 4. Bad input and limits.
-refused() {  # expected exit, what the one line must say, simulate's arguments
-  local code="$1" words="$2"; shift 2
-  "$simulate" scene0.json --iterations 1 --quiet "$@" > "$work/out" 2> "$work/err"
-  local got=$?
-  [ "$got" -eq "$code" ] || fail "$*: exit $got, expected $code"
-  grep -q -- "$words" "$work/err" || fail "$*: the message does not say '$words': $(cat "$work/err")"
-  [ "$code" -ne 2 ] || [ "$(grep -c 'simulate:' "$work/err")" -eq 1 ] || fail "$*: not one line: $(cat "$work/err")"
+# 4. Bad input and limits: the ten cases in one batch, each forked from build/simulate_server
+# (tests/forked_batch.py: about 85 ms of CPU less a case than a new ./simulate).
+expected=() messages=() arguments=()
+refused() {  # expected exit, what the one line must say, simulate's arguments (no spaces)
+  expected+=("$1"); messages+=("$2"); shift 2; arguments+=("$*")
 }
 refused 2 "visibility processors" --form-factors hemicube --V 1
 refused 2 "traces no rays" --form-factors hemicube --visibility octree
@@ -102,6 +125,19 @@ refused 2 "is not even" --form-factors hemicube --hemicube-resolution 51
 refused 2 "out of range" --form-factors hemicube --hemicube-resolution 2002
 refused 2 "hemicube" --form-factors hemicubes
 refused 3 "out of memory" --form-factors hemicube --hemicube-resolution 1000
+for k in "${!arguments[@]}"; do
+  args=$(printf ', "%s"' ${arguments[k]})
+  printf '{"args": ["scene0.json", "--iterations", "1", "--quiet"%s], "stdout": "%s", "stderr": "%s"}\n' \
+    "$args" "$work/out-$k" "$work/err-$k"
+done > "$work/refusals.jsonl"
+mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/refusals.jsonl")
+[ "${#codes[@]}" = "${#arguments[@]}" ] || fail "the batch ran ${#codes[@]} of ${#arguments[@]} cases"
+for k in "${!arguments[@]}"; do
+  code=${expected[k]} words=${messages[k]} args=${arguments[k]} got=${codes[k]:-none}
+  [ "$got" = "$code" ] || fail "$args: exit $got, expected $code"
+  grep -q -- "$words" "$work/err-$k" || fail "$args: the message does not say '$words': $(cat "$work/err-$k")"
+  [ "$code" -ne 2 ] || [ "$(grep -c 'simulate:' "$work/err-$k")" -eq 1 ] || fail "$args: not one line: $(cat "$work/err-$k")"
+done
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The host out of memory during the run is exit 6 with one line and no output, not SimGrid's
 # abort (docs/cli.md, exit codes). A run that records its trace (--trace) allocates more as
-# it goes, inside the node programs (SimGrid actors): under an address-space limit (ulimit -v)
-# just below what the run needs, an allocation fails in an actor; before, the exception left
+# it goes, inside the node programs (SimGrid actors; about 1 MB an iteration: the 40
+# iterations run here, of scene0's 151 to convergence, grow its resident size from 57 to 97 MB,
+# at a third of a whole run's CPU): under an address-space limit (ulimit -v) just below what
+# the run needs, an allocation fails in an actor; before, the exception left
 # the actor and SimGrid aborted (exit 134, "Uncaught exception std::bad_alloc", temporaries
 # left). The limit is found by bisection (the smallest that runs), then a limit every 6 MB in
 # the 60 MB below it is tried (10 limits): each ends in exit 0 or 6, one of them in 6, and none leaves a file.
@@ -27,13 +29,13 @@ export NCUBE_ROOT="$root"
 run() {
   set +e
   (ulimit -v "$1"; "$simulate" "$root/scenes/scene0.json" --R 4 --V 3 --threads "${THREADS:-1}" --quiet \
-     --trace "$work/out/t.trace" --json "$work/out/r.json" 2> "$work/err")
+     --iterations 40 --trace "$work/out/t.trace" --json "$work/out/r.json" 2> "$work/err")
   local code=$?
   set -e
   return $code
 }
 mkdir "$work/out"
-low=100000 high=2000000  # KiB: fails, runs
+low=100000 high=1000000  # KiB: fails, runs (a run needs about 500 MB of address space)
 code=0; run $high || code=$?
 [ $code = 0 ] || fail "the run does not run under $high KiB (exit $code): $(head -3 "$work/err")"
 while [ $((high - low)) -gt 2000 ]; do

@@ -7,6 +7,8 @@
 # a glTF camera (lamp.gltf). Before the face tests ran in units of the face, a bent quad of
 # 1e-88 was cut the other way (the normals' dot product, a length to the fourth power,
 # underflowed to 0) and --scale 1e-100 moved the Cornell box's radiosities by 2.4 %.
+# At most 20 iterations: the Cornell box's first 20 shots (14 of its 17 patches), room.obj
+# and lamp.gltf to convergence (19 and 1 iterations, so their counts are compared too).
 # Usage: bash tests/model_scale_test.sh <path-to-simulate-binary> <repo-root>
 set -euo pipefail
 simulate="$1"
@@ -18,10 +20,22 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 export NCUBE_ROOT="$root"
 
 scales=(1e-100 1e-90 1e-60 1e-30 3e-7 1 7e5 1e30 1e60 1e90 1e100)
-for model in cornell-box.obj room.obj lamp.gltf; do
+models=(cornell-box.obj room.obj lamp.gltf)
+# The 33 runs in one batch, each forked from build/simulate_server (tests/forked_batch.py:
+# about 85 ms of CPU less a run than a new ./simulate).
+for model in "${models[@]}"; do
   for s in "${scales[@]}"; do
-    "$simulate" "$root/tests/models/$model" --scale "$s" --iterations 40 --quiet \
-      --json "$work/$model-$s.json" || fail "$model --scale $s does not run"
+    printf '{"args": ["%s", "--scale", "%s", "--iterations", "20", "--quiet", "--json", "%s"], "stdout": null, "stderr": "%s"}\n' \
+      "$root/tests/models/$model" "$s" "$work/$model-$s.json" "$work/$model-$s.err"
+  done
+done > "$work/cases.jsonl"
+mapfile -t codes < <("$python" "$root/tests/forked_batch.py" "$simulate" "$work/cases.jsonl")
+[ "${#codes[@]}" = $((${#models[@]} * ${#scales[@]})) ] || fail "the batch ran ${#codes[@]} runs"
+k=0
+for model in "${models[@]}"; do
+  for s in "${scales[@]}"; do
+    [ "${codes[k]}" = 0 ] || fail "$model --scale $s does not run (exit ${codes[k]}): $(head -c 300 "$work/$model-$s.err")"
+    k=$((k + 1))
   done
   "$python" - "$work/$model" "${scales[@]}" <<'PY' || fail "$model: radiosities depend on --scale"
 import json, sys

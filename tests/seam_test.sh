@@ -8,7 +8,9 @@
 #     definitions alone: the paper's loop or the octree walk, one thread, no cache, no
 #     lookahead) give the same result file, byte for byte apart from the host time and the
 #     command line, for V = 0 and V > 0, both ray tests, the octree, adaptive subdivision
-#     and load balancing.
+#     and load balancing. 20 iterations of scene0 and the Cornell box: 10 and 7 of their
+#     shots are of a patch shot before (the answer cache's hits), and the Cornell box's
+#     elements stop being split at its sixth.
 # Called by ctest as: seam_test.sh SIMULATE REPO_ROOT
 set -u
 simulate="$1"
@@ -54,11 +56,21 @@ without_host_fields() {
 r = json.load(open(sys.argv[1])); r.pop("host_seconds"); r["provenance"].pop("command_line")
 print(json.dumps(r, indent=1, sort_keys=True))' "$1"
 }
-check() {
+# The runs are made in one batch, each forked from build/simulate_server (tests/forked_batch.py:
+# about 85 ms of CPU less a run than a new ./simulate), then compared pair by pair.
+names=()
+check() {  # name, then simulate's arguments (no spaces): the fast path and the reference
   local name="$1"; shift
-  "$simulate" "$@" --json "$work/$name-fast.json" --quiet || fail "$name: simulate exited $?"
-  "$simulate" "$@" --reference-visibility --json "$work/$name-reference.json" --quiet ||
-    fail "$name: simulate --reference-visibility exited $?"
+  local args
+  names+=("$name")
+  args=$(printf '"%s", ' "$@")
+  printf '{"args": [%s"--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$args" "$work/$name-fast.json" "$work/$name-fast.err" >> "$work/cases.jsonl"
+  printf '{"args": [%s"--reference-visibility", "--json", "%s", "--quiet"], "stdout": null, "stderr": "%s"}\n' \
+    "$args" "$work/$name-reference.json" "$work/$name-reference.err" >> "$work/cases.jsonl"
+}
+compare() {
+  local name="$1"
   [ -s "$work/$name-fast.json" ] && [ -s "$work/$name-reference.json" ] || return
   # One Python start per pair; the two files printed (without_host_fields) only for a diff.
   if ! same_but_host_fields "$work/$name-fast.json" "$work/$name-reference.json"; then
@@ -66,13 +78,22 @@ check() {
     diff <(without_host_fields "$work/$name-fast.json") <(without_host_fields "$work/$name-reference.json") | head -6
   fi
 }
-check scene0-R1-V0 scene0.json --R 1 --V 0 --iterations 40
-check scene0-R2-V3 scene0.json --R 2 --V 3 --iterations 40 --threads 2
-check scene0-first-blocker scene0.json --R 2 --V 3 --iterations 30 --ray-test first-blocker --threads 2
+check scene0-R1-V0 scene0.json --R 1 --V 0 --iterations 20
+check scene0-R2-V3 scene0.json --R 2 --V 3 --iterations 20 --threads 2
+check scene0-first-blocker scene0.json --R 2 --V 3 --iterations 20 --ray-test first-blocker --threads 2
 check scene1-R4-V1 scene1.json --R 4 --V 1 --iterations 4 --samples 16 --threads 2
 check scene1-octree scene1.json --R 2 --V 3 --iterations 6 --visibility octree --threads 2
-check cornell-subdivide-balance cornell-box.json --R 4 --V 1 --subdivide --balance --iterations 40 --threads 2
-check cornell-subdivide-V0 cornell-box.json --R 2 --subdivide --iterations 40 --threads 2
+check cornell-subdivide-balance cornell-box.json --R 4 --V 1 --subdivide --balance --iterations 20 --threads 2
+check cornell-subdivide-V0 cornell-box.json --R 2 --subdivide --iterations 20 --threads 2
+mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/cases.jsonl")
+[ "${#codes[@]}" = $((2 * ${#names[@]})) ] || fail "the batch ran ${#codes[@]} of $((2 * ${#names[@]})) runs"
+for k in "${!names[@]}"; do
+  name=${names[k]}
+  [ "${codes[2 * k]:-none}" = 0 ] || fail "$name: simulate exited ${codes[2 * k]:-none}: $(head -c 300 "$work/$name-fast.err")"
+  [ "${codes[2 * k + 1]:-none}" = 0 ] ||
+    fail "$name: simulate --reference-visibility exited ${codes[2 * k + 1]:-none}: $(head -c 300 "$work/$name-reference.err")"
+  compare "$name"
+done
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"

@@ -16,10 +16,46 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 scene0="$root/scenes/scene0.json"
 
+# Every run is made first, in one batch, each forked from build/simulate_server
+# (tests/forked_batch.py: about 85 ms of CPU less a run than a new ./simulate); `ran NAME`
+# then gives its exit code.
+whats=()
+case_of() {  # a name, then simulate's arguments (no spaces)
+  local name="$1"; shift
+  whats+=("$name")
+  printf '{"args": [%s], "stdout": null, "stderr": "%s"}\n' \
+    "$(printf '"%s", ' "$@" | sed 's/, $//')" "$work/$name.err" >> "$work/cases.jsonl"
+}
+ran() {
+  local k
+  for k in "${!whats[@]}"; do
+    [ "${whats[k]}" = "$1" ] && { echo "${codes[k]:-none}"; return; }
+  done
+  echo none
+}
+cornell="$root/scenes/cornell-box.json"
 for p in receivers shooters; do
-  "$simulate" "$scene0" --R 1 --iterations 25 --form-factors hemicube --hemicube-resolution 50 \
-    --parallelisation "$p" --json "$work/$p.json" --mesh "$work/$p.ply" --quiet --threads 1 ||
-    fail "$p: exit $?"
+  case_of "$p" "$scene0" --R 1 --iterations 25 --form-factors hemicube --hemicube-resolution 50 \
+    --parallelisation "$p" --json "$work/$p.json" --mesh "$work/$p.ply" --quiet --threads 1
+done
+for placement in centre elements; do
+  for back_faces in block pass; do
+    name="$placement-$back_faces"
+    hemicube=(--form-factors hemicube --hemicube-resolution 50 --hemicube-placement "$placement"
+              --hemicube-back-faces "$back_faces" --quiet --threads 1)
+    case_of "r1-$name" "$cornell" --R 1 --iterations 6 "${hemicube[@]}" --mesh "$work/r1-$name.ply"
+    case_of "s4-1-$name" "$cornell" --parallelisation shooters --R 4 --shooters-per-iteration 1 --iterations 6 \
+      "${hemicube[@]}" --mesh "$work/s4-$name.ply"
+    case_of "s4-$name" "$cornell" --parallelisation shooters --R 4 --iterations 3 "${hemicube[@]}" \
+      --json "$work/s4-$name.json"
+  done
+done
+case_of memory "$root/scenes/scene2.json" --parallelisation shooters --R 64 --form-factors hemicube --quiet
+mapfile -t codes < <(/usr/bin/python3 "$root/tests/forked_batch.py" "$simulate" "$work/cases.jsonl")
+[ "${#codes[@]}" = "${#whats[@]}" ] || fail "the batch ran ${#codes[@]} of ${#whats[@]} runs"
+
+for p in receivers shooters; do
+  [ "$(ran "$p")" = 0 ] || fail "$p: exit $(ran "$p")"
 done
 cmp -s "$work/receivers.ply" "$work/shooters.ply" ||
   fail "R=1 hemicube: the meshes (every element's radiosity) differ between receivers and shooters"
@@ -42,20 +78,14 @@ PY
 # shooters an iteration reads 3 N^2 cells per hemicube, one hemicube per shot at the centre
 # and nu x nv (the shooter's elements, from the scene file) at the elements; only pass runs
 # record hemicube_back_faces.
-cornell="$root/scenes/cornell-box.json"
 for placement in centre elements; do
   for back_faces in block pass; do
     name="$placement-$back_faces"
-    hemicube=(--form-factors hemicube --hemicube-resolution 50 --hemicube-placement "$placement"
-              --hemicube-back-faces "$back_faces" --quiet --threads 1)
-    "$simulate" "$cornell" --R 1 --iterations 6 "${hemicube[@]}" --mesh "$work/r1-$name.ply" ||
-      fail "$name: receivers R=1: exit $?"
-    "$simulate" "$cornell" --parallelisation shooters --R 4 --shooters-per-iteration 1 --iterations 6 \
-      "${hemicube[@]}" --mesh "$work/s4-$name.ply" || fail "$name: shooters R=4 S=1: exit $?"
+    [ "$(ran "r1-$name")" = 0 ] || fail "$name: receivers R=1: exit $(ran "r1-$name")"
+    [ "$(ran "s4-1-$name")" = 0 ] || fail "$name: shooters R=4 S=1: exit $(ran "s4-1-$name")"
     cmp -s "$work/r1-$name.ply" "$work/s4-$name.ply" ||
       fail "$name: shooters at R=4, one shooter an iteration, differ from receivers at R=1"
-    "$simulate" "$cornell" --parallelisation shooters --R 4 --iterations 3 "${hemicube[@]}" \
-      --json "$work/s4-$name.json" || fail "$name: shooters R=4: exit $?"
+    [ "$(ran "s4-$name")" = 0 ] || fail "$name: shooters R=4: exit $(ran "s4-$name")"
     /usr/bin/python3 - "$cornell" "$work/s4-$name.json" "$placement" "$back_faces" <<'PY' || fail "$name: one hemicube per shot"
 import json, sys
 scene, result = (json.load(open(p)) for p in sys.argv[1:3])
@@ -74,9 +104,8 @@ done
 # R = 64 needs 4825136 bytes with rays, tests/shooters_test.sh; N = 100: a table of
 # 100 x 100 + 100 x 50 = 15000 delta form factors of 4 bytes and one face's buffer of
 # 100 x 100 cells of 8 bytes, platforms/cost_model.json: 60000 + 80000 = 140000 bytes more).
-"$simulate" "$root/scenes/scene2.json" --parallelisation shooters --R 64 --form-factors hemicube \
-  --quiet 2> "$work/err"
-got=$?
+cp "$work/memory.err" "$work/err"
+got=$(ran memory)
 [ "$got" = 3 ] || fail "scene2 shooters hemicube: exit $got, expected 3"
 /usr/bin/python3 - "$work/err" <<'PY' || fail "hemicube bytes in the shooters' memory"
 import json, re, sys
