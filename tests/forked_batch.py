@@ -56,11 +56,15 @@ def started(simulate, case, stdout):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: forked_batch.py SIMULATE CASES")
-    simulate = sys.argv[1]
+    import argparse
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("simulate", help="build/simulate (its server beside it is used when current)")
+    parser.add_argument("cases", help="the cases, one JSON object a line (above)")
+    args = parser.parse_args()
+    simulate = args.simulate
     run = forked if forked_runs.server_binary(simulate) else started
-    for line in Path(sys.argv[2]).read_text().splitlines():
+    for line in Path(args.cases).read_text().splitlines():
         case = json.loads(line)
         code, out, err = run(simulate, case, case.get("stdout"))
         if case.get("stdout"):
