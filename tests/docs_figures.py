@@ -78,20 +78,9 @@ class Probe:
         return self.results[args]
 
     def simulate_run(self, args):
-        """./simulate ARGS in the source folder; its stdout. Forked from build/simulate_server
-        (tests/robustness/forked_runs.py: about 85 ms of CPU less a run than a new process)
-        when one is built beside SIMULATE, else started anew; CalledProcessError when it fails."""
-        env = dict(os.environ, NCUBE_ROOT=str(ROOT))
-        if not forked_runs.server_binary(self.simulate):
-            return subprocess.run([self.simulate, *args], check=True, env=env, cwd=ROOT,
-                                  stdout=subprocess.PIPE, text=True).stdout
-        run = forked_runs.Run(self.simulate, args, cwd=ROOT, env=env, as_bytes=1 << 50,
-                              capture_stdout=True)
-        run.wait()
-        if run.code != 0:
-            sys.stderr.write(run.stderr.decode(errors="replace"))
-            raise subprocess.CalledProcessError(run.code, [self.simulate, *args])
-        return run.stdout.decode()
+        """./simulate ARGS in the source folder; its stdout (forked_runs.check_output)."""
+        return forked_runs.check_output(self.simulate, args, cwd=ROOT,
+                                        env=dict(os.environ, NCUBE_ROOT=str(ROOT))).decode()
 
     def golden(self, name, args):
         """The figures of a run tests/goldens_test.sh pins to the last digit, from its record

@@ -13,7 +13,6 @@ the study: tests/claims_sentences_test.py). scene1's elements run is left out bu
 usage: error_measure_test.py SIMULATE SOURCE_DIR [--every-run]"""
 import math
 import os
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -31,17 +30,8 @@ failures = []
 
 
 def run_simulate(args):
-    """./simulate ARGS, forked from build/simulate_server (tests/robustness/forked_runs.py:
-    about 85 ms of CPU less a run than a new process) when one is built beside SIMULATE, else
-    started anew; CalledProcessError when it fails."""
-    if not forked_runs.server_binary(simulate):
-        subprocess.run([simulate, *args], check=True)
-        return
-    run = forked_runs.Run(simulate, args, cwd=os.getcwd(), env=os.environ, as_bytes=1 << 50)
-    run.wait()
-    if run.code != 0:
-        sys.stderr.write(run.stderr.decode(errors="replace"))
-        raise subprocess.CalledProcessError(run.code, [simulate, *args])
+    """./simulate ARGS (forked_runs.check_output: forked from build/simulate_server when built)."""
+    forked_runs.check_output(simulate, args, cwd=os.getcwd(), env=os.environ)
 
 
 def check(condition, what):

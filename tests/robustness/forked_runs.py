@@ -150,3 +150,18 @@ class Run:
     @property
     def stderr(self):
         return b"".join(self._err)
+
+
+def check_output(simulate, args, *, cwd, env):
+    """./simulate ARGS as subprocess.check_output runs a program: forked from the server beside
+    `simulate` when a current one is built, else started anew; its standard output (bytes), or
+    CalledProcessError when it fails (its standard error then written to this process's)."""
+    if not server_binary(simulate):
+        return subprocess.run([str(simulate), *map(str, args)], check=True, cwd=cwd, env=env,
+                              stdout=subprocess.PIPE).stdout
+    run = Run(simulate, args, cwd=cwd, env=env, as_bytes=1 << 50, capture_stdout=True)
+    run.wait()
+    if run.code != 0:
+        os.write(2, run.stderr)
+        raise subprocess.CalledProcessError(run.code, [str(simulate), *map(str, args)])
+    return run.stdout
