@@ -4,11 +4,13 @@
 A new ./simulate process spends about 85 ms of CPU before its main (the dynamic loader binding
 SimGrid's, ns-3's, Embree's and Assimp's libraries, their static start-up, the allocator's), and
 most of the suite's cases are refusals that take a few ms after it: forked from a server that
-has started once, a case costs about a third (175 option cases: 30 s of CPU as new processes,
-9 s forked). The child runs ./simulate's main (ncube::simulate_main) from the case's arguments
-in the process a new ./simulate would be: its own session, the case's folder, environment,
-descriptors and limits (address space, core, file size), and default signal dispositions. The
-binary's own start-up is tried by the suite's other tests, which run build/simulate.
+has started once, a case costs about a third (`run.py --only options`, 175 cases: 29 s of CPU
+with new processes, 11 s forked). The child runs ./simulate's main (ncube::simulate_main) from
+the case's arguments in the process a new ./simulate would be: its own session, the case's
+folder, environment, descriptors and limits (address space, core, file size), and default
+signal dispositions; a case that ended before SimGrid started skips the libraries' static
+destructors at its exit (tests/simulate_server.cpp says why). The binary's own start-up and
+exit are tried by the suite's other tests, which run build/simulate.
 
 A `Run` stands for one case: `pid` (the leader of its session), `poll()` and `wait(timeout)`,
 then `code` (the exit code, or minus the signal), `maxrss_kb`, and `stdout` and `stderr` when
