@@ -134,28 +134,26 @@ grep -qF 'platforms/a- ->b/cluster-2024.xml' "$tmp/probed.xml" || fail "the netw
 /usr/bin/python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' "$tmp/probed.xml" ||
   fail "the written file is not well-formed XML"
 
-# 3. The prediction: least of 2 CPU times for 1 and for 2 iterations, printed.
+# 3. The prediction: the CPU times of one run of 1 and one of 2 iterations, printed (a figure
+# shown, never checked: the least of repeated runs would only steady what nothing here reads).
 /usr/bin/python3 - "$simulate" "$root" "$tmp" <<'PY'
 import json, resource, subprocess, sys
 simulate, root, tmp = sys.argv[1], sys.argv[2], sys.argv[3]
 def run(iterations):
-    least = None
-    for _ in range(2):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        subprocess.run([simulate, f"{root}/scenes/scene1.json", "--R", "1", "--V", "0",
-                        "--iterations", str(iterations), "--reference-visibility", "--threads", "1",
-                        "--platform", f"{tmp}/probed.xml", "--json", f"{tmp}/r.json", "--quiet"],
-                       check=True)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
-        least = cpu if least is None else min(least, cpu)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run([simulate, f"{root}/scenes/scene1.json", "--R", "1", "--V", "0",
+                    "--iterations", str(iterations), "--reference-visibility", "--threads", "1",
+                    "--platform", f"{tmp}/probed.xml", "--json", f"{tmp}/r.json", "--quiet"],
+                   check=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
     result = json.load(open(f"{tmp}/r.json"))
     values = result["provenance"]["platform"]["values"]
     assert all(rate in values for rate in ("test_speed", "ray_speed", "blocked_ray_speed",
                                            "arithmetic_speed", "edge_term_speed",
                                            "projection_speed", "raster_speed")), values
     assert result["counts"]["blocked_rays"] > 0 and result["counts"]["form_factor_edge_terms"] > 0
-    return result["simulated_seconds"], least
+    return result["simulated_seconds"], cpu
 s1, c1 = run(1)
 s2, c2 = run(2)
 error = (s2 - s1) / (c2 - c1) - 1

@@ -21,11 +21,15 @@ use_project_python()   # Debian's /usr/bin/python3 (README.md, "Use")
 import json
 import os
 import sys
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "analysis"))
-from ncube import findings, simulate  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parent / "robustness"))
+import forked_runs  # noqa: E402
+from ncube import findings, paths, results  # noqa: E402
+from ncube import options as opts  # noqa: E402
 from ncube.paths import ROOT  # noqa: E402
 
 EXPECTED = ROOT / "tests" / "expected_speedups.json"
@@ -38,12 +42,27 @@ CONFIGS = {
 }
 
 
+def simulate(scene, options):
+    """The result of ./simulate on `scene` with `options`: the command ncube.simulate.run
+    writes, forked from build/simulate_server (tests/robustness/forked_runs.py: about 85 ms of
+    CPU less a run than a new ./simulate, whose own start-up the script tests try; started
+    anew when no current server is built); anything but exit 0 fails."""
+    with tempfile.TemporaryDirectory() as folder:
+        out = Path(folder) / "result.json"
+        scene_path = paths.find_input(scene, Path.cwd(), "scene") or scene
+        command = opts.command(paths.simulate_binary(), scene_path, options, json_out=out,
+                               threads=1)
+        forked_runs.check_output(command[0], command[1:], cwd=os.getcwd(),
+                                 env=paths.simulate_environment())
+        return results.read(out)
+
+
 def run(scene, r, v):
     options = {"R": r, "V": v, "samples": 64}   # the sweeps' samples (the default too)
     if scene == "scene0":
-        return simulate.run(scene, options, accept_out_of_memory=False)["simulated_seconds"]
+        return simulate(scene, options)["simulated_seconds"]
     options["iterations"] = ITERATIONS
-    return simulate.run(scene, options, accept_out_of_memory=False)["seconds_per_iteration"]
+    return simulate(scene, options)["seconds_per_iteration"]
 
 
 def measure():
