@@ -8,6 +8,7 @@
 #   tests/slurm_cluster.sh stop [DIR]    # cancels its jobs and stops its daemons
 # or source this file, then
 #   slurm_cluster_start DIR   # exports SLURM_CONF; returns 1 with the reason in SLURM_CLUSTER_WHY
+#                             # (SLURM_CLUSTER_CPUS=N: a node of N CPUs, not the machine's cores)
 #   slurm_cluster_stop DIR    # stops the daemons it started (by their pid files)
 # A pid file's process is signalled only when it is this cluster's own daemon (its program and its
 # own configuration path in its arguments, this user's); the folder may not hold spaces
@@ -36,6 +37,21 @@ slurm_cluster_start() {
       return 1
     fi
   done
+  local cpus overrides=""
+  # The node offers the machine's cores, or SLURM_CLUSTER_CPUS when set (the tests: more job
+  # slots than cores, so that a small sweep's jobs start at once instead of in waves of nproc,
+  # each wave a round of Slurm's scheduling and of the sweep's status checks). slurmd takes a
+  # node with more CPUs than it finds only under config_overrides ("generally only useful for
+  # testing purposes", slurm.conf(5)).
+  cpus=$(nproc)
+  if [ -n "${SLURM_CLUSTER_CPUS:-}" ]; then
+    if ! [[ "$SLURM_CLUSTER_CPUS" =~ ^[1-9][0-9]{0,3}$ ]]; then
+      SLURM_CLUSTER_WHY="SLURM_CLUSTER_CPUS=\"$SLURM_CLUSTER_CPUS\" is not a whole number from 1 to 9999"
+      return 1
+    fi
+    [ "$SLURM_CLUSTER_CPUS" -gt "$cpus" ] && overrides="SlurmdParameters=config_overrides"
+    cpus=$SLURM_CLUSTER_CPUS
+  fi
   if [ "$(id -u)" != 0 ]; then
     SLURM_CLUSTER_WHY="slurmd must run as root to start jobs, and this is uid $(id -u)"
     return 1
@@ -94,7 +110,8 @@ JobAcctGatherParams=OverMemoryKill
 MinJobAge=600
 InactiveLimit=0
 KillWait=5
-NodeName=$node NodeAddr=127.0.0.1 CPUs=$(nproc) RealMemory=$memory State=UNKNOWN
+$overrides
+NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
 PartitionName=test Nodes=$node Default=YES MaxTime=INFINITE State=UP
 EOF
   export SLURM_CONF="$dir/slurm.conf"

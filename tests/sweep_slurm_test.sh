@@ -5,7 +5,9 @@
 source "$2/tests/slurm_cluster.sh"
 work=$(mktemp -d /tmp/sweep_slurm_test.XXXXXX)
 trap 'slurm_cluster_stop "$work/cluster"; rm -rf "$work"' EXIT
-if ! slurm_cluster_start "$work/cluster"; then
+# Six job slots on the one node (the first run's six jobs at once; the machine's two cores would
+# start them in three waves, each a round of Slurm's scheduling and of Snakemake's status checks).
+if ! SLURM_CLUSTER_CPUS=6 slurm_cluster_start "$work/cluster"; then
   echo "SKIP sweep_slurm_test: the Slurm daemons cannot start: $SLURM_CLUSTER_WHY"
   exit 77
 fi

@@ -15,11 +15,15 @@ here on their own.
   count that ran, named in the legend; the failed cell in the table and the plot; the progress
   line and Snakemake's log instead of its messages.
 
-Both sweeps run in one command into one results folder (one Snakemake; the sweep tool takes
-several sweep files), each checked on its own cells; the earlier names' rerun is the --verbose
-run."""
+Two Snakemake runs into one results folder. First the fixed sweep alone, --verbose, over a folder
+of the earlier naming: its three CM-5 cells' results made beforehand under the earlier names (by
+the cell job's own function, ncube.run_cell.run, in this process), renamed by the run and not
+run again, its three nCube2 cells run. Then both sweeps in one command (the sweep tool takes
+several sweep files): the fixed sweep's cells all done, the varying sweep's run, each sweep
+checked on its own cells."""
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -27,11 +31,11 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "analysis"))
-from ncube import plotting, summary  # noqa: E402
+from ncube import plotting, run_cell, summary  # noqa: E402
 from ncube.sweep import Sweep, load  # noqa: E402
 
 SWEEP = [str(ROOT / "experiments" / "sweep")]
-SIMULATE = os.environ["NCUBE_SIMULATE"]
+SIMULATE = os.path.abspath(os.environ["NCUBE_SIMULATE"])
 failures = []
 
 
@@ -110,8 +114,7 @@ def distinct_styles(name, axes):
           f"{name}: the legend is outside the axes, right of them")
 
 
-def run_both(work):
-    """The two sweeps in one command (the varying one's R=8 failed by a wrapper of ./simulate)."""
+def write_sweeps(work):
     (work / "fixed.yaml").write_text(
         "description: on 4 nodes, which R/V split is fastest for scene2, and on the CM-5?\n"
         "options: {scene: scene2, iterations: 1}\n"
@@ -123,8 +126,12 @@ def run_both(work):
     wrapper.write_text(f'#!/bin/sh\ncase " $* " in *" --R 8 "*) echo "simulate: broken for the '
                        f'test" >&2; exit 4;; esac\nexec {SIMULATE} "$@"\n')
     wrapper.chmod(0o755)
+
+
+def run_both(work):
+    """The two sweeps in one command (the varying one's R=8 failed by a wrapper of ./simulate)."""
     return run_sweep(work / "fixed.yaml", work / "varying.yaml", "--results", work / "res",
-                     env=dict(os.environ, NCUBE_SIMULATE=str(wrapper)))
+                     env=dict(os.environ, NCUBE_SIMULATE=str(work / "simulate-fails-R8")))
 
 
 def test_fixed_nodes(work, done):
@@ -203,21 +210,34 @@ def test_fixed_nodes(work, done):
 
 def test_earlier_names(work):
     """A results folder of the earlier naming (<scene>-R<R>-V<V>-<id>.json) goes on: its
-    results are renamed, not run again (docs/sweeps.md, "A cell's identity")."""
+    results are renamed, not run again (docs/sweeps.md, "A cell's identity"). The CM-5 cells'
+    results are made here as their jobs would make them (ncube.run_cell.run) and given the
+    earlier names; the fixed sweep is then run with --verbose."""
     results_dir = work / "res"
+    cm5 = [c for c in load(work / "fixed.yaml").cells if "-cm5-" in c.file]
+    handlers = {s: signal.getsignal(s) for s in (signal.SIGTERM, signal.SIGINT)}
+    codes = [run_cell.run(c, results_dir) for c in cm5]
+    for number, handler in handlers.items():   # run_cell.run sets its own, for its job
+        signal.signal(number, handler)
     renamed = {}
-    for path in sorted((results_dir / "cells").glob("*-cm5-*.json")):
+    for cell in cm5:
+        path = results_dir / cell.file
         legacy = path.with_name(path.name.replace("-cm5-", "-"))
         renamed[path] = path.read_bytes()
         path.rename(legacy)
+    check(codes == [0, 0, 0], f"the CM-5 cells' results made under the earlier names ({codes})")
     done = run_sweep(work / "fixed.yaml", "--results", results_dir, "--verbose")
     check("Building DAG" in done.stderr and "cells done" not in done.stdout,
           "--verbose: Snakemake's messages instead of the progress line")
-    check(len(renamed) == 3 and done.returncode == 0 and "0 to run" in done.stdout and
+    log = results_dir / "logs" / "snakemake.log"
+    log = log.read_text() if log.exists() else ""
+    check(len(renamed) == 3 and done.returncode == 0 and
+          "3 with a finished result file" in done.stdout and "3 to run" in done.stdout and
           "3 result file(s) of an earlier naming renamed" in done.stderr and
           all(p.exists() and p.read_bytes() == b for p, b in renamed.items()) and
-          not any(p.with_name(p.name.replace("-cm5-", "-")).exists() for p in renamed),
-          f"results under the earlier names are renamed, none runs again "
+          not any(p.with_name(p.name.replace("-cm5-", "-")).exists() for p in renamed) and
+          not any(f"output: {c.file}" in log for c in cm5) and log.count("rule cell:") == 3,
+          f"results under the earlier names are renamed, none runs again, the others run "
           f"({done.stdout.splitlines()[:1]})")
 
 
@@ -281,12 +301,14 @@ def test_messages():
 
 
 def main():
+    os.environ["NCUBE_SIMULATE"] = SIMULATE   # as the sweep hands it to its jobs: absolute
     test_messages()
     with tempfile.TemporaryDirectory(prefix="ncube-sweep-summary-test-") as folder:
+        write_sweeps(Path(folder))
+        test_earlier_names(Path(folder))   # first: it runs the fixed sweep alone
         done = run_both(Path(folder))
         test_fixed_nodes(Path(folder), done)
         test_varying_nodes(Path(folder), done)
-        test_earlier_names(Path(folder))   # last: it runs the fixed sweep alone
     print(f"sweep_summary_test: {len(failures)} failure(s)")
     return 1 if failures else 0
 
