@@ -98,4 +98,11 @@ slurm_cluster_start "$spaced/new"
 check $? "a cluster in a folder with spaces is refused: $SLURM_CLUSTER_WHY"
 [ ! -e "$spaced/new" ]; check $? "  and nothing is created there"
 
+# A node's CPU count that is not a whole number from 1 to 9999: refused before anything starts.
+for bad in 0 -1 nan 1e400 0x10 " 2" 10000; do
+  SLURM_CLUSTER_CPUS=$bad slurm_cluster_start "$work/cpus"
+  [ $? = 1 ] && [[ "$SLURM_CLUSTER_WHY" == *"SLURM_CLUSTER_CPUS"* ]] && [ ! -e "$work/cpus" ]
+  check $? "SLURM_CLUSTER_CPUS=$bad is refused, nothing created: $SLURM_CLUSTER_WHY"
+done
+
 exit $((failures > 0))

@@ -93,7 +93,7 @@ SURFACE = {
     "simgrid_alone": ("a recording", "stdout", "nothing"),
     "benchmarks": ("scenes of scenes/", "stdout", "nothing"),
     "simulate (wrapper)": ("build/simulate's arguments", "as build/simulate", "cmake (when build/simulate is missing), build/simulate"),
-    "tests/slurm_cluster.sh": ("its folder's configuration and pid files", "a Slurm configuration, logs and pid files in its folder", "slurmctld, slurmd; signals only the daemons it started"),
+    "tests/slurm_cluster.sh": ("its folder's configuration and pid files; SLURM_CLUSTER_CPUS (a whole number from 1 to 9999)", "a Slurm configuration, logs and pid files in its folder", "slurmctld, slurmd; signals only the daemons it started"),
     ".ci/install-deps": ("nothing", "Debian packages (root)", "apt-get"),
     ".ci/run": ("the repository", "build/", "install-deps, cmake, ./simulate, ctest"),
     "experiments/sweep": ("sweep files (YAML or JSON), the scenes, platforms and cost models they name, result files, build/platform-nodes/ (its platforms' node counts)", "--results folder: plan.json, one result file per cell, sweeps/NAME/ summaries; with --slurm, slurm_job.sh (the job script's template); build/platform-nodes/KEY (a platform's node count, once per build)", "Snakemake, ./simulate per cell (locally, or through Slurm's sbatch, each job running ncube.cluster_job, no Snakemake of its own)"),
