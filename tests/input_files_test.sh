@@ -62,13 +62,23 @@ PY
 mkfifo fifo.png fifo.bin && ln -s /dev/zero zero.bin
 
 # Exit 2 within 20 s, one line on stderr containing `expected`; named relatively and absolutely.
+# The cases are queued and run in one batch from m/, each forked from build/simulate_server
+# (tests/forked_batch.py: about 85 ms of CPU less a case than a new ./simulate; the binary's own
+# start is tests/cli_test.sh's and the runs below); case K's stderr is $work/io/K.err.
+mkdir "$work/io"
+n=0
+declare -a expected_of what_of
 refused() {
-  local expected="$1"; shift
-  local rc=0
-  timeout 20 "$simulate" "$@" --iterations 1 --quiet > /dev/null 2> "$work/err" || rc=$?
-  [ "$rc" = 2 ] || { fail "$* exits $rc, not 2 ($(head -c 300 "$work/err"))"; return; }
-  [ "$(wc -l < "$work/err")" = 1 ] || fail "$*: not one line: $(cat "$work/err")"
-  grep -qF -- "$expected" "$work/err" || fail "$*: '$(cat "$work/err")' lacks '$expected'"
+  expected_of[n]="$1"; shift
+  what_of[n]="$*"
+  local a sep="" args=""
+  for a in "$@" --iterations 1 --quiet; do
+    a=${a//\\/\\\\}; a=${a//\"/\\\"}
+    args+="$sep\"$a\""; sep=", "
+  done
+  printf '{"args": [%s], "stdout": null, "stderr": "%s", "timeout": 20}\n' "$args" "$work/io/$n.err" \
+    >> "$work/cases.jsonl"
+  n=$((n + 1))
 }
 for model in fifo.obj "$work/m/fifo.obj"; do
   refused "names fifo.mtl: model part is a FIFO, not a regular file" "$model"
@@ -108,11 +118,25 @@ cat > named.xml <<XML
 XML
 refused "named.xml: line 4: speed_file=: names a file, which SimGrid would read outside the input gate" \
   scene0.json --R 1 --platform named.xml
+mapfile -t codes < <("$python" "$root/tests/forked_batch.py" "$simulate" "$work/cases.jsonl")
+[ "${#codes[@]}" = "$n" ] || fail "the batch ran ${#codes[@]} of its $n cases"
+for ((i = 0; i < n; i++)); do
+  err="$work/io/$i.err"
+  [ "${codes[i]:-none}" = 2 ] || { fail "${what_of[i]} exits ${codes[i]:-none}, not 2 ($(head -c 300 "$err"))"; continue; }
+  [ "$(wc -l < "$err")" = 1 ] || fail "${what_of[i]}: not one line: $(cat "$err")"
+  grep -qF -- "${expected_of[i]}" "$err" || fail "${what_of[i]}: '$(cat "$err")' lacks '${expected_of[i]}'"
+done
 mkdir -p "$work/root/platforms"
 mkfifo "$work/root/platforms/ncube2.json"
 # (Every input is looked up before any is read: the cost model must be there to reach the FIFO.)
 cp "$root/platforms/cost_model.json" "$work/root/platforms/"
-NCUBE_ROOT="$work/root" refused "ncube2.json: platform file is a FIFO, not a regular file" "$root/scenes/scene0.json"
+# (Started anew: the batch's cases share one environment.)
+rc=0
+NCUBE_ROOT="$work/root" timeout 20 "$simulate" "$root/scenes/scene0.json" --iterations 1 --quiet \
+  > /dev/null 2> "$work/err" || rc=$?
+[ "$rc" = 2 ] && [ "$(wc -l < "$work/err")" = 1 ] &&
+  grep -qF "ncube2.json: platform file is a FIFO, not a regular file" "$work/err" ||
+  fail "NCUBE_ROOT=$work/root: exit $rc: '$(cat "$work/err")' lacks 'ncube2.json: platform file is a FIFO, not a regular file'"
 
 # A model may name files in a folder given with --model-folder.
 timeout 20 "$simulate" dotdot.obj --model-folder "$work/secret" --iterations 1 --quiet ||
