@@ -14,7 +14,10 @@
 #    committed hemicube structures, the decisions' sentences recounted from their table, the
 #    cost table's front recounted, the reciprocity count written for hemicube runs only and
 #    shown.
-# About 15 CPU seconds.
+# The cells' meshes are read for their radiosities, never their colours (the picture's exposure
+# at image_width x image_height, which no simulated second depends on): at 16 x 16 each run
+# spares rendering 800 x 600 (0.2 CPU s a run).
+# About 11 CPU seconds.
 set -u
 simulate=$1 root=$2
 scratch=$(mktemp -d) && trap 'rm -rf "$scratch"' EXIT
@@ -22,7 +25,7 @@ export NCUBE_SIMULATE=$simulate
 cat > "$scratch/hemicube-test.yaml" <<'YAML'
 name: hemicube-test
 measure: total_seconds
-options: {R: 1, V: 0}
+options: {R: 1, V: 0, image_width: 16, image_height: 16}
 grid:
   scene: [cornell-box, scene0]
   method:
@@ -35,7 +38,7 @@ YAML
 cat > "$scratch/claims-test.yaml" <<'YAML'
 name: claims-test
 measure: total_seconds
-options: {V: 0, R: 4, convergence: 0.03}
+options: {V: 0, R: 4, convergence: 0.03, image_width: 16, image_height: 16}
 cells:
   - {scene: cornell-box, samples: 4}
   - {scene: cornell-box, parallelisation: shooters, form_factors: hemicube, hemicube_resolution: 20, hemicube_placement: centre}
