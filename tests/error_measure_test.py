@@ -8,7 +8,7 @@ than converged runs of every form-factor method (the paper's rays at M = 1, the 
 shooter's centre and at each shooter element's centre at N = 20, R = 4: the cheapest settings,
 the methods' largest errors; the claims page holds the same against every converged cell of
 the study: tests/claims_sentences_test.py). scene1's elements run is left out but for
---every-run (below). About 15 CPU seconds.
+--every-run (below). About 12 CPU seconds.
 
 usage: error_measure_test.py SIMULATE SOURCE_DIR [--every-run]"""
 import math
