@@ -46,6 +46,11 @@ os.environ.pop("NCUBE_PYTHON_RESTARTED", None)
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # no BLAS threads in a process that forks
 os.environ["MPLBACKEND"] = "Agg"
+# No bytecode written, here or by the Pythons the cases start: a __pycache__ folder in the copied
+# tree would change its `git status --ignored`, which each program's cases must leave as it was
+# (the copy's modules are compiled once, in this process, before it forks: preload, compiled).
+sys.dont_write_bytecode = True
+os.environ["PYTHONDONTWRITEBYTECODE"] = "1"
 
 import argparse  # noqa: E402
 import gc  # noqa: E402
