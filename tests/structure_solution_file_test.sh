@@ -32,17 +32,8 @@ measured=$(/usr/bin/python3 "$root/analysis/ncube/accuracy.py" "$scratch/m.ply" 
 [[ ${measured:-} == "element RMS 0  patch RMS 0  largest patch error 0 "* ]] || fail "--mesh: ${measured:-none}"
 
 # A closed cube, its six faces inward, 4 x 4 elements each, every one emitting 1 with
-# reflectance 0.5.
-cat > "$scratch/furnace.json" <<'JSON'
-{"name": "furnace", "patches": [
- {"vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]},
- {"vertices": [[0,0,1],[0,1,1],[1,1,1],[1,0,1]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]},
- {"vertices": [[0,0,0],[0,1,0],[0,1,1],[0,0,1]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]},
- {"vertices": [[1,0,0],[1,0,1],[1,1,1],[1,1,0]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]},
- {"vertices": [[0,0,0],[0,0,1],[1,0,1],[1,0,0]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]},
- {"vertices": [[0,1,0],[1,1,0],[1,1,1],[0,1,1]], "reflectance": [0.5,0.5,0.5], "emission": [1,1,1], "elements": [4,4]}]}
-JSON
-"$solver" "$scratch/furnace.json" --structure patches --samples 64 --quiet --out "$scratch/f.json" ||
+# reflectance 0.5 (tests/models/furnace.json).
+"$solver" "$root/tests/models/furnace.json" --structure patches --samples 64 --quiet --out "$scratch/f.json" ||
   fail "the furnace: the solver failed"
 
 # One python for the comparisons (files equal but for host_seconds and code_version) and the
